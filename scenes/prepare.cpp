@@ -1,0 +1,27 @@
+#include "scenes/prepare.h"
+
+#include "scenes/cornell_box.h"
+#include "scenes/normalise.h"
+#include "scenes/scene_file.h"
+#include "scenes/subdivide.h"
+
+namespace rc {
+
+PreparedScene prepare_scene(const SceneOptions& options) {
+  PreparedScene out;
+  if (options.file.empty()) {
+    out.scene = cornell_box();
+  } else {
+    LoadedScene loaded = load_scene_file(options.file);
+    out.scene = std::move(loaded.scene);
+    out.warnings = std::move(loaded.warnings);
+  }
+  Scene& scene = out.scene;
+  if (options.face_target > 0) scene.faces = refine_to_count(scene.faces, options.face_target);
+  scene.faces = split_faces(scene.faces, options.face_levels);
+  normalise(scene);
+  scene.patches = make_patches(scene.faces, options.patch_levels);
+  return out;
+}
+
+}  // namespace rc

@@ -1,0 +1,146 @@
+#include "scenes/scene_file.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "scenes/scene_builder.h"
+
+namespace rc {
+
+namespace {
+
+class LineParser {
+ public:
+  LineParser(const std::string& source, int line_no, const std::string& line)
+      : where_(source + ":" + std::to_string(line_no)), in_(line) {}
+
+  const std::string& where() const { return where_; }
+  [[noreturn]] void fail(const std::string& problem) const {
+    throw SceneFileError(where_ + ": " + problem);
+  }
+  bool next_word(std::string& word) { return static_cast<bool>(in_ >> word); }
+  std::string word(const char* what) {
+    std::string w;
+    if (!next_word(w)) fail(std::string("missing ") + what);
+    return w;
+  }
+  double number(const char* what) {
+    const std::string w = word(what);
+    std::size_t used = 0;
+    double value = 0;
+    try {
+      value = std::stod(w, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != w.size() || !std::isfinite(value)) fail(std::string("'") + w + "' is not a number (" + what + ")");
+    return value;
+  }
+  Vec3 vec3(const char* what) {
+    const double x = number(what), y = number(what), z = number(what);
+    return {x, y, z};
+  }
+  Spectrum spectrum(const char* what) {
+    Spectrum s;
+    for (std::size_t b = 0; b < kBands; ++b) s[b] = number(what);
+    return s;
+  }
+  void expect_end() {
+    std::string extra;
+    if (next_word(extra)) fail("unexpected '" + extra + "' at end of line");
+  }
+
+ private:
+  std::string where_;
+  std::istringstream in_;
+};
+
+void parse_material(LineParser& p, SceneBuilder& builder) {
+  Material m;
+  m.name = p.word("material name");
+  m.emission = Spectrum::uniform(0.0);
+  bool has_reflectance = false;
+  std::string key;
+  while (p.next_word(key)) {
+    if (key == "reflectance") {
+      m.reflectance = p.spectrum("reflectance value");
+      has_reflectance = true;
+    } else if (key == "emission") {
+      m.emission = p.spectrum("emission value");
+    } else {
+      p.fail("unknown material property '" + key + "' (expected reflectance or emission)");
+    }
+  }
+  if (!has_reflectance) p.fail("material '" + m.name + "' needs 'reflectance r g b'");
+  try {
+    builder.add_material(m);
+  } catch (const std::invalid_argument& e) {
+    p.fail(e.what());
+  }
+}
+
+void parse_surface(LineParser& p, SceneBuilder& builder, int corners) {
+  const std::string name = p.word("surface name");
+  const std::string material = p.word("material name");
+  const int index = builder.find_material(material);
+  if (index < 0) p.fail("unknown material '" + material + "' (define it with 'material' first)");
+  std::vector<Vec3> v;
+  for (int i = 0; i < corners; ++i) v.push_back(p.vec3("vertex coordinate"));
+  p.expect_end();
+  builder.add_surface(name, index, v, p.where());
+}
+
+void parse_camera(LineParser& p, SceneBuilder& builder) {
+  Camera c;
+  c.position = p.vec3("camera position");
+  c.look_at = p.vec3("camera look-at point");
+  c.up = p.vec3("camera up vector");
+  c.vertical_fov_deg = p.number("vertical field of view (degrees)");
+  p.expect_end();
+  if (!(c.vertical_fov_deg > 0 && c.vertical_fov_deg < 180)) p.fail("field of view must be in (0, 180) degrees");
+  if (glm::length(c.look_at - c.position) == 0) p.fail("camera looks at its own position");
+  builder.set_camera(c);
+}
+
+}  // namespace
+
+LoadedScene parse_scene_text(const std::string& text, const std::string& source_name) {
+  SceneBuilder builder(source_name);
+  std::istringstream in(text);
+  std::string line;
+  int line_no = 0;
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
+    LineParser p(source_name, line_no, line);
+    std::string keyword;
+    if (!p.next_word(keyword)) continue;
+    if (keyword == "material") {
+      parse_material(p, builder);
+    } else if (keyword == "quad") {
+      parse_surface(p, builder, 4);
+    } else if (keyword == "tri") {
+      parse_surface(p, builder, 3);
+    } else if (keyword == "camera") {
+      parse_camera(p, builder);
+    } else {
+      p.fail("unknown keyword '" + keyword + "' (expected material, quad, tri or camera)");
+    }
+  }
+  try {
+    return {builder.build(), builder.warnings()};
+  } catch (const std::invalid_argument& e) {
+    throw SceneFileError(source_name + ": " + e.what());
+  }
+}
+
+LoadedScene load_scene_file(const std::string& path) {
+  std::ifstream file(path);
+  if (!file) throw SceneFileError(path + ": cannot open scene file");
+  std::stringstream text;
+  text << file.rdbuf();
+  return parse_scene_text(text.str(), path);
+}
+
+}  // namespace rc

@@ -1,0 +1,25 @@
+// Uniform subdivision of faces (paper: 70 -> 280 -> 1120 faces) and of faces into patches, plus a
+// deterministic refinement to an exact face count (e.g. the paper's 70).
+#pragma once
+
+#include <vector>
+
+#include "scenes/scene.h"
+
+namespace rc {
+
+// Each level splits every triangle into 4 at its edge midpoints, so `levels` multiplies the count
+// by 4^levels. Children of a face stay together, in a fixed order.
+std::vector<Face> split_faces(const std::vector<Face>& faces, int levels);
+
+// Repeatedly bisects the largest face (lowest index on ties) across its longest edge (first edge
+// on ties) until there are exactly `target` faces. Throws if target < faces.size().
+std::vector<Face> refine_to_count(const std::vector<Face>& faces, int target);
+
+// Patches: each face split uniformly into 4^levels sub-triangles, grouped by face in face order.
+std::vector<Patch> make_patches(const std::vector<Face>& faces, int levels);
+
+// Splits one triangle into its 4 midpoint children.
+std::vector<Triangle> split4(const Triangle& t);
+
+}  // namespace rc

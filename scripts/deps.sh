@@ -1,0 +1,27 @@
+# Sourced by scripts/run and scripts/test: installs any missing Debian package, then configures and
+# builds incrementally into build/. Everything the project needs comes from Debian's archive.
+set -euo pipefail
+RC_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+RC_BUILD="${RC_BUILD:-$RC_ROOT/build}"
+RC_PACKAGES=(build-essential cmake ninja-build pkg-config libsystemc-dev libglm-dev libgtest-dev
+             libbenchmark-dev nlohmann-json3-dev libcli11-dev libpng-dev libembree-dev python3-matplotlib)
+
+rc_install_missing() {
+  local missing=()
+  for p in "${RC_PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  echo "installing: ${missing[*]}" >&2
+  local sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
+}
+
+rc_build() {
+  if [ ! -f "$RC_BUILD/build.ninja" ]; then
+    cmake -S "$RC_ROOT" -B "$RC_BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release >&2
+  fi
+  cmake --build "$RC_BUILD" -j "$(nproc)" >&2
+}

@@ -8,7 +8,11 @@
 #include <cstdio>
 #include <cstdlib>
 
+// SystemC prints a banner at exit unless this is set before the library reads it.
+static const int kQuietSystemC = setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 0);
+
 int sc_main(int argc, char** argv) {
+  (void)kQuietSystemC;
   ::testing::InitGoogleTest(&argc, argv);
 #ifdef RC_SYSTEMC_TESTS
   const int selected = ::testing::UnitTest::GetInstance()->test_to_run_count();

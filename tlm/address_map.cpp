@@ -1,0 +1,33 @@
+#include "tlm/address_map.h"
+
+#include <stdexcept>
+
+namespace rc::tlmx {
+
+namespace {
+// Last address of a window; windows are checked not to wrap, so this cannot overflow.
+std::uint64_t last(const AddressWindow& w) { return w.base + (w.size - 1); }
+}  // namespace
+
+void AddressMap::add(const AddressWindow& window) {
+  if (window.size == 0) throw std::invalid_argument("address window '" + window.name + "' is empty");
+  if (window.base > UINT64_MAX - (window.size - 1))
+    throw std::invalid_argument("address window '" + window.name + "' wraps past the end of the address space");
+  for (const AddressWindow& other : m_windows) {
+    if (window.base <= last(other) && other.base <= last(window))
+      throw std::invalid_argument("address window '" + window.name + "' overlaps '" + other.name + "'");
+  }
+  m_windows.push_back(window);
+}
+
+std::optional<Decoded> AddressMap::decode(std::uint64_t address, std::uint64_t bytes) const {
+  for (const AddressWindow& w : m_windows) {
+    if (address < w.base || address > last(w)) continue;
+    const std::uint64_t offset = address - w.base;
+    if (bytes > w.size - offset) return std::nullopt;  // straddles the end of the window
+    return Decoded{&w, offset};
+  }
+  return std::nullopt;
+}
+
+}  // namespace rc::tlmx

@@ -1,0 +1,41 @@
+// Address decoding shared by the interconnects (PciBus, Router): a set of non-overlapping windows,
+// each mapping [base, base + size) to one output port. A target behind a window sees addresses
+// relative to the window base, as a BAR-mapped PCI resource does.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rc::tlmx {
+
+struct AddressWindow {
+  std::uint64_t base = 0;
+  std::uint64_t size = 0;  // bytes, > 0
+  unsigned port = 0;       // index of the output socket binding (binding order, from 0)
+  std::string name;        // for messages and reports
+};
+
+struct Decoded {
+  const AddressWindow* window = nullptr;  // into AddressMap::windows(); valid until the next add()
+  std::uint64_t offset = 0;  // address - window->base
+};
+
+class AddressMap {
+ public:
+  // Adds a window; throws std::invalid_argument if it is empty, wraps past 2^64, or overlaps one
+  // already mapped (an ambiguous decode is a configuration bug, never a run-time choice).
+  void add(const AddressWindow& window);
+
+  // The window holding all of [address, address + bytes), if any. An access that straddles a window
+  // edge does not decode: it would otherwise reach two targets with one transaction.
+  std::optional<Decoded> decode(std::uint64_t address, std::uint64_t bytes) const;
+
+  const std::vector<AddressWindow>& windows() const { return m_windows; }
+
+ private:
+  std::vector<AddressWindow> m_windows;
+};
+
+}  // namespace rc::tlmx

@@ -1,0 +1,155 @@
+#include "tlm/pci_bus.h"
+
+#include <algorithm>
+#include <sstream>
+
+#include "tlm/timing.h"
+
+namespace rc::tlmx {
+
+namespace {
+constexpr const char* kMsgType = "rc/tlmx/PciBus";
+}
+
+PciBus::PciBus(const sc_core::sc_module_name& name, const PciBusConfig& config)
+    : sc_core::sc_module(name), in("in"), out("out"), m_config(config) {
+  if (m_config.width_bits == 0 || m_config.width_bits % 8 != 0)
+    SC_REPORT_ERROR(kMsgType, "width_bits must be a positive multiple of 8 (PCI: 32 or 64)");
+  if (!(m_config.burst_efficiency > 0.0 && m_config.burst_efficiency <= 1.0))
+    SC_REPORT_ERROR(kMsgType, "burst_efficiency must be in (0, 1]");
+  if (m_config.max_burst_bytes == 0) SC_REPORT_ERROR(kMsgType, "max_burst_bytes must be positive");
+  // get_direct_mem_ptr is deliberately not registered: the socket's default answers "no DMI
+  // anywhere", which is what a timed, arbitrated bus must say.
+  in.register_b_transport(this, &PciBus::b_transport);
+  in.register_transport_dbg(this, &PciBus::transport_dbg);
+}
+
+void PciBus::map(std::uint64_t base, std::uint64_t size, unsigned port, const std::string& name) {
+  m_map.add(AddressWindow{base, size, port, name.empty() ? "port " + std::to_string(port) : name});
+}
+
+std::uint64_t PciBus::burst_cycles(std::uint64_t bytes) const {
+  const std::uint64_t beats = ceil_div(bytes, m_config.width_bits / 8);
+  return m_config.setup_cycles + ceil_over_efficiency(beats, m_config.burst_efficiency);
+}
+
+sc_core::sc_time PciBus::transfer_time(std::uint64_t bytes) const {
+  const std::uint64_t max = m_config.max_burst_bytes;
+  std::uint64_t total = (bytes / max) * burst_cycles(max);
+  const std::uint64_t rest = bytes % max;
+  if (rest != 0 || bytes == 0) total += burst_cycles(rest);
+  return cycles(total, m_config.clock_period);
+}
+
+// The target sees the window-relative address; the initiator gets its own address back.
+sc_core::sc_time PciBus::forward(tlm::tlm_generic_payload& trans, const Decoded& hit) {
+  const std::uint64_t address = trans.get_address();
+  sc_core::sc_time target_delay = sc_core::SC_ZERO_TIME;
+  trans.set_address(hit.offset);
+  out[static_cast<int>(hit.window->port)]->b_transport(trans, target_delay);
+  trans.set_address(address);
+  trans.set_dmi_allowed(false);  // the target may offer DMI, but not through this bus
+  return target_delay;
+}
+
+// No window claims the address: nobody asserts DEVSEL, the initiator times out.
+sc_core::sc_time PciBus::master_abort(tlm::tlm_generic_payload& trans) {
+  std::ostringstream msg;
+  msg << name() << ": no BAR window holds address 0x" << std::hex << trans.get_address() << " + 0x"
+      << trans.get_data_length() << " bytes (master abort)";
+  SC_REPORT_WARNING(kMsgType, msg.str().c_str());
+  trans.set_response_status(tlm::TLM_ADDRESS_ERROR_RESPONSE);
+  return cycles(m_config.master_abort_cycles, m_config.clock_period);
+}
+
+void PciBus::b_transport(int port, tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) {
+  const sc_core::sc_time request = sc_core::sc_time_stamp() + delay;
+  const std::uint64_t bytes = trans.get_data_length();
+  const std::optional<Decoded> hit = m_map.decode(trans.get_address(), bytes);
+  const sc_core::sc_time occupancy =
+      hit ? std::max(transfer_time(bytes), forward(trans, *hit)) : master_abort(trans);
+  const sc_core::sc_time start = std::max(request, m_bus_free_at);
+  m_bus_free_at = start + occupancy;
+  PciInitiatorReport& c = counters(port);
+  count(c, trans, occupancy, start - request);
+  if (!hit) ++c.address_errors;
+  // A target that called wait() may have moved simulated time past the completion time.
+  const sc_core::sc_time now = sc_core::sc_time_stamp();
+  delay = m_bus_free_at > now ? m_bus_free_at - now : sc_core::SC_ZERO_TIME;
+}
+
+unsigned int PciBus::transport_dbg(int, tlm::tlm_generic_payload& trans) {
+  const std::optional<Decoded> hit = m_map.decode(trans.get_address(), 1);
+  if (!hit) return 0;
+  const std::uint64_t address = trans.get_address();
+  const std::uint64_t room = hit->window->size - hit->offset;
+  const unsigned int length = trans.get_data_length();
+  trans.set_address(hit->offset);
+  trans.set_data_length(static_cast<unsigned int>(std::min<std::uint64_t>(length, room)));
+  const unsigned int done = out[static_cast<int>(hit->window->port)]->transport_dbg(trans);
+  trans.set_address(address);
+  trans.set_data_length(length);
+  return done;
+}
+
+PciInitiatorReport& PciBus::counters(int port) {
+  if (static_cast<std::size_t>(port) >= m_initiators.size()) m_initiators.resize(port + 1);
+  return m_initiators[port];
+}
+
+void PciBus::count(PciInitiatorReport& c, const tlm::tlm_generic_payload& trans, const sc_core::sc_time& occupancy,
+                   const sc_core::sc_time& wait) {
+  ++c.transactions;
+  c.busy += occupancy;
+  c.wait += wait;
+  if (!trans.is_response_ok()) return;
+  if (trans.is_write()) c.bytes_written += trans.get_data_length();
+  if (trans.is_read()) c.bytes_read += trans.get_data_length();
+}
+
+void PciBus::end_of_elaboration() {
+  m_initiators.resize(std::max<std::size_t>(m_initiators.size(), in.size()));
+  for (const AddressWindow& w : m_map.windows()) {
+    if (w.port >= out.size()) {
+      const std::string msg = std::string(name()) + ": window '" + w.name + "' maps to out[" +
+                              std::to_string(w.port) + "], which is not bound";
+      SC_REPORT_ERROR(kMsgType, msg.c_str());
+    }
+  }
+}
+
+PciBusReport PciBus::report() const {
+  PciBusReport r;
+  r.initiators = m_initiators;
+  r.bus_free_at = m_bus_free_at;
+  for (const PciInitiatorReport& c : m_initiators) {
+    r.total.transactions += c.transactions;
+    r.total.bytes_written += c.bytes_written;
+    r.total.bytes_read += c.bytes_read;
+    r.total.busy += c.busy;
+    r.total.wait += c.wait;
+    r.total.address_errors += c.address_errors;
+  }
+  return r;
+}
+
+std::string PciBus::summary() const {
+  const PciBusReport r = report();
+  std::ostringstream out;
+  out << name() << ": " << r.total.transactions << " transactions, " << r.total.bytes_written << " B written, "
+      << r.total.bytes_read << " B read, busy " << r.total.busy << ", arbitration wait " << r.total.wait
+      << ", master aborts " << r.total.address_errors;
+  for (std::size_t i = 0; i < r.initiators.size(); ++i) {
+    const PciInitiatorReport& c = r.initiators[i];
+    out << "\n  in[" << i << "]: " << c.transactions << " transactions, " << c.bytes_written << " B written, "
+        << c.bytes_read << " B read, busy " << c.busy << ", wait " << c.wait << ", master aborts "
+        << c.address_errors;
+  }
+  return out.str();
+}
+
+void PciBus::end_of_simulation() {
+  if (m_config.report_at_end) SC_REPORT_INFO(kMsgType, summary().c_str());
+}
+
+}  // namespace rc::tlmx

@@ -1,0 +1,113 @@
+// A shared PCI bus as a loosely-timed TLM-2.0 interconnect: any number of initiators (host driver,
+// DMA engines, other cards) bind to `in`; BAR windows route each transaction to one of the targets
+// bound to `out`; the bus is one shared resource, so transfers are serialised and timed.
+//
+// Timing (W = width_bits / 8 bytes per data phase, E = burst_efficiency in (0, 1], S = setup_cycles,
+// M = max_burst_bytes, P = clock_period). A transaction of n bytes is carried as
+// bursts = n == 0 ? 1 : ceil(n / M) bursts of M bytes, the last one holding the remainder (a
+// zero-length transaction is one burst of 0 bytes), and
+//   burst_cycles(b)  = S + ceil(ceil(b / W) / E)
+//   transfer_time(n) = (sum of burst_cycles over the bursts) * P
+// ceil(x / E) takes x / E within a relative 1e-9 of an integer as that integer (see timing.h).
+// The target behind the window annotates its own delay D_t; it inserts wait states that overlap the
+// bus data phases, so the bus is occupied for
+//   occupancy = max(transfer_time(n), D_t)
+// An unmapped address is a master abort: occupancy = master_abort_cycles * P and
+// TLM_ADDRESS_ERROR_RESPONSE.
+//
+// Arbitration: first come, first served in the order b_transport is called, with the bus reserved
+// at call time. With request = sc_time_stamp() + delay (the initiator's local time, so temporal
+// decoupling is honoured) and bus_free_at the end of the last reservation:
+//   start       = max(request, bus_free_at)
+//   wait        = start - request                     (counted per initiator)
+//   bus_free_at = start + occupancy
+//   delay       = start + occupancy - sc_time_stamp()  (the returned annotation: completion time)
+// An initiator that runs ahead of simulated time reserves the bus at its local time when it calls,
+// so it can take the bus before another initiator whose request is earlier in simulated time but
+// whose call comes later. Initiators that need burst-level fairness must therefore sync (wait for
+// their local offset) before each transfer; DmaEngine does whenever its quantum keeper asks, which
+// is before every burst with the default global quantum of zero.
+//
+// Only b_transport and transport_dbg are offered: DMI is refused (every PCI access must be
+// arbitrated and timed), and nb_transport (AT) is not modelled.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <systemc>
+#include <tlm>
+#include <tlm_utils/multi_passthrough_initiator_socket.h>
+#include <tlm_utils/multi_passthrough_target_socket.h>
+
+#include "tlm/address_map.h"
+
+namespace rc::tlmx {
+
+struct PciBusConfig {
+  unsigned width_bits = 32;                                              // 32 or 64
+  sc_core::sc_time clock_period = sc_core::sc_time(30, sc_core::SC_NS);  // PCI "33 MHz" is 33.33 MHz; 66 MHz: 15 ns
+  double burst_efficiency = 1.0;     // fraction of data cycles that carry data within a burst, (0, 1]
+  unsigned setup_cycles = 8;         // per burst: arbitration, address phase, turnaround, target initial latency
+  std::uint64_t max_burst_bytes = 4096;  // longest burst before the bus is released (latency timer)
+  unsigned master_abort_cycles = 6;  // unmapped address: address phase + 5 clocks of DEVSEL time-out
+  bool report_at_end = true;         // SC_REPORT_INFO the summary at end of simulation
+};
+
+// Counters of one initiator port (or of all, in PciBusReport::total).
+struct PciInitiatorReport {
+  std::uint64_t transactions = 0;    // b_transport calls, including failed ones
+  std::uint64_t bytes_written = 0;   // initiator -> target (successful writes)
+  std::uint64_t bytes_read = 0;      // target -> initiator (successful reads)
+  sc_core::sc_time busy = sc_core::SC_ZERO_TIME;  // bus occupancy of this initiator's transfers
+  sc_core::sc_time wait = sc_core::SC_ZERO_TIME;  // arbitration wait (start - request)
+  std::uint64_t address_errors = 0;  // master aborts (unmapped addresses)
+};
+
+struct PciBusReport {
+  std::vector<PciInitiatorReport> initiators;  // indexed by `in` binding order
+  PciInitiatorReport total;
+  sc_core::sc_time bus_free_at = sc_core::SC_ZERO_TIME;
+};
+
+class PciBus : public sc_core::sc_module {
+ public:
+  tlm_utils::multi_passthrough_target_socket<PciBus> in;      // initiators bind here
+  tlm_utils::multi_passthrough_initiator_socket<PciBus> out;  // BAR targets, port = binding order
+
+  PciBus(const sc_core::sc_module_name& name, const PciBusConfig& config = {});
+
+  const PciBusConfig& config() const { return m_config; }
+
+  // Maps [base, base + size) to the target bound as out[port]; the target sees base as address 0.
+  // Throws std::invalid_argument on overlap. Call during elaboration.
+  void map(std::uint64_t base, std::uint64_t size, unsigned port, const std::string& name = "");
+  const AddressMap& address_map() const { return m_map; }
+
+  // Bus time of an n-byte transaction, without target wait states or arbitration (formula above).
+  sc_core::sc_time transfer_time(std::uint64_t bytes) const;
+
+  PciBusReport report() const;
+  std::string summary() const;
+
+ private:
+  void b_transport(int port, tlm::tlm_generic_payload& trans, sc_core::sc_time& delay);
+  unsigned int transport_dbg(int port, tlm::tlm_generic_payload& trans);
+  void end_of_elaboration() override;
+  void end_of_simulation() override;
+
+  std::uint64_t burst_cycles(std::uint64_t bytes) const;
+  sc_core::sc_time forward(tlm::tlm_generic_payload& trans, const Decoded& hit);
+  sc_core::sc_time master_abort(tlm::tlm_generic_payload& trans);
+  PciInitiatorReport& counters(int port);
+  void count(PciInitiatorReport& c, const tlm::tlm_generic_payload& trans, const sc_core::sc_time& occupancy,
+             const sc_core::sc_time& wait);
+
+  PciBusConfig m_config;
+  AddressMap m_map;
+  sc_core::sc_time m_bus_free_at = sc_core::SC_ZERO_TIME;
+  std::vector<PciInitiatorReport> m_initiators;
+};
+
+}  // namespace rc::tlmx

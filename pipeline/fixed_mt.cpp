@@ -1,0 +1,184 @@
+#include "pipeline/fixed_mt.h"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+namespace rc::pipeline {
+
+namespace {
+
+// Stores every block output into a Trace, indexed by the block enums.
+struct TraceProbe {
+  Trace* trace;
+  void multiplier(Multiplier m, std::int64_t v) { trace->multipliers[static_cast<int>(m)] = v; }
+  void add_sub(AddSub a, std::int64_t v) { trace->add_subs[static_cast<int>(a)] = v; }
+};
+
+bool in_range(const FixedVec3& v, Quantity q, int bits) {
+  const ValueRange r = value_range(q, bits);
+  return r.contains(v.x) && r.contains(v.y) && r.contains(v.z);
+}
+
+// One face against a stream of end points. Always inlined, so that each instruction-set variant
+// below compiles the whole loop, core included, for its own instruction set.
+template <class Int, bool kMasked>
+[[gnu::always_inline]] inline void occlude_loop(const FaceRecord& face, const FixedVec3& start,
+                                                const std::int64_t* __restrict end_x,
+                                                const std::int64_t* __restrict end_y,
+                                                const std::int64_t* __restrict end_z, std::size_t n,
+                                                int bits, std::uint8_t* __restrict blocked,
+                                                const std::uint8_t* __restrict skip) {
+  const IntVec3<Int> v0 = vec_cast<Int>(face.v0), e1 = vec_cast<Int>(face.edge1),
+                     e2 = vec_cast<Int>(face.edge2), s = vec_cast<Int>(start);
+  // The face and start are the same for every end point, so the compiler hoists tvec, qvec and
+  // t out of the loop: the per-ray work is what the hardware's streamed inputs feed.
+  for (std::size_t i = 0; i < n; ++i) {
+    assert(is_position({end_x[i], end_y[i], end_z[i]}, bits));
+    const IntVec3<Int> end{Int(end_x[i]), Int(end_y[i]), Int(end_z[i])};
+    bool hit = pipeline_hits(v0, e1, e2, s, end, bits);
+    if constexpr (kMasked) hit &= skip[i] == 0;
+    blocked[i] |= std::uint8_t(hit);
+  }
+}
+
+// Every (integer path, mask, instruction set) combination as a plain function, so a table can
+// pick one at run time and the tests can run each.
+using OccludeFn = void (*)(const FaceRecord&, const FixedVec3&, const std::int64_t*,
+                           const std::int64_t*, const std::int64_t*, std::size_t, int,
+                           std::uint8_t*, const std::uint8_t*);
+struct OccludeKernels {
+  OccludeFn narrow, narrow_masked, wide, wide_masked;
+};
+
+#define RC_OCCLUDE_PARAMS                                                                    \
+  const FaceRecord &face, const FixedVec3 &start, const std::int64_t *end_x,                \
+      const std::int64_t *end_y, const std::int64_t *end_z, std::size_t n, int bits,        \
+      std::uint8_t *blocked, const std::uint8_t *skip
+#define RC_OCCLUDE_ARGS face, start, end_x, end_y, end_z, n, bits, blocked, skip
+#define RC_DEFINE_OCCLUDE_KERNELS(isa, target)                                                 \
+  target void occlude32_##isa(RC_OCCLUDE_PARAMS) {                                           \
+    occlude_loop<std::int32_t, false>(RC_OCCLUDE_ARGS);                                      \
+  }                                                                                          \
+  target void occlude32_masked_##isa(RC_OCCLUDE_PARAMS) {                                    \
+    occlude_loop<std::int32_t, true>(RC_OCCLUDE_ARGS);                                       \
+  }                                                                                          \
+  target void occlude64_##isa(RC_OCCLUDE_PARAMS) {                                           \
+    occlude_loop<std::int64_t, false>(RC_OCCLUDE_ARGS);                                      \
+  }                                                                                          \
+  target void occlude64_masked_##isa(RC_OCCLUDE_PARAMS) {                                    \
+    occlude_loop<std::int64_t, true>(RC_OCCLUDE_ARGS);                                       \
+  }                                                                                          \
+  constexpr OccludeKernels kOcclude_##isa{occlude32_##isa, occlude32_masked_##isa,           \
+                                         occlude64_##isa, occlude64_masked_##isa};
+
+RC_DEFINE_OCCLUDE_KERNELS(baseline, )
+#if RC_HAVE_ISA_VARIANTS
+RC_DEFINE_OCCLUDE_KERNELS(v3, RC_TARGET_X86_64_V3)
+RC_DEFINE_OCCLUDE_KERNELS(v4, RC_TARGET_X86_64_V4)
+#endif
+#undef RC_DEFINE_OCCLUDE_KERNELS
+#undef RC_OCCLUDE_ARGS
+#undef RC_OCCLUDE_PARAMS
+
+const OccludeKernels& occlude_kernels(KernelIsa isa) {
+  require_supported(isa);
+#if RC_HAVE_ISA_VARIANTS
+  if (isa == KernelIsa::X86_64_V3) return kOcclude_v3;
+  if (isa == KernelIsa::X86_64_V4) return kOcclude_v4;
+#endif
+  return kOcclude_baseline;
+}
+
+}  // namespace
+
+std::int64_t quantize_coordinate(double x, int bits) {
+  validate_frac_bits(bits);
+  if (!(x >= 0.0 && x < 1.0)) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.17g", x);
+    throw std::out_of_range(std::string("coordinate ") + text +
+                            " is outside [0, 1): normalise the scene before quantising");
+  }
+  // Scaling by a power of two is exact, so this is floor(x * 2^bits) with no rounding.
+  return static_cast<std::int64_t>(std::floor(std::ldexp(x, bits)));
+}
+
+FixedVec3 quantize_point(const Vec3& p, int bits) {
+  return {quantize_coordinate(p.x, bits), quantize_coordinate(p.y, bits),
+          quantize_coordinate(p.z, bits)};
+}
+
+FaceRecord make_face_record(const Triangle& triangle, int bits) {
+  const FixedVec3 v0 = quantize_point(triangle.v0, bits);
+  return {v0, quantize_point(triangle.v1, bits) - v0, quantize_point(triangle.v2, bits) - v0};
+}
+
+bool is_position(const FixedVec3& p, int bits) { return in_range(p, Quantity::Position, bits); }
+
+bool is_face_record(const FaceRecord& face, int bits) {
+  // The edges must be differences of two in-range positions, not just in the 1.N range.
+  return is_position(face.v0, bits) && in_range(face.edge1, Quantity::Difference, bits) &&
+         in_range(face.edge2, Quantity::Difference, bits) &&
+         is_position(face.v0 + face.edge1, bits) && is_position(face.v0 + face.edge2, bits);
+}
+
+FixedVec3 segment_direction(const FixedVec3& start, const FixedVec3& end) { return end - start; }
+
+Stage1Result stage1(const FaceRecord& face, const FixedVec3& start, const FixedVec3& direction,
+                    int bits) {
+  validate_frac_bits(bits);
+  NoProbe probe;
+  return stage1(face.v0, face.edge2, start, direction, bits, probe);
+}
+
+Stage2Result stage2(const FaceRecord& face, const Stage1Result& s1, int bits) {
+  validate_frac_bits(bits);
+  NoProbe probe;
+  return stage2(face.edge1, s1, bits, probe);
+}
+
+Stage3Result stage3(const FaceRecord& face, const FixedVec3& direction, const Stage1Result& s1,
+                    const Stage2Result& s2, int bits) {
+  validate_frac_bits(bits);
+  NoProbe probe;
+  return stage3(face.edge2, direction, s1, s2, bits, probe);
+}
+
+Trace trace(const FaceRecord& face, const FixedVec3& start, const FixedVec3& end, int bits) {
+  validate_frac_bits(bits);
+  assert(is_face_record(face, bits) && is_position(start, bits) && is_position(end, bits));
+  Trace t;
+  t.bits = bits;
+  TraceProbe probe{&t};
+  t.values = run_pipeline(face.v0, face.edge1, face.edge2, start, end, bits, probe);
+  return t;
+}
+
+bool segment_hits(const FaceRecord& face, const FixedVec3& start, const FixedVec3& end, int bits) {
+  validate_frac_bits(bits);
+  assert(is_face_record(face, bits) && is_position(start, bits) && is_position(end, bits));
+  return pipeline_hits(face.v0, face.edge1, face.edge2, start, end, bits);
+}
+
+void occlude_face(const FaceRecord& face, const FixedVec3& start, const std::int64_t* end_x,
+                  const std::int64_t* end_y, const std::int64_t* end_z, std::size_t n, int bits,
+                  std::uint8_t* blocked, const std::uint8_t* skip) {
+  occlude_face(best_kernel_isa(), face, start, end_x, end_y, end_z, n, bits, blocked, skip);
+}
+
+void occlude_face(KernelIsa isa, const FaceRecord& face, const FixedVec3& start,
+                  const std::int64_t* end_x, const std::int64_t* end_y, const std::int64_t* end_z,
+                  std::size_t n, int bits, std::uint8_t* blocked, const std::uint8_t* skip) {
+  validate_frac_bits(bits);
+  assert(is_face_record(face, bits) && is_position(start, bits));
+  const OccludeKernels& k = occlude_kernels(isa);
+  // The narrowest integer type whose products cannot overflow at this width (bit_bounds.h).
+  const bool narrow = core_fits<std::int32_t>(bits);
+  const OccludeFn fn = skip == nullptr ? (narrow ? k.narrow : k.wide)
+                                       : (narrow ? k.narrow_masked : k.wide_masked);
+  fn(face, start, end_x, end_y, end_z, n, bits, blocked, skip);
+}
+
+}  // namespace rc::pipeline

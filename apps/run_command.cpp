@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "apps/cli_options.h"
 #include "apps/progress.h"
 #include "apps/report.h"
 #include "host_sw/png_writer.h"
@@ -71,6 +72,30 @@ int run_simulation(const RunOptions& o) {
   write_png(o.out_dir + "/image.png", tone_map(render_radiosity(scene, result.radiosity, o.render), o.render.key));
   print_summary(o, scene, result, *visibility, progress.seconds());
   return 0;
+}
+
+}  // namespace rc
+
+namespace rc {
+
+void add_run_command(CLI::App& app, int& exit_code) {
+  auto options = std::make_shared<RunOptions>();
+  auto solver = std::make_shared<SolverCli>();
+  CLI::App* cmd = app.add_subcommand("run", "Solve radiosity for one scene; write report.json, patches.csv, image.png");
+  add_scene_options(*cmd, options->scene);
+  add_solver_options(*cmd, *solver);
+  cmd->add_option("--visibility", options->visibility, "Visibility backend: float or fixed")
+      ->check(CLI::IsMember({"float", "fixed"}))->capture_default_str();
+  add_bits_option(*cmd, options->bits);
+  cmd->add_option("--out", options->out_dir, "Output folder")->capture_default_str();
+  cmd->add_option("--image-size", options->render.width, "Image width and height in pixels")
+      ->check(CLI::Range(16, 8192))->capture_default_str();
+  cmd->add_flag("--quiet", options->quiet, "No progress output");
+  cmd->callback([options, solver, &exit_code] {
+    options->solver = solver->resolved();
+    options->render.height = options->render.width;
+    exit_code = run_simulation(*options);
+  });
 }
 
 }  // namespace rc

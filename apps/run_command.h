@@ -11,7 +11,7 @@ namespace rc {
 
 struct RunOptions {
   SceneOptions scene;
-  SolverOptions solver;
+  SolverOptions solver;  // resolved from SolverCli
   std::string visibility = "float";  // float | fixed
   int bits = 15;                     // fractional bits of the fixed-point pipeline
   std::string out_dir = "out";

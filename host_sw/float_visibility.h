@@ -16,10 +16,7 @@ class FloatVisibility : public VisibilityBackend {
   std::uint64_t tests_performed() const override { return tests_; }
 
  private:
-  struct PreparedFace {
-    Vec3 v0, edge1, edge2;
-  };
-  std::vector<PreparedFace> faces_;
+  std::vector<Triangle> faces_;
   std::vector<std::uint8_t> blocked_;
   std::uint64_t tests_ = 0;
 };

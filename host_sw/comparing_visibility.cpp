@@ -1,0 +1,25 @@
+#include "host_sw/comparing_visibility.h"
+
+namespace rc {
+
+void ComparingVisibility::load_faces(const std::vector<Triangle>& faces) {
+  answer_.load_faces(faces);
+  shadow_.load_faces(faces);
+}
+
+void ComparingVisibility::submit(const SegmentBatch& batch) {
+  shadow_.submit(batch);
+  shadow_.collect(shadow_blocked_);
+  answer_.submit(batch);
+}
+
+void ComparingVisibility::collect(std::vector<std::uint8_t>& blocked) {
+  answer_.collect(blocked);
+  for (std::size_t i = 0; i < blocked.size(); ++i) {
+    only_answer_ += blocked[i] && !shadow_blocked_[i];
+    only_shadow_ += !blocked[i] && shadow_blocked_[i];
+  }
+  compared_ += blocked.size();
+}
+
+}  // namespace rc

@@ -1,0 +1,157 @@
+#include "board/bank_layout.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "pipeline/fixed_format.h"
+
+namespace rc::board {
+
+unsigned BankLayout::banks_used() const {
+  unsigned n = 2 + (mask_bank ? 1 : 0);
+  for (const RayGroup& g : groups) n += g.k();
+  return n;
+}
+
+std::string BankLayout::role(unsigned bank) const {
+  static const char* kAxis[] = {"X", "Y", "Z"};
+  if (bank == face_bank) return mask_in_face_bank() ? "faces + own-face table" : "faces";
+  if (bank == result_bank) return "results";
+  if (mask_bank && bank == *mask_bank) return "own-face table";
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    const RayGroup& group = groups[g];
+    for (unsigned j = 0; j < group.k(); ++j) {
+      if (group.banks[j] != bank) continue;
+      std::string r = "rays g" + std::to_string(g) + " ";
+      if (group.k() == 3) return r + kAxis[j];
+      return r + (group.k() == 1 ? "XYZ" : "XYZ interleaved " + std::to_string(j));
+    }
+  }
+  return "spare";
+}
+
+double BankLayout::nominal_rays_per_cycle() const {
+  double r = 0;
+  for (const RayGroup& g : groups) r += g.lanes * g.k() / 3.0;
+  return r;
+}
+
+namespace {
+
+std::string lanes_text(unsigned lanes) { return std::to_string(lanes) + (lanes == 1 ? " lane" : " lanes"); }
+
+// Largest ray count the layout accepts in one pass (monotone search on split_rays().fits).
+std::uint64_t max_rays(const BankLayout& layout) {
+  std::uint64_t lo = 0, hi = 1;
+  while (split_rays(layout, hi).fits) {
+    lo = hi;
+    hi *= 2;
+  }
+  while (hi - lo > 1) {
+    const std::uint64_t mid = lo + (hi - lo) / 2;
+    (split_rays(layout, mid).fits ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+}  // namespace
+
+BankLayout make_bank_layout(unsigned lanes, unsigned banks, int bits, unsigned word_bits,
+                            std::uint64_t bank_capacity_bytes) {
+  pipeline::validate_frac_bits(bits);
+  if (lanes == 0) throw std::invalid_argument("the wrapper needs at least one lane (pipeline instance)");
+  if (word_bits != 32 && word_bits != 64) throw std::invalid_argument("bank words must be 32 or 64 bits wide");
+  if (bank_capacity_bytes < word_bits / 8)
+    throw std::invalid_argument("bank capacity must hold at least one word");
+  if (banks < 5) {
+    throw std::invalid_argument("the wrapper needs at least 5 banks (faces, X, Y, Z, results; paper sec 4.1); the board has " +
+                                std::to_string(banks));
+  }
+  BankLayout L;
+  L.lanes = lanes;
+  L.banks_available = banks;
+  L.bits = bits;
+  L.word_bits = word_bits;
+  L.coords_per_word = word_bits / static_cast<unsigned>(bits);
+  L.field_bits = word_bits / L.coords_per_word;
+  L.bank_words = bank_capacity_bytes / (word_bits / 8);
+
+  const unsigned c = L.coords_per_word;
+  const unsigned groups = (lanes + c - 1) / c;
+  const unsigned full_need = 2 + 3 * groups;
+  const unsigned last_k = full_need <= banks ? 3 : banks + 3 > full_need ? banks + 3 - full_need : 0;
+  if (last_k == 0) {
+    throw std::invalid_argument(
+        lanes_text(lanes) + " at " + std::to_string(bits) + " fractional bits (" + std::to_string(c) +
+        " coordinate(s) per " + std::to_string(word_bits) + "-bit word) need " + std::to_string(full_need) +
+        " banks at full rate (3 per group of " + std::to_string(c) + " lanes + faces + results), or at least " +
+        std::to_string(full_need - 2) + " with the last group in one bank at 1/3 rate (sec 4.1); the board has " +
+        std::to_string(banks));
+  }
+  unsigned next_bank = 1, lane = 0;
+  for (unsigned g = 0; g < groups; ++g) {
+    RayGroup group;
+    const unsigned k = g + 1 == groups ? last_k : 3;
+    for (unsigned j = 0; j < k; ++j) group.banks.push_back(next_bank++);
+    group.first_lane = lane;
+    group.lanes = std::min(c, lanes - lane);
+    lane += group.lanes;
+    group.max_packets = L.bank_words * k / 3;  // the first bank of the group holds ceil(3P / k) words
+    L.groups.push_back(group);
+  }
+  L.face_bank = 0;
+  L.result_bank = next_bank++;
+  if (next_bank < banks) L.mask_bank = next_bank++;
+  for (; next_bank < banks; ++next_bank) L.spare_banks.push_back(next_bank);
+  L.max_faces_per_set = L.bank_words / (L.face_words() + (L.mask_in_face_bank() ? 1 : 0));
+  L.max_rays_per_batch = max_rays(L);
+  return L;
+}
+
+RaySplit split_rays(const BankLayout& layout, std::uint64_t rays) {
+  const std::size_t G = layout.groups.size();
+  // Rays group g can take in n cycles at its nominal rate, within its capacity.
+  auto can_take = [&](std::size_t g, std::uint64_t n) {
+    const RayGroup& group = layout.groups[g];
+    return group.lanes * std::min(n * group.k() / 3, group.max_packets);
+  };
+  auto total = [&](std::uint64_t n) {
+    std::uint64_t t = 0;
+    for (std::size_t g = 0; g < G; ++g) t += can_take(g, n);
+    return t;
+  };
+  RaySplit s;
+  s.rays.assign(G, 0);
+  s.first_ray.assign(G, 0);
+  s.packets.assign(G, 0);
+  s.result_base.assign(G, 0);
+  // Smallest n covering all rays; 3 * rays cycles always would if capacity allowed.
+  std::uint64_t lo = 0, hi = 3 * rays;
+  if (total(hi) < rays) {
+    s.fits = false;
+    hi = lo = 3 * rays;
+  }
+  while (lo < hi) {
+    const std::uint64_t mid = lo + (hi - lo) / 2;
+    if (total(mid) >= rays)
+      hi = mid;
+    else
+      lo = mid + 1;
+  }
+  std::uint64_t left = rays, first = 0, words = 0;
+  for (std::size_t g = 0; g < G; ++g) {
+    const std::uint64_t take = std::min(can_take(g, hi), left);
+    s.rays[g] = take;
+    s.first_ray[g] = first;
+    s.packets[g] = (take + layout.groups[g].lanes - 1) / layout.groups[g].lanes;
+    s.result_base[g] = words;
+    words += s.packets[g];
+    first += take;
+    left -= take;
+  }
+  s.result_words = words;
+  if (left != 0 || words > layout.bank_words) s.fits = false;
+  return s;
+}
+
+}  // namespace rc::board

@@ -1,0 +1,98 @@
+// How the FPGA wrapper uses the board's memory banks (paper sec 4.1, 4.2, fig 5), generalised to any
+// number of lanes (pipeline instances) and banks.
+//
+//   bank 0                     face records: 9 words per face (v0, edge1, edge2), then, when no
+//                              spare bank is left, the own-face table (one word per face)
+//   banks 1 .. 3G (or fewer)   end-point coordinates, in G ray groups (below)
+//   next bank                  results, one word per packet of a group
+//   remaining banks            spare; the first one holds the own-face table
+//
+// A coordinate is a `bits`-bit unsigned 0.N code; a bank word of W bits holds c = floor(W / bits)
+// of them, in fields of floor(W / c) bits (15 bits: two 16-bit halves of a 32-bit word, sec 4.2).
+// A ray group is a set of k banks (k = 3 normally; 1 or 2 in the 6- and 7-bank variants of sec 4.1)
+// feeding up to c lanes. Its rays are stored as packets of c rays (one per lane, "slot"); packet p
+// is three words, X, Y, Z, at stream positions 3p, 3p + 1, 3p + 2, and stream position i lives in
+// the group's bank i mod k at word i div k. So k = 3 is fig 5 (one bank each for X, Y and Z, all
+// read in one cycle), k = 1 keeps X, Y, Z interleaved in one bank (a packet every 3 cycles, the
+// lane runs at 1/3 rate) and k = 2 gives 2/3 rate.
+// Groups are filled with full-rate triples first; only the last group may be a 1- or 2-bank group.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rc::board {
+
+struct RayGroup {
+  std::vector<unsigned> banks;  // k = 1, 2 or 3 banks
+  unsigned lanes = 0;           // slots used per packet (<= coordinates per word)
+  unsigned first_lane = 0;      // global index of the lane in slot 0
+  std::uint64_t max_packets = 0;  // what its banks can hold
+
+  unsigned k() const { return static_cast<unsigned>(banks.size()); }
+  // Accesses to the result bank per packet: a result word shared by two or more lanes is
+  // read-modify-written (sec 4.2); a word of one lane is only written.
+  unsigned result_accesses() const { return lanes >= 2 ? 2 : 1; }
+};
+
+struct BankLayout {
+  unsigned lanes = 0;
+  unsigned banks_available = 0;
+  int bits = 0;
+  unsigned word_bits = 32;
+  unsigned coords_per_word = 0;  // c
+  unsigned field_bits = 0;       // width of one coordinate field in a word
+  std::uint64_t bank_words = 0;  // words per bank
+  unsigned face_bank = 0;
+  unsigned result_bank = 0;
+  std::optional<unsigned> mask_bank;  // spare bank holding the own-face table; none: in the face bank
+  std::vector<unsigned> spare_banks;  // unused by the wrapper (the mask bank excluded)
+  std::vector<RayGroup> groups;
+  std::uint64_t max_faces_per_set = 0;
+  std::uint64_t max_rays_per_batch = 0;
+
+  unsigned banks_used() const;
+  unsigned face_words() const { return 9; }
+  bool mask_in_face_bank() const { return !mask_bank.has_value(); }
+  std::string role(unsigned bank) const;  // "faces", "rays g0 X", "results", "own-face table", "spare"
+  // Rays per device cycle at full bank bandwidth: sum over groups of lanes * k / 3.
+  double nominal_rays_per_cycle() const;
+};
+
+// Throws std::invalid_argument for zero lanes, a width outside 7..31, a word narrower than a
+// coordinate, or more banks needed than available (naming lanes, banks needed and available).
+BankLayout make_bank_layout(unsigned lanes, unsigned banks, int bits, unsigned word_bits,
+                            std::uint64_t bank_capacity_bytes);
+
+// The rays of one pass divided over the groups: contiguous ranges in ray order, each group filled
+// up to what it can do in the smallest number of cycles that covers all rays at the groups'
+// nominal rates (a group of k banks and s lanes does s * floor(n * k / 3) rays in n cycles).
+// The host packs, and the wrapper unpacks, with this same function.
+struct RaySplit {
+  std::vector<std::uint64_t> rays;         // per group
+  std::vector<std::uint64_t> first_ray;    // global index of the group's first ray
+  std::vector<std::uint64_t> packets;      // ceil(rays / lanes)
+  std::vector<std::uint64_t> result_base;  // first result word of the group
+  std::uint64_t result_words = 0;
+  bool fits = true;                        // within every bank's capacity
+};
+RaySplit split_rays(const BankLayout& layout, std::uint64_t rays);
+
+struct WordAddress {
+  unsigned bank;
+  std::uint64_t word;
+};
+// Where coordinate word `axis` (0 X, 1 Y, 2 Z) of packet p of a group lives.
+inline WordAddress ray_word(const RayGroup& g, std::uint64_t packet, unsigned axis) {
+  const std::uint64_t i = 3 * packet + axis;
+  return {g.banks[i % g.k()], i / g.k()};
+}
+// Words the j-th bank of a group holds for `packets` packets.
+inline std::uint64_t group_bank_words(const RayGroup& g, unsigned j, std::uint64_t packets) {
+  const std::uint64_t n = 3 * packets;
+  return n > j ? (n - j + g.k() - 1) / g.k() : 0;
+}
+
+}  // namespace rc::board

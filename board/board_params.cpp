@@ -1,0 +1,36 @@
+#include "board/board_params.h"
+
+#include "tlm/timing.h"
+
+namespace rc::board {
+
+BoardParams make_board_params(const DeviceProfile& p, const BoardChoices& c) {
+  BoardParams b;
+  b.device = p.name;
+  b.lanes = c.lanes;
+  b.banks = c.banks != 0 ? c.banks : p.bank_count;
+  b.bits = c.bits;
+  b.bank_capacity_bytes = c.bank_capacity_bytes != 0 ? c.bank_capacity_bytes : p.bank_capacity_bytes;
+  b.word_bits = p.bank_word_bits;
+  b.bank_write_latency = p.bank_write_latency_cycles;
+  b.timing.device_period = tlmx::period_from_hz(p.clock_mhz(static_cast<int>(c.lanes)) * 1e6);
+  b.timing.bank_period = tlmx::period_from_hz(p.bank_clock_mhz * 1e6);
+  b.timing.bank_read_latency = p.bank_read_latency_cycles;
+  b.timing.pass_start = p.pass_start_cycles;
+  b.timing.face_setup = p.face_setup_cycles;
+  b.timing.pass_finish = p.pass_finish_cycles;
+  b.timing.pipeline_latency = p.pipeline_latency_cycles;
+  b.register_access_cycles = p.register_access_cycles;
+  b.pci.width_bits = p.pci_width_bits;
+  b.pci.clock_period = tlmx::period_from_hz(p.pci_clock_mhz * 1e6);
+  b.pci.burst_efficiency = p.pci_burst_efficiency;
+  b.pci.setup_cycles = p.pci_setup_cycles;
+  b.pci.max_burst_bytes = p.pci_max_burst_bytes;
+  b.pci.master_abort_cycles = p.pci_master_abort_cycles;
+  b.bridge_latency_cycles = p.bridge_latency_cycles;
+  b.irq_latency = c.irq_latency;
+  b.model = c.model;
+  return b;
+}
+
+}  // namespace rc::board

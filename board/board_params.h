@@ -1,0 +1,47 @@
+// The concrete parameters of one RC2000 instance: a device profile plus the run's choices (lanes,
+// banks, width, capacity override, wrapper model). Tests may fill BoardParams directly.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include <systemc>
+
+#include "board/device_profile.h"
+#include "board/pass_timing.h"
+#include "tlm/pci_bus.h"
+
+namespace rc::board {
+
+enum class WrapperModel { fast, cycle };
+
+struct BoardParams {
+  std::string device = "custom";
+  unsigned lanes = 1;
+  unsigned banks = 6;
+  int bits = 15;
+  std::uint64_t bank_capacity_bytes = 4u << 20;
+  unsigned word_bits = 32;
+  unsigned bank_write_latency = 2;     // bank cycles (read latency: timing.bank_read_latency)
+  WrapperTiming timing;                // device and bank clocks, wrapper cycle costs, pipeline latency
+  unsigned register_access_cycles = 1; // device cycles per register access
+  tlmx::PciBusConfig pci;
+  unsigned bridge_latency_cycles = 2;  // PCI cycles through the bridge to the local bus
+  sc_core::sc_time irq_latency = sc_core::SC_ZERO_TIME;  // device raises -> host thread runs
+  WrapperModel model = WrapperModel::fast;
+  bool report_at_end = false;          // print the tlm parts' summaries at sc_stop()
+};
+
+struct BoardChoices {
+  unsigned lanes = 1;
+  unsigned banks = 0;                    // 0: the profile's count
+  int bits = 15;
+  std::uint64_t bank_capacity_bytes = 0; // 0: the profile's
+  WrapperModel model = WrapperModel::fast;
+  sc_core::sc_time irq_latency = sc_core::SC_ZERO_TIME;
+};
+
+// Throws std::invalid_argument if the profile has no clock for the lane count.
+BoardParams make_board_params(const DeviceProfile& profile, const BoardChoices& choices);
+
+}  // namespace rc::board

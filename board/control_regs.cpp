@@ -1,0 +1,103 @@
+#include "board/control_regs.h"
+
+#include <cstring>
+
+namespace rc::board {
+
+ControlRegs::ControlRegs(const sc_core::sc_module_name& name, sc_core::sc_time access_time,
+                         std::uint32_t config_value)
+    : sc_core::sc_module(name), in("in"), m_access_time(access_time) {
+  m_regs[reg::kId / 4] = reg::kIdValue;
+  m_regs[reg::kConfig / 4] = config_value;
+  m_regs[reg::kSourceFace / 4] = reg::kNoFace;
+  in.register_b_transport(this, &ControlRegs::b_transport);
+  in.register_transport_dbg(this, &ControlRegs::transport_dbg);
+}
+
+std::uint32_t ControlRegs::take_start() {
+  m_start_pending = false;
+  return m_start_bits;
+}
+
+void ControlRegs::set_busy(bool busy) {
+  std::uint32_t& status = m_regs[reg::kStatus / 4];
+  status = busy ? (status | reg::kBusy) : (status & ~reg::kBusy);
+}
+
+void ControlRegs::finish_pass(std::uint64_t cycles, std::uint32_t error) {
+  std::uint32_t& status = m_regs[reg::kStatus / 4];
+  status = (status & ~reg::kBusy) | reg::kDone | (error != reg::kOk ? reg::kError : 0);
+  m_regs[reg::kErrorCode / 4] = error;
+  m_regs[reg::kPassCyclesLo / 4] = static_cast<std::uint32_t>(cycles);
+  m_regs[reg::kPassCyclesHi / 4] = static_cast<std::uint32_t>(cycles >> 32);
+  ++m_regs[reg::kPasses / 4];
+}
+
+void ControlRegs::write(std::uint64_t offset, std::uint32_t value, const sc_core::sc_time& effective) {
+  switch (offset) {
+    case reg::kId: case reg::kConfig: case reg::kPassCyclesLo: case reg::kPassCyclesHi:
+    case reg::kPasses: case reg::kErrorCode:
+      return;  // read-only
+    case reg::kControl:
+      if (value & reg::kStart) {
+        m_start_pending = true;
+        m_start_bits = value;
+        m_start_time = effective;
+        m_start_event.notify(effective - sc_core::sc_time_stamp());
+      }
+      return;
+    case reg::kStatus: {
+      std::uint32_t& status = m_regs[reg::kStatus / 4];
+      const std::uint32_t clear = value & (reg::kDone | reg::kError);
+      status &= ~clear;
+      if ((clear & reg::kDone) && m_acknowledge) m_acknowledge();
+      return;
+    }
+    default:
+      m_regs[offset / 4] = value;
+  }
+}
+
+// Aligned accesses of whole registers, one or several (a burst writes consecutive registers in
+// address order); anything else is an address or burst error.
+void ControlRegs::b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) {
+  const std::uint64_t address = trans.get_address();
+  const unsigned length = trans.get_data_length();
+  if (address % 4 != 0 || length % 4 != 0 || length == 0 || address + length > reg::kBarSize) {
+    trans.set_response_status(tlm::TLM_ADDRESS_ERROR_RESPONSE);
+    return;
+  }
+  if (trans.get_byte_enable_ptr() != nullptr || trans.get_streaming_width() < length) {
+    trans.set_response_status(tlm::TLM_BURST_ERROR_RESPONSE);
+    return;
+  }
+  ++m_accesses;
+  delay += m_access_time;
+  const sc_core::sc_time effective = sc_core::sc_time_stamp() + delay;
+  unsigned char* data = trans.get_data_ptr();
+  for (unsigned i = 0; i < length; i += 4) {
+    const std::uint64_t offset = address + i;
+    std::uint32_t v = 0;
+    if (trans.is_write()) {
+      std::memcpy(&v, data + i, 4);
+      if (offset < reg::kSize) write(offset, v, effective);
+    } else if (trans.is_read()) {
+      v = offset < reg::kSize ? m_regs[offset / 4] : 0;
+      std::memcpy(data + i, &v, 4);
+    }
+  }
+  trans.set_response_status(tlm::TLM_OK_RESPONSE);
+}
+
+unsigned int ControlRegs::transport_dbg(tlm::tlm_generic_payload& trans) {
+  const std::uint64_t address = trans.get_address();
+  if (address % 4 != 0 || !trans.is_read()) return 0;
+  unsigned done = 0;
+  for (; done + 4 <= trans.get_data_length() && address + done < reg::kSize; done += 4) {
+    const std::uint32_t v = m_regs[(address + done) / 4];
+    std::memcpy(trans.get_data_ptr() + done, &v, 4);
+  }
+  return done;
+}
+
+}  // namespace rc::board

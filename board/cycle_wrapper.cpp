@@ -1,0 +1,233 @@
+#include "board/cycle_wrapper.h"
+
+#include "board/word_format.h"
+
+namespace rc::board {
+
+namespace {
+constexpr const char* kMsgType = "rc/board/CycleWrapper";
+}
+
+CycleWrapper::CycleWrapper(const sc_core::sc_module_name& name, const BankLayout& layout,
+                           const WrapperTiming& timing, ControlRegs& regs, tlmx::IrqLine& irq,
+                           std::vector<tlmx::DmiActivitySink*> bank_sinks, std::vector<std::uint64_t> bank_addresses,
+                           WrapperSignals signals)
+    : WrapperBase(name, layout, timing, regs, irq, std::move(bank_sinks), std::move(bank_addresses), signals),
+      clock("clock", timing.device_period, 0.5, sc_core::SC_ZERO_TIME, true) {
+  if (timing.pipeline_latency < 4) SC_REPORT_ERROR(kMsgType, "the cycle-level pipeline needs a latency of at least 4");
+  SC_HAS_PROCESS(CycleWrapper);
+  SC_METHOD(on_edge);
+  sensitive << clock.posedge_event();
+  dont_initialize();
+}
+
+std::uint64_t CycleWrapper::allowed(std::uint64_t t) const {
+  return t * m_timing.device_period.value() / m_timing.bank_period.value();
+}
+
+void CycleWrapper::on_edge() {
+  if (!m_running) {
+    if (!m_regs.start_pending() || m_regs.start_time() > sc_core::sc_time_stamp()) return;
+    begin();
+  }
+  if (m_phase == Phase::Tail && m_cycle == m_done_cycle) return finish();
+  advance_pipeline();
+  controller();
+  ++m_cycle;
+}
+
+void CycleWrapper::begin() {
+  m_running = true;
+  begin_pass();
+  m_in = read_inputs();
+  m_record = PassRecord{};
+  m_record.start = sc_core::sc_time_stamp();
+  m_record.lane_rays.assign(m_layout.lanes, 0);
+  m_traffic.assign(m_layout.banks_available, BankTraffic{});
+  m_cycle = 0;
+  m_phase = Phase::Start;
+  m_left = m_timing.pass_start;
+  m_face = 0;
+  m_mask_lo = m_in.mask_start;
+  m_pipe.clear();
+  stream_cycles(m_layout, m_timing, m_in.split, false, &m_limit);
+}
+
+// One cycle of the wrapper's state machine. Phases of zero length fall through without a cycle.
+void CycleWrapper::controller() {
+  for (;;) {
+    switch (m_phase) {
+      case Phase::Start:
+        if (m_left == 0) {
+          m_phase = Phase::NextFace;
+          continue;
+        }
+        --m_left;
+        return;
+      case Phase::NextFace:
+        if (m_face == m_in.faces) {
+          m_phase = Phase::Tail;
+          m_done_cycle = m_cycle + m_timing.pipeline_latency + m_timing.pass_finish;
+          return;
+        }
+        m_left = m_timing.face_setup;
+        m_phase = Phase::Setup;
+        continue;
+      case Phase::Setup:
+        if (m_left == 0) {
+          m_phase = Phase::Fetch;
+          m_phase_cycle = 0;
+          continue;
+        }
+        --m_left;
+        return;
+      case Phase::Fetch: {
+        ++m_phase_cycle;
+        const std::uint64_t lr = m_timing.bank_read_latency;
+        const std::uint64_t words = m_layout.face_words() + (m_layout.mask_in_face_bank() ? 1 : 0);
+        const bool face_ready = allowed(m_phase_cycle) >= lr + words;
+        const bool mask_ready = !m_layout.mask_bank || allowed(m_phase_cycle) >= lr + 1;
+        if (!(face_ready && mask_ready)) return;
+        m_face_record = face_record(m_face);  // the words have arrived: latch them
+        m_mask_hi = m_mask_lo + mask_count(m_face);
+        m_traffic[m_layout.face_bank].reads += words;
+        m_traffic[m_layout.face_bank].busy_bank_cycles += lr + words;
+        if (m_layout.mask_bank) {
+          m_traffic[*m_layout.mask_bank].reads += 1;
+          m_traffic[*m_layout.mask_bank].busy_bank_cycles += lr + 1;
+        }
+        m_phase = Phase::Stream;
+        m_phase_cycle = 0;
+        m_issued.assign(m_layout.groups.size(), 0);
+        m_result_used = 0;
+        return;
+      }
+      case Phase::Stream: {
+        auto all_issued = [&] {
+          for (std::size_t g = 0; g < m_issued.size(); ++g)
+            if (m_issued[g] < m_in.split.packets[g]) return false;
+          return true;
+        };
+        auto next_face = [&] {
+          m_mask_lo = m_mask_hi;
+          ++m_face;
+          m_phase = Phase::NextFace;
+        };
+        if (all_issued()) {
+          next_face();
+          continue;
+        }
+        ++m_phase_cycle;
+        for (unsigned g = 0; g < m_layout.groups.size(); ++g) try_issue(g);
+        if (all_issued()) next_face();
+        return;
+      }
+      case Phase::Tail:
+        return;
+    }
+  }
+}
+
+bool CycleWrapper::try_issue(unsigned g) {
+  const RayGroup& group = m_layout.groups[g];
+  const std::uint64_t q = m_issued[g];
+  const std::uint64_t t = m_phase_cycle;
+  if (q >= m_in.split.packets[g]) return false;
+  if (t * group.k() / 3 < q + 1) return false;  // the group's rate
+  for (unsigned j = 0; j < group.k(); ++j)
+    if (group_bank_words(group, j, q + 1) > allowed(t)) return false;  // a ray bank stalls
+  const bool clearing = m_in.clear && m_face == 0;
+  const unsigned accesses = clearing ? 1 : group.result_accesses();
+  if (m_result_used + accesses > allowed(t)) return false;  // the result bank stalls
+  m_result_used += accesses;
+
+  Packet p;
+  p.issued = m_cycle;
+  p.group = g;
+  p.index = q;
+  p.clearing = clearing;
+  p.face = m_face_record;
+  p.lanes.resize(group.lanes);
+  std::uint64_t word[3];
+  for (unsigned a = 0; a < 3; ++a) {
+    const WordAddress at = ray_word(group, q, a);
+    word[a] = load_word(bank(at.bank), at.word, m_word_bytes);
+    ++m_traffic[at.bank].reads;
+    ++m_traffic[at.bank].busy_bank_cycles;
+  }
+  const bool source = m_in.face_first + m_face == m_in.source_face;
+  for (unsigned slot = 0; slot < group.lanes; ++slot) {
+    const std::uint64_t r = q * group.lanes + slot;
+    if (r >= m_in.split.rays[g]) break;
+    Lane& lane = p.lanes[slot];
+    lane.valid = true;
+    lane.ray = m_in.split.first_ray[g] + r;
+    lane.masked = source || (lane.ray >= m_mask_lo && lane.ray < m_mask_hi);
+    const pipeline::FixedVec3 end{coordinate_field(word[0], slot, m_layout.field_bits),
+                                  coordinate_field(word[1], slot, m_layout.field_bits),
+                                  coordinate_field(word[2], slot, m_layout.field_bits)};
+    lane.direction = pipeline::segment_direction(m_in.start, end);
+    ++m_record.lane_rays[group.first_lane + slot];
+  }
+  m_pipe.push_back(std::move(p));
+  ++m_issued[g];
+  return true;
+}
+
+// Every packet in flight moves one stage; stage values are computed at their stage positions and
+// the packet that reaches the end is written back.
+void CycleWrapper::advance_pipeline() {
+  const std::uint64_t L = m_timing.pipeline_latency;
+  const std::uint64_t s1 = (L - 1) / 3, s2 = 2 * (L - 1) / 3, s3 = L - 1;
+  const int bits = m_layout.bits;
+  while (!m_pipe.empty() && m_cycle - m_pipe.front().issued == L) {
+    write_back(m_pipe.front());
+    m_pipe.pop_front();
+  }
+  for (Packet& p : m_pipe) {
+    const std::uint64_t age = m_cycle - p.issued;
+    if (age != s1 && age != s2 && age != s3) continue;
+    for (Lane& lane : p.lanes) {
+      if (!lane.valid) continue;
+      if (age == s1) lane.s1 = pipeline::stage1(p.face, m_in.start, lane.direction, bits);
+      if (age == s2) lane.s2 = pipeline::stage2(p.face, lane.s1, bits);
+      if (age == s3) lane.s3 = pipeline::stage3(p.face, lane.direction, lane.s1, lane.s2, bits);
+    }
+  }
+}
+
+void CycleWrapper::write_back(const Packet& p) {
+  const RayGroup& group = m_layout.groups[p.group];
+  std::uint64_t hits = 0;
+  for (unsigned slot = 0; slot < p.lanes.size(); ++slot) {
+    const Lane& lane = p.lanes[slot];
+    if (lane.valid && !lane.masked && lane.s3.hit) hits |= std::uint64_t(1) << slot;
+  }
+  std::uint8_t* results = bank(m_layout.result_bank);
+  const std::uint64_t at = m_in.split.result_base[p.group] + p.index;
+  BankTraffic& traffic = m_traffic[m_layout.result_bank];
+  if (p.clearing) {
+    store_word(results, at, m_word_bytes, hits);  // first face of a clearing pass: write, no read
+  } else if (group.result_accesses() == 2) {
+    store_word(results, at, m_word_bytes, load_word(results, at, m_word_bytes) | hits);  // shared word: read-modify-write
+    ++traffic.reads;
+  } else if (hits != 0) {
+    store_word(results, at, m_word_bytes, hits);  // one lane per word: write the 1 only when blocked
+  }
+  ++traffic.writes;  // the write slot is reserved either way
+  traffic.busy_bank_cycles = traffic.reads + traffic.writes;
+}
+
+void CycleWrapper::finish() {
+  m_record.end = sc_core::sc_time_stamp();
+  m_record.cycles = m_cycle;
+  m_record.rays = m_in.rays;
+  m_record.faces = m_in.faces;
+  m_record.error = m_in.error;
+  m_record.limit = m_limit;
+  m_running = false;
+  report_traffic(m_traffic);
+  complete_pass(m_record);
+}
+
+}  // namespace rc::board

@@ -1,0 +1,83 @@
+// The cycle-level wrapper model, for tests only (small batches): an SC_METHOD on an sc_clock at the
+// device clock runs the wrapper's state machine one cycle per rising edge, with real bank reads per
+// cycle, a 37-stage pipeline holding valid bits and the stage values of every lane (pipeline's
+// stage1/stage2/stage3 called at their stage positions) and the result bank's read-modify-writes as
+// results leave the pipeline. Its purpose is to show that pass_timing.h, which the fast model
+// charges, is what the clocked design does: same completion time, same result bits.
+//
+// Bank bandwidth: within a phase (a face's record fetch, a face's stream) a bank of period Pb gives
+// floor(t * Pd / Pb) accesses by the end of the phase's t-th device cycle. A group issues a packet in
+// a cycle when its rate allows (floor(t * k / 3) packets by cycle t) and every bank it needs has the
+// budget: its ray banks for the packet's words and the result bank for the packet's result
+// accesses, reserved at issue because the pipeline's fixed latency moves the whole pattern 37 cycles
+// later. Groups are served in index order (fixed priority).
+//
+// Stage positions (assumption: the paper gives only the total, 37): the direction end - start is
+// formed in the input cycle (age 0); stage 1 completes at age 12, stage 2 at age 24, stage 3 (and the
+// decision) at age 36, and the result is written at age 37, i.e. ages (L-1)/3, 2(L-1)/3, L-1, L.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <vector>
+
+#include "board/wrapper_base.h"
+#include "pipeline/fixed_mt.h"
+
+namespace rc::board {
+
+class CycleWrapper : public WrapperBase {
+ public:
+  sc_core::sc_clock clock;
+
+  CycleWrapper(const sc_core::sc_module_name& name, const BankLayout& layout, const WrapperTiming& timing,
+               ControlRegs& regs, tlmx::IrqLine& irq, std::vector<tlmx::DmiActivitySink*> bank_sinks,
+               std::vector<std::uint64_t> bank_addresses, WrapperSignals signals = {});
+
+ private:
+  enum class Phase { Start, NextFace, Setup, Fetch, Stream, Tail };
+
+  struct Lane {  // one slot of a packet, i.e. one lane's pipeline register contents
+    bool valid = false, masked = false;
+    std::uint64_t ray = 0;
+    pipeline::FixedVec3 direction{0, 0, 0};
+    pipeline::Stage1Result s1{};
+    pipeline::Stage2Result s2{};
+    pipeline::Stage3Result s3{};
+  };
+  struct Packet {  // what one group puts into its lanes in one cycle
+    std::uint64_t issued = 0;  // cycle
+    unsigned group = 0;
+    std::uint64_t index = 0;   // packet index within the group
+    bool clearing = false;
+    pipeline::FaceRecord face{};
+    std::vector<Lane> lanes;
+  };
+
+  void on_edge();
+  void begin();
+  void controller();
+  bool try_issue(unsigned g);
+  void advance_pipeline();
+  void write_back(const Packet& p);
+  void finish();
+  std::uint64_t allowed(std::uint64_t t) const;  // bank accesses by the end of phase cycle t
+
+  bool m_running = false;
+  PassInputs m_in;
+  PassRecord m_record;
+  std::vector<BankTraffic> m_traffic;
+  std::uint64_t m_cycle = 0, m_done_cycle = 0;
+  Phase m_phase = Phase::Start;
+  std::uint64_t m_left = 0;         // cycles left in Start / Setup
+  std::uint64_t m_phase_cycle = 0;  // t: cycles elapsed in Fetch / Stream, this one included
+  std::uint64_t m_face = 0;
+  std::uint64_t m_mask_lo = 0, m_mask_hi = 0;
+  pipeline::FaceRecord m_face_record{};
+  std::vector<std::uint64_t> m_issued;  // packets issued this face, per group
+  std::uint64_t m_result_used = 0;      // result-bank accesses reserved this face
+  std::deque<Packet> m_pipe;
+  std::string m_limit;
+};
+
+}  // namespace rc::board

@@ -1,0 +1,79 @@
+#include "board/device_profile.h"
+
+#include <stdexcept>
+
+#include "board/profile_reader.h"
+
+namespace rc::board {
+
+double DeviceProfile::clock_mhz(int lanes) const {
+  const auto it = clock_mhz_by_lanes.find(lanes);
+  if (it != clock_mhz_by_lanes.end()) return it->second;
+  if (clock_mhz_default) return *clock_mhz_default;
+  throw std::invalid_argument("device profile " + name + " gives no clock for " + std::to_string(lanes) +
+                              " lanes (clock.mhz_by_lanes has no entry and there is no clock.mhz_default)");
+}
+
+namespace {
+
+void read_clock(const ProfileReader& r, DeviceProfile& p) {
+  if (const auto* by_lanes = r.find("clock.mhz_by_lanes")) {
+    if (!by_lanes->is_object()) r.fail("clock.mhz_by_lanes", "must be an object keyed by lane count");
+    for (const auto& item : by_lanes->items()) {
+      int lanes = 0;
+      try {
+        lanes = std::stoi(item.key());
+      } catch (const std::exception&) {
+        r.fail("clock.mhz_by_lanes." + item.key(), "key must be a lane count");
+      }
+      if (lanes < 1) r.fail("clock.mhz_by_lanes." + item.key(), "lane count must be at least 1");
+      p.clock_mhz_by_lanes[lanes] = r.number("clock.mhz_by_lanes." + item.key(), 1e-3, 1e4);
+    }
+  }
+  p.clock_mhz_default = r.optional_number("clock.mhz_default", 1e-3, 1e4);
+  if (p.clock_mhz_by_lanes.empty() && !p.clock_mhz_default)
+    r.fail("clock", "needs mhz_by_lanes or mhz_default");
+  p.clock_bits = static_cast<int>(r.integer("clock.design_bits", 1, 64));
+}
+
+}  // namespace
+
+DeviceProfile load_device_profile(const std::string& path) {
+  DeviceProfile p;
+  p.json = read_json_file(path);
+  p.file = path;
+  const ProfileReader r(p.json, path);
+  p.name = r.text("name");
+  p.part = r.text("fpga.part");
+  read_clock(r, p);
+  p.pipeline_latency_cycles = static_cast<unsigned>(r.integer("pipeline.latency_cycles", 1, 1000));
+
+  p.bank_count = static_cast<unsigned>(r.integer("banks.count", 0, 1024));
+  p.bank_capacity_bytes = r.integer("banks.capacity_bytes", 1, std::uint64_t(1) << 40);
+  p.bank_word_bits = static_cast<unsigned>(r.integer("banks.word_bits", 32, 64));
+  if (p.bank_word_bits != 32 && p.bank_word_bits != 64) r.fail("banks.word_bits", "must be 32 or 64");
+  p.bank_clock_mhz = r.number("banks.clock_mhz", 1e-3, 1e4);
+  p.bank_read_latency_cycles = static_cast<unsigned>(r.integer("banks.read_latency_cycles", 0, 100));
+  p.bank_write_latency_cycles = static_cast<unsigned>(r.integer("banks.write_latency_cycles", 0, 100));
+
+  p.pci_width_bits = static_cast<unsigned>(r.integer("pci.width_bits", 32, 64));
+  if (p.pci_width_bits != 32 && p.pci_width_bits != 64) r.fail("pci.width_bits", "must be 32 or 64");
+  p.pci_clock_mhz = r.number("pci.clock_mhz", 1, 1000);
+  p.pci_burst_efficiency = r.number("pci.burst_efficiency", 1e-3, 1.0);
+  p.pci_setup_cycles = static_cast<unsigned>(r.integer("pci.setup_cycles", 0, 1000));
+  p.pci_max_burst_bytes = r.integer("pci.max_burst_bytes", 8, std::uint64_t(1) << 32);
+  p.pci_master_abort_cycles = static_cast<unsigned>(r.integer("pci.master_abort_cycles", 1, 1000));
+  p.bridge_latency_cycles = static_cast<unsigned>(r.integer("pci.bridge_latency_cycles", 0, 1000));
+
+  p.pass_start_cycles = static_cast<unsigned>(r.integer("wrapper.pass_start_cycles", 0, 1u << 20));
+  p.face_setup_cycles = static_cast<unsigned>(r.integer("wrapper.face_setup_cycles", 0, 1u << 20));
+  p.pass_finish_cycles = static_cast<unsigned>(r.integer("wrapper.pass_finish_cycles", 0, 1u << 20));
+  p.register_access_cycles = static_cast<unsigned>(r.integer("wrapper.register_access_cycles", 1, 1u << 20));
+  return p;
+}
+
+DeviceProfile find_device_profile(const std::string& name_or_path) {
+  return load_device_profile(resolve_profile_path(name_or_path, "devices"));
+}
+
+}  // namespace rc::board

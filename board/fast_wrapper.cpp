@@ -1,0 +1,99 @@
+#include "board/fast_wrapper.h"
+
+#include "board/word_format.h"
+#include "pipeline/fixed_mt.h"
+#include "tlm/timing.h"
+
+namespace rc::board {
+
+std::vector<std::uint64_t> lane_rays_per_face(const BankLayout& layout, const RaySplit& split) {
+  std::vector<std::uint64_t> lanes(layout.lanes, 0);
+  for (std::size_t g = 0; g < layout.groups.size(); ++g) {
+    const RayGroup& group = layout.groups[g];
+    for (unsigned j = 0; j < group.lanes; ++j)
+      lanes[group.first_lane + j] = split.rays[g] > j ? (split.rays[g] - j + group.lanes - 1) / group.lanes : 0;
+  }
+  return lanes;
+}
+
+FastWrapper::FastWrapper(const sc_core::sc_module_name& name, const BankLayout& layout, const WrapperTiming& timing,
+                         ControlRegs& regs, tlmx::IrqLine& irq, std::vector<tlmx::DmiActivitySink*> bank_sinks,
+                         std::vector<std::uint64_t> bank_addresses, WrapperSignals signals)
+    : WrapperBase(name, layout, timing, regs, irq, std::move(bank_sinks), std::move(bank_addresses), signals) {
+  SC_HAS_PROCESS(FastWrapper);
+  SC_THREAD(run);
+}
+
+void FastWrapper::run() {
+  for (;;) {
+    if (!m_regs.start_pending()) sc_core::wait(m_regs.start_event());
+    if (!m_regs.start_pending()) continue;
+    if (m_regs.start_time() > sc_core::sc_time_stamp()) sc_core::wait(m_regs.start_time() - sc_core::sc_time_stamp());
+    const sc_core::sc_time start = next_edge(m_regs.start_time());
+    begin_pass();
+    const PassInputs in = read_inputs();
+    const PassTiming timing = pass_timing(m_layout, m_timing, in.split, in.faces, in.clear);
+    compute(in);
+    PassRecord record;
+    record.start = start;
+    record.cycles = timing.total;
+    record.end = start + tlmx::cycles(timing.total, m_timing.device_period);
+    record.rays = in.rays;
+    record.faces = in.faces;
+    record.error = in.error;
+    record.limit = timing.limit;
+    record.lane_rays = lane_rays_per_face(m_layout, in.split);
+    for (std::uint64_t& r : record.lane_rays) r *= in.faces;
+    sc_core::wait(record.end - sc_core::sc_time_stamp());  // the pass: one timed wait
+    write_results(in);
+    report_traffic(timing.banks);
+    complete_pass(record);
+  }
+}
+
+// Face-outer, ray-inner over the end points read back from the X, Y, Z banks. The shooter's face
+// is masked for every ray, and face f for the rays ending on it: those form one contiguous range
+// [lo, lo + table[f]) because the host sends rays grouped by end face in face order.
+void FastWrapper::compute(const PassInputs& in) {
+  const std::size_t R = in.rays;
+  m_x.resize(R);
+  m_y.resize(R);
+  m_z.resize(R);
+  m_blocked.assign(R, 0);
+  std::vector<const std::uint8_t*> data(m_layout.banks_available, nullptr);
+  for (const RayGroup& g : m_layout.groups)
+    for (unsigned b : g.banks) data[b] = bank(b);
+  unpack_rays(m_layout, in.split, data, m_x.data(), m_y.data(), m_z.data());
+  std::uint64_t lo = in.mask_start;
+  for (std::uint64_t f = 0; f < in.faces; ++f) {
+    const std::uint64_t hi = lo + mask_count(f);
+    if (in.face_first + f != in.source_face) {
+      const pipeline::FaceRecord face = face_record(f);
+      pipeline::occlude_face(face, in.start, m_x.data(), m_y.data(), m_z.data(), lo, m_layout.bits, m_blocked.data());
+      pipeline::occlude_face(face, in.start, m_x.data() + hi, m_y.data() + hi, m_z.data() + hi, R - hi, m_layout.bits,
+                             m_blocked.data() + hi);
+    }
+    lo = hi;
+  }
+}
+
+// The result words as the per-face read-modify-writes leave them: the OR over faces, on top of the
+// bank's old contents unless the pass clears.
+void FastWrapper::write_results(const PassInputs& in) {
+  if (in.faces == 0) return;
+  std::uint8_t* results = bank(m_layout.result_bank);
+  for (std::size_t g = 0; g < m_layout.groups.size(); ++g) {
+    const RayGroup& group = m_layout.groups[g];
+    for (std::uint64_t p = 0; p < in.split.packets[g]; ++p) {
+      const std::uint64_t at = in.split.result_base[g] + p;
+      std::uint64_t word = in.clear ? 0 : load_word(results, at, m_word_bytes);
+      for (unsigned slot = 0; slot < group.lanes; ++slot) {
+        const std::uint64_t r = p * group.lanes + slot;
+        if (r < in.split.rays[g]) word |= std::uint64_t(m_blocked[in.split.first_ray[g] + r]) << slot;
+      }
+      store_word(results, at, m_word_bytes, word);
+    }
+  }
+}
+
+}  // namespace rc::board

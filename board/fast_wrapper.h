@@ -1,0 +1,34 @@
+// The fast wrapper model: one pass is one SC_THREAD activation and one timed wait. At the START
+// event it reads the pass's data from the banks through DMI and computes every result with
+// pipeline::occlude_face (face-outer, ray-inner, as the hardware streams, sec 4.1), then waits
+// until the pass's completion time from pass_timing.h (first device clock edge at or after START,
+// plus the pass's cycles), writes the result words, sets DONE and raises the interrupt.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "board/wrapper_base.h"
+
+namespace rc::board {
+
+class FastWrapper : public WrapperBase {
+ public:
+  FastWrapper(const sc_core::sc_module_name& name, const BankLayout& layout, const WrapperTiming& timing,
+              ControlRegs& regs, tlmx::IrqLine& irq, std::vector<tlmx::DmiActivitySink*> bank_sinks,
+              std::vector<std::uint64_t> bank_addresses, WrapperSignals signals = {});
+
+ private:
+  void run();
+  void compute(const PassInputs& in);
+  void write_results(const PassInputs& in);
+
+  // Scratch kept between passes: end points in pass order and the blocked flags.
+  std::vector<std::int64_t> m_x, m_y, m_z;
+  std::vector<std::uint8_t> m_blocked;
+};
+
+// Rays each lane streams per face for a split (lane = group's first lane + slot).
+std::vector<std::uint64_t> lane_rays_per_face(const BankLayout& layout, const RaySplit& split);
+
+}  // namespace rc::board

@@ -1,0 +1,81 @@
+#include "board/rc2000.h"
+
+#include "board/cycle_wrapper.h"
+#include "board/fast_wrapper.h"
+#include "tlm/timing.h"
+
+namespace rc::board {
+
+namespace {
+
+// Banks sit on a power-of-two stride of at least 16 MiB, so a bank's window never depends on the
+// others' sizes.
+std::uint64_t stride_for(std::uint64_t capacity) {
+  std::uint64_t s = 16u << 20;
+  while (s < capacity) s *= 2;
+  return s;
+}
+
+std::uint32_t config_register(const BankLayout& l) {
+  return (l.lanes & 0xFF) | (static_cast<std::uint32_t>(l.bits) & 0xFF) << 8 |
+         (static_cast<std::uint32_t>(l.groups.size()) & 0xFF) << 16 | (l.banks_available & 0xFF) << 24;
+}
+
+tlmx::SramBankConfig bank_config(const BoardParams& p) {
+  tlmx::SramBankConfig c;
+  c.capacity_bytes = p.bank_capacity_bytes;
+  c.word_bytes = p.word_bits / 8;
+  c.clock_period = p.timing.bank_period;
+  c.read_latency_cycles = p.timing.bank_read_latency;
+  c.write_latency_cycles = p.bank_write_latency;
+  c.cycles_per_word = 1;
+  c.report_at_end = p.report_at_end;
+  return c;
+}
+
+tlmx::PciBusConfig pci_config(const BoardParams& p) {
+  tlmx::PciBusConfig c = p.pci;
+  c.report_at_end = p.report_at_end;
+  return c;
+}
+
+}  // namespace
+
+Rc2000::Rc2000(const sc_core::sc_module_name& name, const BoardParams& params)
+    : sc_core::sc_module(name),
+      m_params(params),
+      m_layout(make_bank_layout(params.lanes, params.banks, params.bits, params.word_bits, params.bank_capacity_bytes)),
+      m_stride(stride_for(params.bank_capacity_bytes)),
+      pci("pci", pci_config(params)),
+      dma("dma", tlmx::DmaConfig{params.pci.max_burst_bytes, params.report_at_end}),
+      local("local", tlmx::RouterConfig{params.pci.clock_period, params.bridge_latency_cycles, params.report_at_end}),
+      regs("regs", tlmx::cycles(params.register_access_cycles, params.timing.device_period), config_register(m_layout)),
+      irq("irq", tlmx::IrqLineConfig{params.irq_latency, params.report_at_end}),
+      start_signal("start"),
+      busy_signal("busy"),
+      done_signal("done"),
+      irq_signal("irq_level") {
+  dma.out.bind(pci.in);  // the bridge's DMA channel: pci.in[0]; host initiators bind after it
+  pci.out.bind(regs.in);
+  pci.out.bind(local.in);
+  pci.map(kBar0, reg::kBarSize, 0, "rc2000.regs");
+  pci.map(kBar1, m_params.banks * m_stride, 1, "rc2000.banks");
+
+  std::vector<tlmx::DmiActivitySink*> sinks;
+  std::vector<std::uint64_t> addresses;
+  for (unsigned b = 0; b < m_params.banks; ++b) {
+    m_banks.push_back(std::make_unique<tlmx::SramBank>(("bank" + std::to_string(b)).c_str(), bank_config(m_params)));
+    local.out.bind(m_banks.back()->in);
+    local.map(b * m_stride, m_params.bank_capacity_bytes, b, "bank" + std::to_string(b));
+    sinks.push_back(m_banks.back().get());
+    addresses.push_back(b * m_stride);
+  }
+  const WrapperSignals signals{&start_signal, &busy_signal, &done_signal, &irq_signal};
+  if (m_params.model == WrapperModel::cycle)
+    m_wrapper = std::make_unique<CycleWrapper>("wrapper", m_layout, m_params.timing, regs, irq, sinks, addresses, signals);
+  else
+    m_wrapper = std::make_unique<FastWrapper>("wrapper", m_layout, m_params.timing, regs, irq, sinks, addresses, signals);
+  m_wrapper->out.bind(local.in);
+}
+
+}  // namespace rc::board

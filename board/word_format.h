@@ -1,0 +1,66 @@
+// The wrapper's word formats, shared by the host driver (which packs) and the wrapper (which
+// unpacks), so both sides agree by construction. Words are little-endian, 4 or 8 bytes.
+//   coordinate word: c fields of field_bits bits, slot j at bit j * field_bits (bank_layout.h)
+//   face record:     9 words, v0.xyz, edge1.xyz, edge2.xyz, two's complement (edges are signed 1.N)
+//   own-face table:  one word per face of the set: rays of the pass that end on that face
+//   result word:     bit j = ray in slot j of the packet is blocked
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "board/bank_layout.h"
+#include "pipeline/fixed_format.h"
+
+namespace rc::board {
+
+inline std::uint64_t load_word(const std::uint8_t* base, std::uint64_t index, unsigned word_bytes) {
+  if (word_bytes == 4) {
+    std::uint32_t w;
+    std::memcpy(&w, base + index * 4, 4);
+    return w;
+  }
+  std::uint64_t w;
+  std::memcpy(&w, base + index * 8, 8);
+  return w;
+}
+
+inline void store_word(std::uint8_t* base, std::uint64_t index, unsigned word_bytes, std::uint64_t value) {
+  if (word_bytes == 4) {
+    const auto w = static_cast<std::uint32_t>(value);
+    std::memcpy(base + index * 4, &w, 4);
+  } else {
+    std::memcpy(base + index * 8, &value, 8);
+  }
+}
+
+inline std::int64_t signed_word(std::uint64_t w, unsigned word_bits) {
+  return word_bits == 32 ? static_cast<std::int64_t>(static_cast<std::int32_t>(static_cast<std::uint32_t>(w)))
+                         : static_cast<std::int64_t>(w);
+}
+
+inline std::int64_t coordinate_field(std::uint64_t word, unsigned slot, unsigned field_bits) {
+  const std::uint64_t mask = field_bits >= 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << field_bits) - 1;
+  return static_cast<std::int64_t>((word >> (slot * field_bits)) & mask);
+}
+
+// The 9 words of a face record.
+void face_record_words(const pipeline::FaceRecord& face, std::uint64_t words[9]);
+pipeline::FaceRecord face_record_from_words(const std::uint64_t words[9], unsigned word_bits);
+
+// Host side: packs end-point codes x[i], y[i], z[i] (rays in pass order) into one byte image per
+// bank (images[bank], resized to the words that bank receives; banks without rays stay empty).
+void pack_rays(const BankLayout& layout, const RaySplit& split, const std::int64_t* x, const std::int64_t* y,
+               const std::int64_t* z, std::vector<std::vector<std::uint8_t>>& images);
+
+// Wrapper side: reads the coordinate words of a pass from the banks (bank_data[b] = bank b's
+// storage) back into x, y, z in pass order.
+void unpack_rays(const BankLayout& layout, const RaySplit& split, const std::vector<const std::uint8_t*>& bank_data,
+                 std::int64_t* x, std::int64_t* y, std::int64_t* z);
+
+// Host side: blocked flags in pass order from the result words (result_base of the split onward).
+void unpack_results(const BankLayout& layout, const RaySplit& split, const std::uint8_t* result_words,
+                    std::uint8_t* blocked);
+
+}  // namespace rc::board

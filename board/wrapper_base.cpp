@@ -1,0 +1,130 @@
+#include "board/wrapper_base.h"
+
+#include "board/word_format.h"
+
+namespace rc::board {
+
+namespace {
+constexpr const char* kMsgType = "rc/board/Wrapper";
+}
+
+WrapperBase::WrapperBase(const sc_core::sc_module_name& name, const BankLayout& layout, const WrapperTiming& timing,
+                         ControlRegs& regs, tlmx::IrqLine& irq, std::vector<tlmx::DmiActivitySink*> bank_sinks,
+                         std::vector<std::uint64_t> bank_addresses, WrapperSignals signals)
+    : sc_core::sc_module(name),
+      out("out"),
+      m_layout(layout),
+      m_timing(timing),
+      m_regs(regs),
+      m_irq(irq),
+      m_word_bytes(layout.word_bits / 8),
+      m_sinks(std::move(bank_sinks)),
+      m_addresses(std::move(bank_addresses)),
+      m_dmi(m_addresses.size(), nullptr),
+      m_signals(signals) {
+  m_stats.lane_rays.assign(layout.lanes, 0);
+  m_regs.on_acknowledge([this] { acknowledge(); });
+}
+
+sc_core::sc_time WrapperBase::next_edge(const sc_core::sc_time& t) const {
+  const std::uint64_t p = m_timing.device_period.value();
+  return sc_core::sc_time::from_value((t.value() + p - 1) / p * p);
+}
+
+// The whole bank through the local bus, once; the array never moves, so the pointer stays valid.
+std::uint8_t* WrapperBase::bank(unsigned b) {
+  if (m_dmi[b] != nullptr) return m_dmi[b];
+  tlm::tlm_generic_payload trans;
+  tlm::tlm_dmi dmi;
+  trans.set_address(m_addresses[b]);
+  trans.set_command(tlm::TLM_READ_COMMAND);
+  if (!out->get_direct_mem_ptr(trans, dmi) || !dmi.is_read_write_allowed() ||
+      dmi.get_start_address() != m_addresses[b]) {
+    SC_REPORT_FATAL(kMsgType, ("no DMI to bank " + std::to_string(b)).c_str());
+  }
+  m_dmi[b] = dmi.get_dmi_ptr();
+  return m_dmi[b];
+}
+
+std::uint32_t WrapperBase::mask_count(std::uint64_t face_in_set) {
+  if (m_layout.mask_bank) return static_cast<std::uint32_t>(load_word(bank(*m_layout.mask_bank), face_in_set, m_word_bytes));
+  const std::uint64_t base = static_cast<std::uint64_t>(m_regs.value(reg::kFaceCount)) * m_layout.face_words();
+  return static_cast<std::uint32_t>(load_word(bank(m_layout.face_bank), base + face_in_set, m_word_bytes));
+}
+
+pipeline::FaceRecord WrapperBase::face_record(std::uint64_t face_in_set) {
+  std::uint64_t words[9];
+  const std::uint8_t* faces = bank(m_layout.face_bank);
+  for (unsigned i = 0; i < 9; ++i) words[i] = load_word(faces, face_in_set * 9 + i, m_word_bytes);
+  return face_record_from_words(words, m_layout.word_bits);
+}
+
+PassInputs WrapperBase::read_inputs() {
+  PassInputs in;
+  in.clear = (m_regs.take_start() & reg::kClear) != 0;
+  in.rays = m_regs.value(reg::kRayCount);
+  in.faces = m_regs.value(reg::kFaceCount);
+  in.face_first = m_regs.value(reg::kFaceFirst);
+  in.source_face = m_regs.value(reg::kSourceFace);
+  in.mask_start = m_regs.value(reg::kMaskStart);
+  in.start = {m_regs.value(reg::kStartX), m_regs.value(reg::kStartY), m_regs.value(reg::kStartZ)};
+  in.split = split_rays(m_layout, in.rays);
+  if (!in.split.fits) {
+    in.error = reg::kTooManyRays;
+  } else if (in.faces > m_layout.max_faces_per_set) {
+    in.error = reg::kTooManyFaces;
+  } else {
+    std::uint64_t masked = in.mask_start;
+    for (std::uint64_t f = 0; f < in.faces; ++f) masked += mask_count(f);
+    if (masked > in.rays) in.error = reg::kMaskOverrun;
+  }
+  const std::int64_t limit = std::int64_t(1) << m_layout.bits;
+  if (in.error == reg::kOk && (in.start.x >= limit || in.start.y >= limit || in.start.z >= limit))
+    in.error = reg::kBadStartPoint;
+  if (in.error != reg::kOk) in.rays = in.faces = 0, in.split = split_rays(m_layout, 0);
+  return in;
+}
+
+void WrapperBase::begin_pass() {
+  m_regs.set_busy(true);
+  write_signal(m_signals.start, true);
+  write_signal(m_signals.busy, true);
+}
+
+void WrapperBase::complete_pass(const PassRecord& record) {
+  m_regs.finish_pass(record.cycles, record.error);
+  ++m_stats.passes;
+  if (record.error != reg::kOk) ++m_stats.errors;
+  m_stats.busy_cycles += record.cycles;
+  m_stats.busy += record.end - record.start;
+  m_stats.tests += record.rays * record.faces;
+  for (std::size_t l = 0; l < record.lane_rays.size(); ++l) m_stats.lane_rays[l] += record.lane_rays[l];
+  write_signal(m_signals.start, false);
+  write_signal(m_signals.busy, false);
+  write_signal(m_signals.done, true);
+  write_signal(m_signals.irq, true);
+  m_irq.raise();
+  if (m_on_pass) m_on_pass(record);
+}
+
+void WrapperBase::report_traffic(const std::vector<BankTraffic>& traffic) {
+  for (std::size_t b = 0; b < traffic.size() && b < m_sinks.size(); ++b) {
+    const BankTraffic& t = traffic[b];
+    if (t.reads == 0 && t.writes == 0) continue;
+    tlmx::DmiActivity a;
+    a.reads = t.reads;
+    a.writes = t.writes;
+    a.bytes_read = t.reads * m_word_bytes;
+    a.bytes_written = t.writes * m_word_bytes;
+    a.busy = sc_core::sc_time::from_value(m_timing.bank_period.value() * t.busy_bank_cycles);
+    m_sinks[b]->record_dmi_access(a);
+  }
+}
+
+void WrapperBase::acknowledge() {
+  m_irq.lower();
+  write_signal(m_signals.done, false);
+  write_signal(m_signals.irq, false);
+}
+
+}  // namespace rc::board

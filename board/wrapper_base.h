@@ -1,0 +1,104 @@
+// What the two wrapper models (fast: one event per pass; cycle-level: a clocked 37-stage pipeline)
+// share: the bank layout, the registers, DMI pointers to the banks (through the board's local bus),
+// pass bookkeeping, the interrupt, statistics. The wrapper's bank traffic goes through DMI and is
+// reported back to the banks (DmiActivitySink), so their counters include it.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <systemc>
+#include <tlm>
+#include <tlm_utils/simple_initiator_socket.h>
+
+#include "board/bank_layout.h"
+#include "board/control_regs.h"
+#include "board/pass_timing.h"
+#include "pipeline/fixed_format.h"
+#include "tlm/dmi_activity.h"
+#include "tlm/irq_line.h"
+
+namespace rc::board {
+
+// Everything a pass reads from the registers, checked.
+struct PassInputs {
+  std::uint64_t rays = 0, faces = 0;
+  std::uint32_t face_first = 0, source_face = reg::kNoFace, mask_start = 0;
+  pipeline::FixedVec3 start{0, 0, 0};
+  bool clear = false;
+  RaySplit split;
+  std::uint32_t error = reg::kOk;
+};
+
+// One finished pass, for reports and traces.
+struct PassRecord {
+  sc_core::sc_time start, end;  // first device clock edge of the pass, DONE (interrupt raised)
+  std::uint64_t rays = 0, faces = 0, cycles = 0;
+  std::vector<std::uint64_t> lane_rays;  // rays each lane streamed, over all faces of the pass
+  std::uint32_t error = reg::kOk;
+  std::string limit;                     // what bounded the stream
+};
+
+struct WrapperStats {
+  std::uint64_t passes = 0, errors = 0;
+  std::uint64_t tests = 0;              // ray slots streamed: rays x faces, masked ones included
+  std::uint64_t busy_cycles = 0;
+  sc_core::sc_time busy = sc_core::SC_ZERO_TIME;
+  std::vector<std::uint64_t> lane_rays; // per lane, summed over passes
+};
+
+struct WrapperSignals {  // optional, for VCD traces; written when they change
+  sc_core::sc_signal<bool, sc_core::SC_MANY_WRITERS>* start = nullptr;
+  sc_core::sc_signal<bool, sc_core::SC_MANY_WRITERS>* busy = nullptr;
+  sc_core::sc_signal<bool, sc_core::SC_MANY_WRITERS>* done = nullptr;
+  sc_core::sc_signal<bool, sc_core::SC_MANY_WRITERS>* irq = nullptr;
+};
+
+class WrapperBase : public sc_core::sc_module {
+ public:
+  tlm_utils::simple_initiator_socket<WrapperBase> out;  // to the board's local bus (banks)
+
+  WrapperBase(const sc_core::sc_module_name& name, const BankLayout& layout, const WrapperTiming& timing,
+              ControlRegs& regs, tlmx::IrqLine& irq, std::vector<tlmx::DmiActivitySink*> bank_sinks,
+              std::vector<std::uint64_t> bank_addresses, WrapperSignals signals);
+
+  const BankLayout& layout() const { return m_layout; }
+  const WrapperTiming& timing() const { return m_timing; }
+  const WrapperStats& stats() const { return m_stats; }
+  void on_pass(std::function<void(const PassRecord&)> callback) { m_on_pass = std::move(callback); }
+
+  // First device clock edge at or after t (edges at multiples of the device period from time 0).
+  sc_core::sc_time next_edge(const sc_core::sc_time& t) const;
+
+ protected:
+  std::uint8_t* bank(unsigned b);  // DMI pointer (acquired on first use)
+  PassInputs read_inputs();        // registers -> PassInputs, with error checks
+  std::uint32_t mask_count(std::uint64_t face_in_set);  // own-face table entry
+  pipeline::FaceRecord face_record(std::uint64_t face_in_set);
+  void begin_pass();
+  void complete_pass(const PassRecord& record);
+  void report_traffic(const std::vector<BankTraffic>& traffic);
+
+  BankLayout m_layout;
+  WrapperTiming m_timing;
+  ControlRegs& m_regs;
+  tlmx::IrqLine& m_irq;
+  unsigned m_word_bytes;
+
+ private:
+  void acknowledge();
+  void write_signal(sc_core::sc_signal<bool, sc_core::SC_MANY_WRITERS>* s, bool v) {
+    if (s != nullptr && s->read() != v) s->write(v);
+  }
+
+  std::vector<tlmx::DmiActivitySink*> m_sinks;
+  std::vector<std::uint64_t> m_addresses;
+  std::vector<std::uint8_t*> m_dmi;
+  WrapperSignals m_signals;
+  WrapperStats m_stats;
+  std::function<void(const PassRecord&)> m_on_pass;
+};
+
+}  // namespace rc::board

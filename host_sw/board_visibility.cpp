@@ -1,0 +1,308 @@
+#include "host_sw/board_visibility.h"
+
+#include <algorithm>
+#include <numeric>
+#include <stdexcept>
+
+#include "board/register_map.h"
+#include "board/word_format.h"
+#include "host_sw/trace_writer.h"
+
+namespace rc {
+
+namespace reg = board::reg;
+using sc_core::sc_time;
+
+BoardVisibility::BoardVisibility(board::Rc2000& board, tlm::tlm_initiator_socket<>& pci, HostCpuModel& cpu,
+                                 BoardVisibilityOptions options, TraceWriter* trace)
+    : board_(board),
+      pci_(pci),
+      cpu_(cpu),
+      options_(options),
+      trace_(trace),
+      layout_(board.layout()),
+      word_bytes_(board.layout().word_bits / 8),
+      rays_per_batch_(board.layout().max_rays_per_batch),
+      faces_per_set_(board.layout().max_faces_per_set) {
+  board_.wrapper().on_pass([this](const board::PassRecord& r) { on_pass(r); });
+}
+
+std::size_t BoardVisibility::batch_size(std::size_t b) const {
+  return std::min(rays_, batch_first(b) + rays_per_batch_) - batch_first(b);
+}
+
+std::size_t BoardVisibility::set_size(std::size_t s) const {
+  return std::min(faces_.size(), set_first(s) + faces_per_set_) - set_first(s);
+}
+
+// ---- bus access -----------------------------------------------------------------------------------
+
+void BoardVisibility::host_event(const char* name, const sc_time& from) {
+  if (trace_ != nullptr && trace_->wants(cpu_.step())) trace_->complete("host", name, from, sc_core::sc_time_stamp());
+}
+
+void BoardVisibility::write_registers(std::uint64_t offset, const std::vector<std::uint32_t>& values) {
+  cpu_.sync();
+  tlm::tlm_generic_payload trans;
+  const auto length = static_cast<unsigned>(values.size() * 4);
+  trans.set_command(tlm::TLM_WRITE_COMMAND);
+  trans.set_address(board::Rc2000::kBar0 + offset);
+  trans.set_data_ptr(reinterpret_cast<unsigned char*>(const_cast<std::uint32_t*>(values.data())));
+  trans.set_data_length(length);
+  trans.set_streaming_width(length);
+  trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+  sc_time delay = sc_core::SC_ZERO_TIME;
+  pci_->b_transport(trans, delay);
+  if (!trans.is_response_ok()) throw std::runtime_error("register write failed: " + trans.get_response_string());
+  sc_core::wait(delay);
+  stats_.pci += delay;
+  ++stats_.register_accesses;
+}
+
+std::uint32_t BoardVisibility::read_register(std::uint64_t offset) {
+  cpu_.sync();
+  std::uint32_t value = 0;
+  tlm::tlm_generic_payload trans;
+  trans.set_command(tlm::TLM_READ_COMMAND);
+  trans.set_address(board::Rc2000::kBar0 + offset);
+  trans.set_data_ptr(reinterpret_cast<unsigned char*>(&value));
+  trans.set_data_length(4);
+  trans.set_streaming_width(4);
+  trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+  sc_time delay = sc_core::SC_ZERO_TIME;
+  pci_->b_transport(trans, delay);
+  if (!trans.is_response_ok()) throw std::runtime_error("register read failed: " + trans.get_response_string());
+  sc_core::wait(delay);
+  stats_.pci += delay;
+  ++stats_.register_accesses;
+  return value;
+}
+
+void BoardVisibility::dma(tlmx::DmaDirection direction, void* host, std::uint64_t address, std::uint64_t bytes,
+                          const char* what) {
+  if (bytes == 0) return;
+  cpu_.charge(DriverWork::Call, 1);
+  cpu_.sync();
+  const tlmx::DmaResult r = board_.dma.transfer(direction, host, address, bytes);
+  if (!r.ok()) throw std::runtime_error(std::string("DMA of ") + what + " failed");
+  stats_.pci += r.duration();
+  ++stats_.dma_transfers;
+  (direction == tlmx::DmaDirection::to_device ? stats_.bytes_to_board : stats_.bytes_to_host) += bytes;
+  if (trace_ != nullptr && trace_->wants(cpu_.step())) {
+    trace_->complete("dma", what, r.start, r.end, {{"bytes", bytes}});
+    trace_->complete("host", std::string("dma ") + what, r.start, r.end);
+  }
+}
+
+// ---- faces ------------------------------------------------------------------------------------------
+
+void BoardVisibility::load_faces(const std::vector<Triangle>& faces) {
+  const int bits = layout_.bits;
+  if (faces.size() > faces_per_set_ && !options_.allow_batching) {
+    throw std::invalid_argument("the scene has " + std::to_string(faces.size()) + " faces but one face set holds " +
+                                std::to_string(faces_per_set_) + " (face bank " +
+                                std::to_string(board_.params().bank_capacity_bytes) +
+                                " bytes); allow batching to split them into sets");
+  }
+  faces_.clear();
+  faces_.reserve(faces.size());
+  for (const Triangle& t : faces) faces_.push_back(pipeline::make_face_record(t, bits));
+  stats_.face_sets = faces_.empty() ? 0 : (faces_.size() + faces_per_set_ - 1) / faces_per_set_;
+  resident_set_ = -1;
+  if (stats_.face_sets == 1) upload_faces(0);  // resident for the whole run
+}
+
+void BoardVisibility::upload_faces(std::size_t set) {
+  const std::size_t n = set_size(set);
+  buffer_.assign(n * 9 * word_bytes_, 0);
+  std::uint64_t words[9];
+  for (std::size_t f = 0; f < n; ++f) {
+    board::face_record_words(faces_[set_first(set) + f], words);
+    for (unsigned i = 0; i < 9; ++i) board::store_word(buffer_.data(), f * 9 + i, word_bytes_, words[i]);
+  }
+  dma(tlmx::DmaDirection::to_device, buffer_.data(), board_.bank_pci_address(layout_.face_bank), buffer_.size(),
+      "faces");
+  resident_set_ = static_cast<long>(set);
+  ++stats_.face_set_uploads;
+}
+
+// ---- one step -----------------------------------------------------------------------------------------
+
+// Rays grouped by end face in face order (the solver already sends them so; otherwise a stable
+// counting sort), quantised into the hardware's format.
+void BoardVisibility::order_segments(const SegmentBatch& batch) {
+  rays_ = batch.size();
+  identity_order_ = std::is_sorted(batch.end_faces.begin(), batch.end_faces.end());
+  order_.resize(rays_);
+  std::iota(order_.begin(), order_.end(), std::size_t{0});
+  if (!identity_order_)
+    std::stable_sort(order_.begin(), order_.end(),
+                     [&](std::size_t a, std::size_t b) { return batch.end_faces[a] < batch.end_faces[b]; });
+  end_faces_.resize(rays_);
+  x_.resize(rays_);
+  y_.resize(rays_);
+  z_.resize(rays_);
+  for (std::size_t i = 0; i < rays_; ++i) {
+    const std::size_t s = order_[i];
+    const pipeline::FixedVec3 e = pipeline::quantize_point(batch.ends[s], layout_.bits);
+    end_faces_[i] = batch.end_faces[s];
+    x_[i] = e.x;
+    y_[i] = e.y;
+    z_[i] = e.z;
+  }
+  start_ = pipeline::quantize_point(batch.start, layout_.bits);
+  source_face_ = batch.source_face >= 0 ? static_cast<std::uint32_t>(batch.source_face) : reg::kNoFace;
+  cpu_.charge(DriverWork::SegmentPack, rays_);
+}
+
+// Batches of rays, each against every face set; the set already in the face bank goes first.
+void BoardVisibility::plan_passes() {
+  passes_.clear();
+  next_pass_ = 0;
+  const std::size_t batches = (rays_ + rays_per_batch_ - 1) / rays_per_batch_;
+  const std::size_t sets = stats_.face_sets;
+  long resident = resident_set_;
+  for (std::size_t b = 0; b < batches; ++b) {
+    std::vector<std::size_t> order;
+    if (resident >= 0) order.push_back(static_cast<std::size_t>(resident));
+    for (std::size_t s = 0; s < sets; ++s)
+      if (static_cast<long>(s) != resident) order.push_back(s);
+    for (std::size_t i = 0; i < order.size(); ++i) passes_.push_back({b, order[i], i == 0, i + 1 == order.size()});
+    if (!order.empty()) resident = static_cast<long>(order.back());  // what the next batch finds in the bank
+  }
+  stats_.ray_batches += batches;
+  stats_.max_batches_per_step = std::max<std::uint64_t>(stats_.max_batches_per_step, batches);
+}
+
+void BoardVisibility::submit(const SegmentBatch& batch) {
+  if (batch.end_faces.size() != batch.size()) {
+    throw std::invalid_argument("segment batch has " + std::to_string(batch.size()) + " end points but " +
+                                std::to_string(batch.end_faces.size()) + " end faces");
+  }
+  if (batch.size() > rays_per_batch_ && !options_.allow_batching) {
+    throw std::invalid_argument("a step has " + std::to_string(batch.size()) + " segments but one batch holds " +
+                                std::to_string(rays_per_batch_) + " (ray and result banks of " +
+                                std::to_string(board_.params().bank_capacity_bytes) +
+                                " bytes); allow batching to split them");
+  }
+  order_segments(batch);
+  blocked_.assign(rays_, 0);
+  if (rays_ == 0 || faces_.empty()) {
+    passes_.clear();
+    next_pass_ = 0;
+    return;
+  }
+  plan_passes();
+  if (options_.concurrent) {
+    start_pass(passes_[0]);  // the rest in collect(), after the host's form factors
+    return;
+  }
+  for (const Pass& p : passes_) {
+    start_pass(p);
+    finish_pass(p);
+  }
+  next_pass_ = passes_.size();
+}
+
+void BoardVisibility::collect(std::vector<std::uint8_t>& blocked) {
+  if (next_pass_ < passes_.size()) {
+    finish_pass(passes_[next_pass_]);  // started by submit()
+    for (++next_pass_; next_pass_ < passes_.size(); ++next_pass_) {
+      start_pass(passes_[next_pass_]);
+      finish_pass(passes_[next_pass_]);
+    }
+  }
+  blocked.assign(rays_, 0);
+  for (std::size_t i = 0; i < rays_; ++i) blocked[order_[i]] = blocked_[i];
+}
+
+// ---- one pass ----------------------------------------------------------------------------------------
+
+void BoardVisibility::upload_rays(std::size_t batch) {
+  const std::size_t first = batch_first(batch);
+  split_ = board::split_rays(layout_, batch_size(batch));
+  board::pack_rays(layout_, split_, x_.data() + first, y_.data() + first, z_.data() + first, images_);
+  for (unsigned b = 0; b < images_.size(); ++b)
+    dma(tlmx::DmaDirection::to_device, images_[b].data(), board_.bank_pci_address(b), images_[b].size(), "rays");
+}
+
+// One word per face of the set: how many of the batch's rays end on it. MASK_START (returned via
+// the registers) counts the batch's rays ending on earlier faces.
+void BoardVisibility::upload_mask(std::size_t batch, std::size_t set) {
+  const auto begin = end_faces_.begin() + static_cast<long>(batch_first(batch));
+  const auto end = begin + static_cast<long>(batch_size(batch));
+  const int f0 = static_cast<int>(set_first(set));
+  const std::size_t n = set_size(set);
+  buffer_.assign(n * word_bytes_, 0);
+  auto it = std::lower_bound(begin, end, f0);
+  for (std::size_t f = 0; f < n; ++f) {
+    const auto next = std::upper_bound(it, end, f0 + static_cast<int>(f));
+    board::store_word(buffer_.data(), f, word_bytes_, static_cast<std::uint64_t>(next - it));
+    it = next;
+  }
+  const std::uint64_t address = layout_.mask_bank ? board_.bank_pci_address(*layout_.mask_bank)
+                                                  : board_.bank_pci_address(layout_.face_bank) + n * 9 * word_bytes_;
+  dma(tlmx::DmaDirection::to_device, buffer_.data(), address, buffer_.size(), "own-face table");
+}
+
+void BoardVisibility::start_pass(const Pass& pass) {
+  if (pass.first_of_batch) upload_rays(pass.batch);
+  if (resident_set_ != static_cast<long>(pass.set)) upload_faces(pass.set);
+  upload_mask(pass.batch, pass.set);
+  const auto begin = end_faces_.begin() + static_cast<long>(batch_first(pass.batch));
+  const auto mask_start = std::lower_bound(begin, begin + static_cast<long>(batch_size(pass.batch)),
+                                           static_cast<int>(set_first(pass.set))) - begin;
+  cpu_.charge(DriverWork::Call, 1);
+  const sc_time from = cpu_.now();
+  write_registers(reg::kRayCount,
+                  {static_cast<std::uint32_t>(batch_size(pass.batch)), static_cast<std::uint32_t>(set_size(pass.set)),
+                   static_cast<std::uint32_t>(set_first(pass.set)), source_face_, static_cast<std::uint32_t>(start_.x),
+                   static_cast<std::uint32_t>(start_.y), static_cast<std::uint32_t>(start_.z),
+                   static_cast<std::uint32_t>(mask_start)});
+  cpu_.clear_intervals();  // host compute from here on may overlap the pass
+  write_registers(reg::kControl, {reg::kStart | (pass.first_of_batch ? reg::kClear : 0u)});
+  host_event("start pass", from);
+}
+
+void BoardVisibility::finish_pass(const Pass& pass) {
+  cpu_.charge(DriverWork::Call, 1);
+  cpu_.sync();
+  const sc_time from = sc_core::sc_time_stamp();
+  board_.irq.wait_raised();
+  stats_.waiting += sc_core::sc_time_stamp() - from;
+  host_event("wait for interrupt", from);
+  if (trace_ != nullptr && trace_->wants(cpu_.step())) trace_->instant("irq", "seen by host", sc_core::sc_time_stamp());
+  const std::uint32_t status = read_register(reg::kStatus);
+  write_registers(reg::kStatus, {reg::kDone | reg::kError});  // acknowledge: lowers the interrupt
+  if (status & reg::kError) {
+    throw std::runtime_error("the board reported error " + std::to_string(read_register(reg::kErrorCode)) +
+                             " (register_map.h ErrorCode) for a pass of " + std::to_string(batch_size(pass.batch)) +
+                             " rays and " + std::to_string(set_size(pass.set)) + " faces");
+  }
+  stats_.overlap += cpu_.overlap(last_record_.start, last_record_.end);
+  if (pass.last_of_batch) read_results(pass.batch);
+}
+
+void BoardVisibility::read_results(std::size_t batch) {
+  buffer_.assign(split_.result_words * word_bytes_, 0);
+  dma(tlmx::DmaDirection::to_host, buffer_.data(), board_.bank_pci_address(layout_.result_bank), buffer_.size(),
+      "results");
+  board::unpack_results(layout_, split_, buffer_.data(), blocked_.data() + batch_first(batch));
+  cpu_.charge(DriverWork::ResultUnpack, batch_size(batch));
+}
+
+// Runs in the wrapper's thread when a pass completes.
+void BoardVisibility::on_pass(const board::PassRecord& r) {
+  last_record_ = r;
+  ++stats_.passes;
+  stats_.tests += r.rays * r.faces;
+  stats_.fpga_busy += r.end - r.start;
+  if (trace_ == nullptr || !trace_->wants(cpu_.step())) return;
+  for (std::size_t l = 0; l < r.lane_rays.size(); ++l) {
+    trace_->complete("lane " + std::to_string(l), "pass", r.start, r.end,
+                     {{"rays", r.lane_rays[l]}, {"faces", r.faces}, {"cycles", r.cycles}, {"limit", r.limit}});
+  }
+  trace_->instant("irq", "raised by board", r.end);
+}
+
+}  // namespace rc

@@ -1,0 +1,127 @@
+// The host driver of the RC2000 as a visibility backend: everything the solver asks goes host ->
+// PCI -> banks -> lanes -> result bank -> PCI -> host.
+//
+// Per step (docs/board.md, "Pass protocol"): quantise the end points (pipeline::quantize_point) in
+// end-face order, pack them into the X/Y/Z bank words and DMA them to the ray banks; DMA the
+// own-face table; write the pass registers and START (with CLEAR on a batch's first face set);
+// wait for the interrupt; clear DONE; DMA the result words back. Rays beyond a batch's capacity are
+// split into batches and faces beyond a set's capacity into sets (paper sec 4.4); a batch's result
+// words are ORed across its face sets on the board and read back once.
+//
+// Serial mode: submit() runs every pass and returns with the results. Concurrent mode (sec 4.3):
+// submit() returns right after the first START, the solver computes form factors on the host (in
+// simulated time, through HostCpuModel) while the board works, and collect() waits for the
+// interrupt and runs any remaining passes.
+//
+// Call load_faces/submit/collect from the host SC_THREAD (they wait for the bus and the interrupt).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <systemc>
+#include <tlm>
+
+#include "board/rc2000.h"
+#include "host_sw/host_cpu_model.h"
+#include "host_sw/visibility.h"
+#include "pipeline/fixed_mt.h"
+
+namespace rc {
+
+class TraceWriter;
+
+struct BoardVisibilityOptions {
+  bool concurrent = false;     // paper sec 4.3
+  bool allow_batching = true;  // false: a scene beyond one batch/set is an error
+};
+
+struct BoardDriverStats {
+  std::uint64_t passes = 0;
+  std::uint64_t ray_batches = 0;        // over all steps
+  std::uint64_t face_set_uploads = 0;   // face records uploaded (1 when the scene fits one set)
+  std::uint64_t face_sets = 0;          // sets the scene needs
+  std::uint64_t max_batches_per_step = 0;
+  std::uint64_t dma_transfers = 0, register_accesses = 0;
+  std::uint64_t bytes_to_board = 0, bytes_to_host = 0;
+  std::uint64_t tests = 0;              // ray slots streamed: rays x faces per pass
+  sc_core::sc_time pci = sc_core::SC_ZERO_TIME;      // host thread blocked in DMA and register accesses
+  sc_core::sc_time waiting = sc_core::SC_ZERO_TIME;  // host thread waiting for the interrupt
+  sc_core::sc_time fpga_busy = sc_core::SC_ZERO_TIME;  // sum of pass durations
+  sc_core::sc_time overlap = sc_core::SC_ZERO_TIME;    // host compute during passes
+};
+
+class BoardVisibility : public VisibilityBackend {
+ public:
+  // `pci`: the host's initiator socket, bound to board.pci.in.
+  BoardVisibility(board::Rc2000& board, tlm::tlm_initiator_socket<>& pci, HostCpuModel& cpu,
+                  BoardVisibilityOptions options = {}, TraceWriter* trace = nullptr);
+
+  std::string name() const override { return "board"; }
+  void load_faces(const std::vector<Triangle>& faces) override;
+  void submit(const SegmentBatch& batch) override;
+  void collect(std::vector<std::uint8_t>& blocked) override;
+  std::uint64_t tests_performed() const override { return stats_.tests; }
+  bool runs_on_host() const override { return false; }
+
+  const BoardDriverStats& stats() const { return stats_; }
+
+ private:
+  struct Pass {
+    std::size_t batch = 0, set = 0;
+    bool first_of_batch = false, last_of_batch = false;
+  };
+
+  void order_segments(const SegmentBatch& batch);
+  void plan_passes();
+  void start_pass(const Pass& pass);
+  void finish_pass(const Pass& pass);
+  void upload_rays(std::size_t batch);
+  void upload_faces(std::size_t set);
+  void upload_mask(std::size_t batch, std::size_t set);
+  void read_results(std::size_t batch);
+  void on_pass(const board::PassRecord& record);
+
+  // Bus access from the host thread; each syncs the host's local time first.
+  void write_registers(std::uint64_t offset, const std::vector<std::uint32_t>& values);
+  std::uint32_t read_register(std::uint64_t offset);
+  void dma(tlmx::DmaDirection direction, void* host, std::uint64_t address, std::uint64_t bytes, const char* what);
+  void host_event(const char* name, const sc_core::sc_time& from);
+
+  std::size_t batch_first(std::size_t b) const { return b * rays_per_batch_; }
+  std::size_t batch_size(std::size_t b) const;
+  std::size_t set_first(std::size_t s) const { return s * faces_per_set_; }
+  std::size_t set_size(std::size_t s) const;
+
+  board::Rc2000& board_;
+  tlm::tlm_initiator_socket<>& pci_;
+  HostCpuModel& cpu_;
+  BoardVisibilityOptions options_;
+  TraceWriter* trace_;
+  const board::BankLayout& layout_;
+  unsigned word_bytes_;
+  std::size_t rays_per_batch_, faces_per_set_;
+  BoardDriverStats stats_;
+
+  std::vector<pipeline::FaceRecord> faces_;
+  long resident_set_ = -1;
+
+  // The submitted batch, in end-face order.
+  std::size_t rays_ = 0;
+  std::vector<std::size_t> order_;  // sorted position -> segment index of the batch
+  bool identity_order_ = true;
+  std::vector<int> end_faces_;
+  std::vector<std::int64_t> x_, y_, z_;
+  pipeline::FixedVec3 start_{0, 0, 0};
+  std::uint32_t source_face_ = 0;
+  std::vector<std::uint8_t> blocked_;  // end-face order
+  std::vector<Pass> passes_;
+  std::size_t next_pass_ = 0;
+  board::RaySplit split_;              // of the batch in the ray banks
+  board::PassRecord last_record_;
+  std::vector<std::vector<std::uint8_t>> images_;
+  std::vector<std::uint8_t> buffer_;
+};
+
+}  // namespace rc

@@ -1,5 +1,8 @@
 #include "board/board_params.h"
 
+#include <stdexcept>
+
+#include "board/design_fit.h"
 #include "tlm/timing.h"
 
 namespace rc::board {
@@ -13,7 +16,11 @@ BoardParams make_board_params(const DeviceProfile& p, const BoardChoices& c) {
   b.bank_capacity_bytes = c.bank_capacity_bytes != 0 ? c.bank_capacity_bytes : p.bank_capacity_bytes;
   b.word_bits = p.bank_word_bits;
   b.bank_write_latency = p.bank_write_latency_cycles;
-  b.timing.device_period = tlmx::period_from_hz(p.clock_mhz(static_cast<int>(c.lanes)) * 1e6);
+  // The lanes must fit the device; the clock is the design's (wrapper-limited, or the pipeline's
+  // own at this width if that is slower).
+  b.fit = fit_design(p, pipeline::ResourceModel::load_default(), static_cast<int>(c.lanes), c.bits);
+  if (!b.fit.fits) throw std::invalid_argument(b.fit.describe());
+  b.timing.device_period = tlmx::period_from_hz(b.fit.clock_mhz * 1e6);
   b.timing.bank_period = tlmx::period_from_hz(p.bank_clock_mhz * 1e6);
   b.timing.bank_read_latency = p.bank_read_latency_cycles;
   b.timing.pass_start = p.pass_start_cycles;

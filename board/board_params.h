@@ -7,6 +7,7 @@
 
 #include <systemc>
 
+#include "board/design_fit.h"
 #include "board/device_profile.h"
 #include "board/pass_timing.h"
 #include "tlm/pci_bus.h"
@@ -30,6 +31,7 @@ struct BoardParams {
   sc_core::sc_time irq_latency = sc_core::SC_ZERO_TIME;  // device raises -> host thread runs
   WrapperModel model = WrapperModel::fast;
   bool report_at_end = false;          // print the tlm parts' summaries at sc_stop()
+  DesignFit fit;                       // resources and clock of the design (make_board_params)
 };
 
 struct BoardChoices {
@@ -41,7 +43,8 @@ struct BoardChoices {
   sc_core::sc_time irq_latency = sc_core::SC_ZERO_TIME;
 };
 
-// Throws std::invalid_argument if the profile has no clock for the lane count.
+// Throws std::invalid_argument if the lanes do not fit the device (design_fit.h) or the profile
+// has no clock for the lane count.
 BoardParams make_board_params(const DeviceProfile& profile, const BoardChoices& choices);
 
 }  // namespace rc::board

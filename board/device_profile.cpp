@@ -45,6 +45,8 @@ DeviceProfile load_device_profile(const std::string& path) {
   const ProfileReader r(p.json, path);
   p.name = r.text("name");
   p.part = r.text("fpga.part");
+  p.slices = static_cast<int>(r.integer("fpga.slices", 1, 1u << 24));
+  p.block_multipliers = static_cast<int>(r.integer("fpga.block_multipliers", 0, 1u << 20));
   read_clock(r, p);
   p.pipeline_latency_cycles = static_cast<unsigned>(r.integer("pipeline.latency_cycles", 1, 1000));
 

@@ -16,6 +16,8 @@ struct DeviceProfile {
   std::string name;          // e.g. "xc2v6000"
   std::string part;          // e.g. "XC2V6000"
   std::string file;          // where it was loaded from
+  int slices = 0;            // FPGA logic slices
+  int block_multipliers = 0; // 18x18 block multipliers
   std::map<int, double> clock_mhz_by_lanes;   // measured clocks (paper sec 5.4, 5.5)
   std::optional<double> clock_mhz_default;    // for lane counts not listed
   int clock_bits = 15;       // fractional width the clocks were measured or assumed for

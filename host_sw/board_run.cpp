@@ -117,7 +117,15 @@ nlohmann::ordered_json BoardSystem::report(double wall_seconds) const {
                  {"pci_width_bits", p.pci.width_bits},
                  {"pci_clock_hz", 1.0 / seconds(p.pci.clock_period)},
                  {"pipeline_latency_cycles", p.timing.pipeline_latency},
-                 {"wrapper_model", p.model == board::WrapperModel::fast ? "fast" : "cycle"}};
+                 {"wrapper_model", p.model == board::WrapperModel::fast ? "fast" : "cycle"},
+                 {"design", {{"block_multiplier_lanes", p.fit.hard_lanes},
+                             {"slice_multiplier_lanes", p.fit.soft_lanes},
+                             {"slices", p.fit.slices},
+                             {"slices_available", p.fit.slices_available},
+                             {"block_multipliers", p.fit.block_multipliers},
+                             {"block_multipliers_available", p.fit.block_multipliers_available},
+                             {"pipeline_clock_mhz", p.fit.pipeline_clock_mhz},
+                             {"resources_modelled", p.fit.modelled}}}};
   ordered_json groups = ordered_json::array();
   for (const board::RayGroup& g : L.groups)
     groups.push_back({{"banks", g.banks}, {"lanes", g.lanes}, {"first_lane", g.first_lane},

@@ -88,9 +88,13 @@ TEST(BankLayouts, BadConfigurationsFailClearly) {
   o.device = "no-such-board";
   expect_error([&] { make_board_setup(o); }, {"no devices profile 'no-such-board'"});
   o.device = "xc2v6000";
+  o.lanes = 5;
+  o.bits = 15;
+  expect_error([&] { make_board_setup(o); }, {"5 lanes", "has 6"});
+  // Lanes that do not fit the device's slices and block multipliers.
   o.lanes = 3;
   o.bits = 31;
-  expect_error([&] { make_board_setup(o); }, {"3 lanes", "has 6"});
+  expect_error([&] { make_board_setup(o); }, {"3 lane(s) at 31 bits on xc2v6000", "39307 slices", "does not fit"});
   o.lanes = 0;
   expect_error([&] { make_board_setup(o); }, {"at least 1"});
 }

@@ -1,0 +1,53 @@
+#include "board/design_fit.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <stdexcept>
+
+namespace rc::board {
+
+std::string DesignFit::describe() const {
+  char line[512];
+  std::snprintf(line, sizeof line,
+                "%d lane(s) at %d bits on %s (%d with block multipliers, %d with slice multipliers) need %d "
+                "slices and %d block multipliers of %d and %d: %s; clock %.3f MHz",
+                lanes, bits, device.c_str(), hard_lanes, soft_lanes, slices, block_multipliers, slices_available,
+                block_multipliers_available, fits ? "fits" : "does not fit", clock_mhz);
+  return line;
+}
+
+DesignFit fit_design(const DeviceProfile& device, const pipeline::ResourceModel& resources, int lanes, int bits) {
+  if (lanes < 1) throw std::invalid_argument("a design needs at least one lane, got " + std::to_string(lanes));
+  const pipeline::PipelineResources hard = resources.pipeline(bits, true);
+  const pipeline::PipelineResources soft = resources.pipeline(bits, false);
+  const pipeline::WrapperCost wrapper = resources.wrapper();
+
+  DesignFit f;
+  f.device = device.name;
+  f.bits = bits;
+  f.lanes = lanes;
+  f.slices_available = device.slices;
+  f.block_multipliers_available = device.block_multipliers;
+  const int spare_multipliers = std::max(0, device.block_multipliers - wrapper.block_multipliers);
+  f.hard_lanes = hard.block_multipliers > 0 ? std::min(lanes, spare_multipliers / hard.block_multipliers) : lanes;
+  f.soft_lanes = lanes - f.hard_lanes;
+  f.slices = wrapper.fixed_slices + lanes * wrapper.per_lane_slices + f.hard_lanes * hard.slices +
+             f.soft_lanes * soft.slices;
+  f.block_multipliers = wrapper.block_multipliers + f.hard_lanes * hard.block_multipliers;
+  f.fits = f.slices <= device.slices && f.block_multipliers <= device.block_multipliers;
+
+  f.pipeline_clock_mhz = std::min(f.hard_lanes > 0 ? hard.clock_mhz : soft.clock_mhz,
+                                  f.soft_lanes > 0 ? soft.clock_mhz : hard.clock_mhz);
+  f.clock_mhz = std::min(device.clock_mhz(lanes), f.pipeline_clock_mhz);
+  f.modelled = (f.hard_lanes > 0 && (hard.interpolated || hard.extrapolated)) ||
+               (f.soft_lanes > 0 && (soft.interpolated || soft.extrapolated));
+  return f;
+}
+
+int max_lanes(const DeviceProfile& device, const pipeline::ResourceModel& resources, int bits) {
+  int lanes = 0;
+  while (fit_design(device, resources, lanes + 1, bits).fits) ++lanes;
+  return lanes;
+}
+
+}  // namespace rc::board

@@ -1,0 +1,42 @@
+// Does a design of L pipeline lanes at N fractional bits fit a device, and how fast does it run?
+// Resources per lane and for the wrapper come from pipeline/'s resource model (the paper's
+// synthesis results); the device's slices, block multipliers and wrapper-limited clock from its
+// profile (configs/devices/). docs/board.md, "Lanes that fit".
+#pragma once
+
+#include <string>
+
+#include "board/device_profile.h"
+#include "pipeline/resource_model.h"
+
+namespace rc::board {
+
+struct DesignFit {
+  std::string device;
+  int bits = 0;
+  int lanes = 0;
+  // Lanes built with 18x18 block multipliers, and with multipliers made of slices (paper sec 5.3
+  // gives both implementations). Block-multiplier lanes are far smaller, so they come first.
+  int hard_lanes = 0;
+  int soft_lanes = 0;
+  int slices = 0;             // needed: wrapper + every lane
+  int block_multipliers = 0;  // needed
+  int slices_available = 0;
+  int block_multipliers_available = 0;
+  double pipeline_clock_mhz = 0;  // the slowest lane implementation used, at this width
+  double clock_mhz = 0;           // min(the profile's design clock for this lane count, pipeline clock)
+  bool modelled = false;          // any resource figure interpolated or extrapolated (not synthesised)
+  bool fits = false;
+
+  std::string describe() const;  // one line, e.g. for errors and reports
+};
+
+// The smallest implementation of `lanes` lanes on the device: as many block-multiplier lanes as
+// its multipliers allow, the rest with slice multipliers. Throws std::invalid_argument for
+// lanes < 1 or a width outside 7..31.
+DesignFit fit_design(const DeviceProfile& device, const pipeline::ResourceModel& resources, int lanes, int bits);
+
+// The largest lane count that fits (0 if not even one does).
+int max_lanes(const DeviceProfile& device, const pipeline::ResourceModel& resources, int bits);
+
+}  // namespace rc::board

@@ -1,0 +1,63 @@
+#include <gtest/gtest.h>
+
+#include "board/design_fit.h"
+
+namespace rc::board {
+namespace {
+
+// The paper's own designs: the XC2V6000 with one and two 15-bit block-multiplier pipelines
+// (sec 5.4: 3339 slices, 30 multipliers, 53.833 MHz; sec 5.5: 5562 slices, 60, 52.5 MHz).
+TEST(DesignFit, ReproducesThePapersMeasuredDesigns) {
+  const DeviceProfile v2 = find_device_profile("xc2v6000");
+  const pipeline::ResourceModel model = pipeline::ResourceModel::load_default();
+  const DesignFit one = fit_design(v2, model, 1, 15);
+  EXPECT_TRUE(one.fits);
+  EXPECT_EQ(one.hard_lanes, 1);
+  EXPECT_EQ(one.slices, 3339);
+  EXPECT_EQ(one.block_multipliers, 30);
+  EXPECT_DOUBLE_EQ(one.clock_mhz, 53.833);
+  const DesignFit two = fit_design(v2, model, 2, 15);
+  EXPECT_EQ(two.slices, 5562);
+  EXPECT_EQ(two.block_multipliers, 60);
+  EXPECT_DOUBLE_EQ(two.clock_mhz, 52.5);
+  EXPECT_FALSE(two.modelled);
+}
+
+// Resource arithmetic on a synthetic device: the lanes that fit follow from slices and
+// multipliers exactly as documented (block-multiplier lanes first, the rest in slices).
+TEST(DesignFit, LanesThatFitFollowFromSlicesAndMultipliers) {
+  const pipeline::ResourceModel model = pipeline::ResourceModel::load_default();
+  const pipeline::WrapperCost w = model.wrapper();
+  const pipeline::PipelineResources hard = model.pipeline(15, true), soft = model.pipeline(15, false);
+  DeviceProfile d = find_device_profile("xc2v6000");
+  d.name = "synthetic";
+  d.block_multipliers = 2 * hard.block_multipliers + 5;  // room for two hard lanes only
+  d.slices = w.fixed_slices + 3 * w.per_lane_slices + 2 * hard.slices + soft.slices;  // exactly 3 lanes
+  EXPECT_EQ(max_lanes(d, model, 15), 3);
+  const DesignFit three = fit_design(d, model, 3, 15);
+  EXPECT_EQ(three.hard_lanes, 2);
+  EXPECT_EQ(three.soft_lanes, 1);
+  EXPECT_EQ(three.slices, d.slices);
+  EXPECT_DOUBLE_EQ(three.pipeline_clock_mhz, std::min(hard.clock_mhz, soft.clock_mhz));
+  d.slices -= 1;
+  EXPECT_EQ(max_lanes(d, model, 15), 2);
+  d.block_multipliers = 0;  // no multipliers at all: every lane in slices
+  EXPECT_EQ(fit_design(d, model, 1, 15).soft_lanes, 1);
+  EXPECT_THROW(fit_design(d, model, 0, 15), std::invalid_argument);
+  EXPECT_THROW(fit_design(d, model, 1, 40), std::invalid_argument);
+}
+
+// A slower pipeline than the wrapper sets the clock: on a device whose profile clock is the
+// 15-bit pipeline's, a wider pipeline slows the design down.
+TEST(DesignFit, ClockIsTheSlowerOfDesignAndPipeline) {
+  const pipeline::ResourceModel model = pipeline::ResourceModel::load_default();
+  const DeviceProfile v4 = find_device_profile("virtex4-sx55");
+  const DesignFit f15 = fit_design(v4, model, 1, 15);
+  const DesignFit f31 = fit_design(v4, model, 1, 31);
+  EXPECT_DOUBLE_EQ(f15.clock_mhz, 176.9);
+  EXPECT_LT(f31.clock_mhz, f15.clock_mhz);
+  EXPECT_DOUBLE_EQ(f31.clock_mhz, f31.pipeline_clock_mhz);
+}
+
+}  // namespace
+}  // namespace rc::board

@@ -17,6 +17,8 @@ const int kQuietSystemC = setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 0);
 
 int sc_main(int argc, char** argv) {
   (void)kQuietSystemC;
+  // sc_stop() at the end of a board run is expected, not news.
+  sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
   CLI::App app{"rc2000sim: a SystemC/TLM-2.0 model of the RC2000 radiosity accelerator"};
   app.require_subcommand(1);
   int exit_code = 0;

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <stdexcept>
 
 #include "apps/cli_options.h"
 #include "apps/progress.h"
@@ -13,70 +14,143 @@ namespace rc {
 
 namespace {
 
-void print_summary(const RunOptions& o, const Scene& scene, const SolverResult& r,
-                   const VisibilityBackend& vis, double wall) {
-  std::printf("rc2000sim run: %s\n", scene.name.c_str());
-  std::printf("  scene        %zu faces, %zu patches\n", scene.faces.size(), scene.patches.size());
-  std::printf("  solver       %d steps, %.2f%% converged (target %.2f%%), form factor %s\n", r.steps,
-              100.0 * r.convergence_reached, 100.0 * o.solver.convergence, to_string(o.solver.form_factor).c_str());
-  std::printf("  visibility   %s: %llu segments (%llu blocked), %llu segment-face tests\n", vis.name().c_str(),
-              static_cast<unsigned long long>(r.segments), static_cast<unsigned long long>(r.blocked_segments),
-              static_cast<unsigned long long>(vis.tests_performed()));
-  std::printf("  energy       emitted %.6g = absorbed %.6g + escaping %.6g + unshot %.6g\n", r.energy.emitted,
-              r.energy.absorbed, r.energy.escaping, r.energy.unshot);
-  std::printf("  wall time    %.2f s\n", wall);
-  std::printf("  outputs      %s/report.json, patches.csv, image.png\n", o.out_dir.c_str());
-}
+// What one run produced, whichever implementation answered visibility.
+struct RunOutcome {
+  SolverResult solver;
+  std::string visibility_name;
+  std::uint64_t visibility_tests = 0;
+  nlohmann::ordered_json host_work;
+  nlohmann::ordered_json board;  // empty for software runs
+};
 
-}  // namespace
-
-int run_simulation(const RunOptions& o) {
-  ProgressLine progress(!o.quiet);
-  PreparedScene prepared = prepare_scene(o.scene);
-  for (const std::string& w : prepared.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
-  const Scene& scene = prepared.scene;
-
+RunOutcome run_software(const RunOptions& o, const Scene& scene, ProgressLine& progress) {
   auto visibility = make_software_visibility(o.visibility, o.bits);
   HostWorkCounter work;
   ProgressiveRadiosity solver(scene, *visibility, o.solver, &work);
   solver.on_progress([&](const StepProgress& p) {
     progress.update("step %d, %.2f%% converged", p.step, 100.0 * p.convergence_reached);
   });
-  const SolverResult result = solver.run();
-  progress.finish();
+  RunOutcome out;
+  out.solver = solver.run();
+  out.visibility_name = visibility->name() + (o.visibility == "fixed" ? " " + std::to_string(o.bits) + "-bit" : "");
+  out.visibility_tests = visibility->tests_performed();
+  for (int k = 0; k < kHostWorkKinds; ++k) out.host_work[to_string(HostWork(k))] = work.count(HostWork(k));
+  return out;
+}
 
-  std::filesystem::create_directories(o.out_dir);
-  const std::string source = o.scene.file.empty() ? "embedded:cornell-box" : o.scene.file;
+// "A:B" -> first and last step (1-based, inclusive).
+void parse_trace_steps(const std::string& text, BoardRunOptions& board) {
+  const auto colon = text.find(':');
+  try {
+    if (colon == std::string::npos) throw std::invalid_argument("no colon");
+    board.trace_first_step = std::stoi(text.substr(0, colon));
+    board.trace_last_step = std::stoi(text.substr(colon + 1));
+  } catch (const std::exception&) {
+    throw std::invalid_argument("--trace-steps expects FIRST:LAST, e.g. 1:3, got '" + text + "'");
+  }
+  if (board.trace_first_step < 1 || board.trace_last_step < board.trace_first_step) {
+    throw std::invalid_argument("--trace-steps needs 1 <= FIRST <= LAST, got '" + text + "'");
+  }
+}
+
+RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& progress) {
+  BoardRunOptions board = o.board;
+  board.bits = o.bits;
+  parse_trace_steps(o.trace_steps, board);
+  board.on_progress = [&](const StepProgress& p) {
+    progress.update("step %d, %.2f%% converged", p.step, 100.0 * p.convergence_reached);
+  };
+  BoardRunResult r = run_radiosity_on_board(scene, o.solver, board);
+  RunOutcome out;
+  out.solver = std::move(r.solver);
+  out.visibility_name = "board " + board.device + ", " + std::to_string(board.lanes) + " lane(s), " +
+                        std::to_string(o.bits) + "-bit" + (board.concurrent ? ", concurrent" : ", serial");
+  out.visibility_tests = r.report["intersections"]["tests"].get<std::uint64_t>();
+  out.host_work = r.report["host"]["work"];
+  out.board = std::move(r.report);
+  return out;
+}
+
+void print_board_summary(const nlohmann::ordered_json& b) {
+  const auto& t = b["time"];
+  std::printf("  simulated    %.6f s = host compute %.6f + driver %.6f + PCI %.6f + waiting %.6f\n",
+              b["simulated_seconds"].get<double>(), t["host_compute_seconds"].get<double>(),
+              t["driver_cpu_seconds"].get<double>(), t["pci_transfer_seconds"].get<double>(),
+              t["waiting_seconds"].get<double>());
+  std::printf("  FPGA         busy %.6f s (overlapping host compute %.6f s), %.4g intersections/s while busy\n",
+              t["fpga_busy_seconds"].get<double>(), t["overlap_seconds"].get<double>(),
+              b["intersections"]["per_second_while_fpga_busy"].get<double>());
+  std::printf("  board        %s at %.3f MHz, %u banks, %llu passes, %.4g MB over PCI\n",
+              b["device"]["profile"].get<std::string>().c_str(), b["device"]["clock_hz"].get<double>() / 1e6,
+              b["device"]["banks"].get<unsigned>(), b["batching"]["passes"].get<unsigned long long>(),
+              (b["pci"]["bytes_to_board"].get<double>() + b["pci"]["bytes_to_host"].get<double>()) / 1e6);
+  for (const auto& lane : b["lanes"]) {
+    std::printf("  lane %-7u utilisation %.1f%%\n", lane["lane"].get<unsigned>(), 100.0 * lane["utilisation"].get<double>());
+  }
+}
+
+void print_summary(const RunOptions& o, const Scene& scene, const RunOutcome& out, double wall) {
+  const SolverResult& r = out.solver;
+  std::printf("rc2000sim run: %s\n", scene.name.c_str());
+  std::printf("  scene        %zu faces, %zu patches\n", scene.faces.size(), scene.patches.size());
+  std::printf("  solver       %d steps, %.2f%% converged (target %.2f%%), form factor %s\n", r.steps,
+              100.0 * r.convergence_reached, 100.0 * o.solver.convergence, to_string(o.solver.form_factor).c_str());
+  std::printf("  visibility   %s: %llu segments (%llu blocked), %llu segment-face tests\n", out.visibility_name.c_str(),
+              static_cast<unsigned long long>(r.segments), static_cast<unsigned long long>(r.blocked_segments),
+              static_cast<unsigned long long>(out.visibility_tests));
+  std::printf("  energy       emitted %.6g = absorbed %.6g + escaping %.6g + unshot %.6g\n", r.energy.emitted,
+              r.energy.absorbed, r.energy.escaping, r.energy.unshot);
+  if (!out.board.empty()) print_board_summary(out.board);
+  std::printf("  wall time    %.2f s\n", wall);
+  std::printf("  outputs      %s/report.json, patches.csv, image.png%s\n", o.out_dir.c_str(),
+              o.board.trace_path.empty() ? "" : ", trace");
+}
+
+nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& prepared, const RunOutcome& out,
+                                   double wall) {
+  const Scene& scene = prepared.scene;
   nlohmann::ordered_json report;
   report["schema"] = "rc2000sim.run/1";
   report["faces"] = scene.faces.size();
   report["patches"] = scene.patches.size();
-  report["steps"] = result.steps;
-  report["scene"] = scene_json(scene, source, prepared.warnings);
-  report["settings"] = {{"convergence", o.solver.convergence},
+  report["steps"] = out.solver.steps;
+  if (!out.board.empty()) report["simulated_seconds"] = out.board["simulated_seconds"];
+  report["scene"] = scene_json(scene, o.scene.file.empty() ? "embedded:cornell-box" : o.scene.file, prepared.warnings);
+  report["settings"] = {{"impl", o.impl},
+                        {"convergence", o.solver.convergence},
                         {"fixed_steps", o.solver.fixed_steps},
                         {"form_factor", to_string(o.solver.form_factor)},
-                        {"visibility", o.visibility},
+                        {"visibility", o.impl == "board" ? "board" : o.visibility},
                         {"bits", o.bits},
                         {"face_target", o.scene.face_target},
                         {"face_levels", o.scene.face_levels},
                         {"patch_levels", o.scene.patch_levels}};
-  report["solver"] = solver_json(result);
-  nlohmann::ordered_json host;
-  for (int k = 0; k < kHostWorkKinds; ++k) host[to_string(HostWork(k))] = work.count(HostWork(k));
-  report["host_work"] = host;
-  report["visibility_tests"] = visibility->tests_performed();
-  report["wall_seconds"] = progress.seconds();
-  write_json(o.out_dir + "/report.json", report);
-  write_patches_csv(o.out_dir + "/patches.csv", scene, result.radiosity);
-  write_png(o.out_dir + "/image.png", tone_map(render_radiosity(scene, result.radiosity, o.render), o.render.key));
-  print_summary(o, scene, result, *visibility, progress.seconds());
-  return 0;
+  report["solver"] = solver_json(out.solver);
+  report["host_work"] = out.host_work;
+  report["visibility_tests"] = out.visibility_tests;
+  if (!out.board.empty()) report["board"] = out.board;
+  report["wall_seconds"] = wall;
+  return report;
 }
 
-}  // namespace rc
+}  // namespace
 
-namespace rc {
+int run_simulation(const RunOptions& o) {
+  ProgressLine progress(!o.quiet);
+  const PreparedScene prepared = prepare_scene(o.scene);
+  for (const std::string& w : prepared.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  const Scene& scene = prepared.scene;
+  std::filesystem::create_directories(o.out_dir);
+
+  const RunOutcome out = o.impl == "board" ? run_board(o, scene, progress) : run_software(o, scene, progress);
+  progress.finish();
+
+  write_json(o.out_dir + "/report.json", make_report(o, prepared, out, progress.seconds()));
+  write_patches_csv(o.out_dir + "/patches.csv", scene, out.solver.radiosity);
+  write_png(o.out_dir + "/image.png", tone_map(render_radiosity(scene, out.solver.radiosity, o.render), o.render.key));
+  print_summary(o, scene, out, progress.seconds());
+  return 0;
+}
 
 void add_run_command(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<RunOptions>();
@@ -84,9 +158,21 @@ void add_run_command(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand("run", "Solve radiosity for one scene; write report.json, patches.csv, image.png");
   add_scene_options(*cmd, options->scene);
   add_solver_options(*cmd, *solver);
-  cmd->add_option("--visibility", options->visibility, "Visibility backend: float or fixed")
+  cmd->add_option("--impl", options->impl, "Who answers visibility: software or board (the SystemC RC2000 model)")
+      ->check(CLI::IsMember({"software", "board"}))->capture_default_str();
+  cmd->add_option("--visibility", options->visibility, "Software backend: float or fixed")
       ->check(CLI::IsMember({"float", "fixed"}))->capture_default_str();
   add_bits_option(*cmd, options->bits);
+  BoardRunOptions& b = options->board;
+  cmd->add_option("--device", b.device, "Board: device profile, configs/devices/NAME.json or a path")->capture_default_str();
+  cmd->add_option("--lanes", b.lanes, "Board: pipeline lanes")->check(CLI::Range(1, 64))->capture_default_str();
+  cmd->add_option("--banks", b.banks, "Board: memory banks (0: the profile's)")->check(CLI::Range(0, 64))
+      ->capture_default_str();
+  cmd->add_flag("--concurrent", b.concurrent, "Board: form factors while the FPGA works (paper sec 4.3)");
+  cmd->add_option("--host", b.host, "Board: host CPU profile, configs/hosts/NAME.json or a path")->capture_default_str();
+  cmd->add_option("--trace", b.trace_path, "Board: write a Chrome/Perfetto trace.json of --trace-steps");
+  cmd->add_option("--trace-steps", options->trace_steps, "Board: steps to trace, FIRST:LAST")->capture_default_str();
+  cmd->add_option("--vcd", b.vcd_path, "Board: write a VCD of start/busy/done/irq");
   cmd->add_option("--out", options->out_dir, "Output folder")->capture_default_str();
   cmd->add_option("--image-size", options->render.width, "Image width and height in pixels")
       ->check(CLI::Range(16, 8192))->capture_default_str();
@@ -94,6 +180,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->callback([options, solver, &exit_code] {
     options->solver = solver->resolved();
     options->render.height = options->render.width;
+    if (options->impl == "board") options->visibility = "board";
     exit_code = run_simulation(*options);
   });
 }

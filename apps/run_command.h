@@ -1,8 +1,10 @@
-// `rc2000sim run`: one radiosity simulation from scene to report, patch table and image.
+// `rc2000sim run`: one radiosity simulation from scene to report, patch table and image, with
+// visibility answered in software (float or CPU fixed point) or by the simulated RC2000 board.
 #pragma once
 
 #include <string>
 
+#include "host_sw/board_run.h"
 #include "host_sw/radiosity.h"
 #include "host_sw/render.h"
 #include "scenes/prepare.h"
@@ -11,9 +13,12 @@ namespace rc {
 
 struct RunOptions {
   SceneOptions scene;
-  SolverOptions solver;  // resolved from SolverCli
-  std::string visibility = "float";  // float | fixed
+  SolverOptions solver;              // resolved from SolverCli
+  std::string impl = "software";     // software | board
+  std::string visibility = "float";  // software backend: float | fixed
   int bits = 15;                     // fractional bits of the fixed-point pipeline
+  BoardRunOptions board;             // --impl board
+  std::string trace_steps = "1:3";   // A:B, steps written to the trace
   std::string out_dir = "out";
   RenderOptions render;
   bool quiet = false;

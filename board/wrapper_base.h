@@ -57,6 +57,10 @@ struct WrapperSignals {  // optional, for VCD traces; written when they change
 };
 
 class WrapperBase : public sc_core::sc_module {
+ protected:
+  const std::uint8_t* m_oracle = nullptr;
+
+
  public:
   tlm_utils::simple_initiator_socket<WrapperBase> out;  // to the board's local bus (banks)
 
@@ -68,6 +72,12 @@ class WrapperBase : public sc_core::sc_module {
   const WrapperTiming& timing() const { return m_timing; }
   const WrapperStats& stats() const { return m_stats; }
   void on_pass(std::function<void(const PassRecord&)> callback) { m_on_pass = std::move(callback); }
+
+  // The lanes' answer for the next pass, one flag per ray in bank order, computed elsewhere by a
+  // model proven bit-identical to them (a recording, or a culled kernel). The pass then copies it
+  // instead of computing every ray against every face; its timing, bank traffic and result words
+  // are unchanged. nullptr: compute. Only the fast model supports it.
+  void set_oracle(const std::uint8_t* flags) { m_oracle = flags; }
 
   // First device clock edge at or after t (edges at multiples of the device period from time 0).
   sc_core::sc_time next_edge(const sc_core::sc_time& t) const;

@@ -40,6 +40,7 @@ BoardSetup make_board_setup(const BoardRunOptions& o) {
                                 s.board.bank_capacity_bytes);
   s.driver.concurrent = o.concurrent;
   s.driver.allow_batching = o.allow_batching;
+  s.driver.oracle = o.oracle;
   if (!o.trace_path.empty()) {
     s.trace_first_step = o.trace_first_step;
     s.trace_last_step = o.trace_last_step;

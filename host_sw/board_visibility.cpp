@@ -24,6 +24,9 @@ BoardVisibility::BoardVisibility(board::Rc2000& board, tlm::tlm_initiator_socket
       word_bytes_(board.layout().word_bits / 8),
       rays_per_batch_(board.layout().max_rays_per_batch),
       faces_per_set_(board.layout().max_faces_per_set) {
+  if (options_.oracle != nullptr && board.params().model != board::WrapperModel::fast) {
+    throw std::invalid_argument("a visibility oracle needs the fast wrapper model (the cycle-level one always computes)");
+  }
   board_.wrapper().on_pass([this](const board::PassRecord& r) { on_pass(r); });
 }
 
@@ -107,6 +110,7 @@ void BoardVisibility::load_faces(const std::vector<Triangle>& faces) {
   faces_.clear();
   faces_.reserve(faces.size());
   for (const Triangle& t : faces) faces_.push_back(pipeline::make_face_record(t, bits));
+  if (options_.oracle != nullptr) options_.oracle->load_faces(faces);
   stats_.face_sets = faces_.empty() ? 0 : (faces_.size() + faces_per_set_ - 1) / faces_per_set_;
   resident_set_ = -1;
   if (stats_.face_sets == 1) upload_faces(0);  // resident for the whole run
@@ -187,6 +191,7 @@ void BoardVisibility::submit(const SegmentBatch& batch) {
   }
   order_segments(batch);
   blocked_.assign(rays_, 0);
+  if (options_.oracle != nullptr) ask_oracle(batch);
   if (rays_ == 0 || faces_.empty()) {
     passes_.clear();
     next_pass_ = 0;
@@ -214,6 +219,15 @@ void BoardVisibility::collect(std::vector<std::uint8_t>& blocked) {
   }
   blocked.assign(rays_, 0);
   for (std::size_t i = 0; i < rays_; ++i) blocked[order_[i]] = blocked_[i];
+}
+
+// The oracle answers in segment order; the banks hold the rays in end-face order.
+void BoardVisibility::ask_oracle(const SegmentBatch& batch) {
+  std::vector<std::uint8_t> answer;
+  options_.oracle->submit(batch);
+  options_.oracle->collect(answer);
+  oracle_answer_.resize(rays_);
+  for (std::size_t i = 0; i < rays_; ++i) oracle_answer_[i] = answer[order_[i]];
 }
 
 // ---- one pass ----------------------------------------------------------------------------------------
@@ -259,6 +273,7 @@ void BoardVisibility::start_pass(const Pass& pass) {
                    static_cast<std::uint32_t>(set_first(pass.set)), source_face_, static_cast<std::uint32_t>(start_.x),
                    static_cast<std::uint32_t>(start_.y), static_cast<std::uint32_t>(start_.z),
                    static_cast<std::uint32_t>(mask_start)});
+  board_.wrapper().set_oracle(options_.oracle ? oracle_answer_.data() + batch_first(pass.batch) : nullptr);
   cpu_.clear_intervals();  // host compute from here on may overlap the pass
   write_registers(reg::kControl, {reg::kStart | (pass.first_of_batch ? reg::kClear : 0u)});
   host_event("start pass", from);

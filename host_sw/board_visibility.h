@@ -35,6 +35,10 @@ class TraceWriter;
 struct BoardVisibilityOptions {
   bool concurrent = false;     // paper sec 4.3
   bool allow_batching = true;  // false: a scene beyond one batch/set is an error
+  // A host-side model whose answers are bit-identical to the lanes' (a recording being replayed,
+  // or a culled fixed-point kernel at the same width). When set, the lanes copy its answer instead
+  // of testing every ray against every face; timing, traffic and data movement are unchanged.
+  VisibilityBackend* oracle = nullptr;
 };
 
 struct BoardDriverStats {
@@ -74,6 +78,7 @@ class BoardVisibility : public VisibilityBackend {
   };
 
   void order_segments(const SegmentBatch& batch);
+  void ask_oracle(const SegmentBatch& batch);
   void plan_passes();
   void start_pass(const Pass& pass);
   void finish_pass(const Pass& pass);
@@ -116,6 +121,7 @@ class BoardVisibility : public VisibilityBackend {
   pipeline::FixedVec3 start_{0, 0, 0};
   std::uint32_t source_face_ = 0;
   std::vector<std::uint8_t> blocked_;  // end-face order
+  std::vector<std::uint8_t> oracle_answer_;  // end-face order, when options_.oracle is set
   std::vector<Pass> passes_;
   std::size_t next_pass_ = 0;
   board::RaySplit split_;              // of the batch in the ray banks

@@ -1,0 +1,50 @@
+#include "host_sw/visibility_recording.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace rc {
+
+void VisibilityRecording::add_step(const std::vector<std::uint8_t>& blocked) {
+  offsets_.push_back(total_);
+  sizes_.push_back(static_cast<std::uint32_t>(blocked.size()));
+  bits_.resize((total_ + blocked.size() + 7) / 8, 0);
+  for (std::size_t i = 0; i < blocked.size(); ++i) {
+    if (blocked[i]) bits_[(total_ + i) / 8] |= std::uint8_t(1u << ((total_ + i) % 8));
+  }
+  total_ += blocked.size();
+}
+
+void VisibilityRecording::step_flags(std::size_t step, std::vector<std::uint8_t>& blocked) const {
+  const std::uint64_t first = offsets_.at(step);
+  blocked.resize(sizes_[step]);
+  for (std::size_t i = 0; i < blocked.size(); ++i) blocked[i] = (bits_[(first + i) / 8] >> ((first + i) % 8)) & 1u;
+}
+
+void RecordingVisibility::collect(std::vector<std::uint8_t>& blocked) {
+  answer_.collect(blocked);
+  recording_.add_step(blocked);
+}
+
+void ReplayVisibility::load_faces(const std::vector<Triangle>& faces) {
+  faces_ = faces.size();
+  next_step_ = 0;
+}
+
+void ReplayVisibility::submit(const SegmentBatch& batch) {
+  if (next_step_ >= recording_.steps() || recording_.segments(next_step_) != batch.size()) {
+    throw std::logic_error("replay diverged at step " + std::to_string(next_step_ + 1) + ": the batch has " +
+                           std::to_string(batch.size()) + " segments, the recording " +
+                           (next_step_ < recording_.steps() ? std::to_string(recording_.segments(next_step_))
+                                                            : std::string("has no such step")));
+  }
+  recording_.step_flags(next_step_++, blocked_);
+  for (std::size_t s = 0; s < batch.size(); ++s) {
+    const std::size_t own = batch.end_faces[s] != batch.source_face ? 2 : 1;
+    tests_ += faces_ > own ? faces_ - own : 0;
+  }
+}
+
+void ReplayVisibility::collect(std::vector<std::uint8_t>& blocked) { blocked = blocked_; }
+
+}  // namespace rc

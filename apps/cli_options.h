@@ -24,5 +24,7 @@ void add_bits_option(CLI::App& cmd, int& bits);
 // Each command registers itself and, when chosen, stores its exit code in `exit_code`.
 void add_run_command(CLI::App& app, int& exit_code);
 void add_accuracy_command(CLI::App& app, int& exit_code);
+void add_calibrate_command(CLI::App& app, int& exit_code);
+void add_paper_command(CLI::App& app, int& exit_code);
 
 }  // namespace rc

@@ -24,6 +24,8 @@ int sc_main(int argc, char** argv) {
   int exit_code = 0;
   rc::add_run_command(app, exit_code);
   rc::add_accuracy_command(app, exit_code);
+  rc::add_calibrate_command(app, exit_code);
+  rc::add_paper_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -6,7 +6,8 @@
 
 namespace rc {
 
-// Runs apps/plots/<script> csv png; returns false (and warns on stderr) if it could not.
-bool plot(const std::string& script, const std::string& csv_path, const std::string& png_path);
+// Runs apps/plots/<script> INPUT OUTPUT (a PNG, or a folder for scripts that draw several);
+// returns false (and warns on stderr) if it could not.
+bool plot(const std::string& script, const std::string& csv_path, const std::string& output);
 
 }  // namespace rc

@@ -7,6 +7,7 @@
 
 #include "board/device_profile.h"
 #include "board/fast_wrapper.h"
+#include "host_sw/software_system.h"
 
 namespace rc {
 
@@ -182,9 +183,8 @@ nlohmann::ordered_json BoardSystem::report(double wall_seconds) const {
   r["intersections"] = {{"tests", d.tests},
                         {"per_second", total > 0 ? d.tests / total : 0.0},
                         {"per_second_while_fpga_busy", busy > 0 ? d.tests / busy : 0.0}};
-  ordered_json work, driver;
-  for (int k = 0; k < kHostWorkKinds; ++k)
-    work[to_string(HostWork(k))] = {{"count", m_cpu.count(HostWork(k))}, {"seconds", seconds(m_cpu.time(HostWork(k)))}};
+  const ordered_json work = host_work_json(m_cpu);
+  ordered_json driver;
   for (int k = 0; k < kDriverWorkKinds; ++k)
     driver[to_string(DriverWork(k))] = {{"count", m_cpu.count(DriverWork(k))},
                                         {"seconds", seconds(m_cpu.time(DriverWork(k)))}};

@@ -46,7 +46,7 @@ void HostCpuModel::advance(const sc_core::sc_time& cost, const std::string& name
   const sc_core::sc_time to = now();
   if (compute) intervals_.emplace_back(from, to);
   if (trace_ != nullptr && trace_->wants(step())) trace_->complete("host", name, from, to);
-  if (keeper_.need_sync()) keeper_.sync();
+  if (!free_running_ && keeper_.need_sync()) keeper_.sync();
 }
 
 void HostCpuModel::charge(HostWork work, std::uint64_t count) {

@@ -51,6 +51,9 @@ class HostCpuModel : public HostCostSink {
   void charge(HostWork work, std::uint64_t count) override;
   void charge(DriverWork work, std::uint64_t count);
   void sync();                        // wait out the local time; from the host SC_THREAD only
+  // A host that talks to nothing (the software-only implementation) need not yield at every
+  // quantum: its local time then only grows until sync() is called.
+  void set_free_running(bool free_running) { free_running_ = free_running; }
   sc_core::sc_time now() const;       // sc_time_stamp() + local time
   sc_core::sc_time local() const { return keeper_.get_local_time(); }
 
@@ -79,6 +82,7 @@ class HostCpuModel : public HostCostSink {
   std::array<std::uint64_t, kDriverWorkKinds> driver_counts_{};
   std::array<sc_core::sc_time, kDriverWorkKinds> driver_times_{};
   int steps_done_ = 0;
+  bool free_running_ = false;
   TraceWriter* trace_ = nullptr;
   std::vector<std::pair<sc_core::sc_time, sc_core::sc_time>> intervals_;
 };

@@ -87,7 +87,7 @@ void ProgressiveRadiosity::shoot(int shooter, SolverResult& result) {
   for (int j = 0; j < static_cast<int>(scene_.patches.size()); ++j) {
     if (j == shooter) continue;
     const Patch& r = scene_.patches[j];
-    if (!pair_geometry(s.centre, s.normal, r.centre, r.normal).exchanges()) {
+    if (options_.cull_receivers && !pair_geometry(s.centre, s.normal, r.centre, r.normal).exchanges()) {
       ++result.receivers_skipped;
       continue;
     }

@@ -19,6 +19,10 @@ struct SolverOptions {
   int fixed_steps = 0;         // > 0: run exactly this many steps, ignoring convergence
   int max_steps = 10'000'000;  // safety stop; reported as not converged
   FormFactorKind form_factor = FormFactorKind::PointToPoint;
+  // true: receivers behind the shooter or facing away get no segment. false (paper-faithful):
+  // every other patch gets a segment, as the paper's hardware and software tested (they exchange
+  // nothing, form factor 0, but their segments are uploaded, tested and paid for).
+  bool cull_receivers = true;
 };
 
 // Power (radiosity x area), summed over bands. emitted = absorbed + escaping + unshot holds exactly
@@ -40,7 +44,7 @@ struct SolverResult {
   EnergyBalance energy;
   std::uint64_t segments = 0;       // visibility segments asked for
   std::uint64_t blocked_segments = 0;
-  std::uint64_t receivers_skipped = 0;  // behind the shooter or facing away: no segment
+  std::uint64_t receivers_skipped = 0;  // behind the shooter or facing away: no segment (when culling)
 };
 
 struct StepProgress {

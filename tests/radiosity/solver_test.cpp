@@ -113,3 +113,28 @@ TEST(Solver, RejectsBadSettings) {
 
 }  // namespace
 }  // namespace rc
+
+namespace rc {
+namespace {
+
+// Paper-faithful mode sends segments to receivers that exchange nothing; their form factor is 0,
+// so the solution is the same to the bit, only the work differs.
+TEST(PaperFaithful, SegmentsToEveryPatchChangeNoResult) {
+  SceneOptions scene_options;
+  scene_options.patch_levels = 1;
+  const Scene scene = prepare_scene(scene_options).scene;
+  SolverOptions culled;
+  culled.fixed_steps = 150;
+  SolverOptions faithful = culled;
+  faithful.cull_receivers = false;
+  const SolverResult a = solve(scene, culled), b = solve(scene, faithful);
+  for (std::size_t i = 0; i < a.radiosity.size(); ++i) {
+    for (std::size_t k = 0; k < kBands; ++k) ASSERT_EQ(a.radiosity[i][k], b.radiosity[i][k]) << "patch " << i;
+  }
+  EXPECT_EQ(b.segments, 150u * (scene.patches.size() - 1));
+  EXPECT_LT(a.segments, b.segments);
+  EXPECT_EQ(b.receivers_skipped, 0u);
+}
+
+}  // namespace
+}  // namespace rc

@@ -1,0 +1,264 @@
+// `rc2000sim paper`: Table 2 and sec 5.6 of the paper, predicted by the model. Every scene is
+// solved once (bit-exact 15-bit visibility, recorded); the four implementations and the bank
+// variants replay it through their SystemC systems in one simulation. Only the software and
+// single-pipeline columns were used for calibration; the rest are predictions.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+#include "apps/cli_options.h"
+#include "board/throughput_estimates.h"
+#include "apps/paper_workload.h"
+#include "apps/plot.h"
+#include "apps/progress.h"
+
+namespace rc {
+
+namespace {
+
+struct PaperOptions {
+  std::string table = default_paper_table_path();
+  std::string host = "athlon-mp-2600-calibrated";
+  std::string out_dir = "out/paper";
+  std::string docs_dir;  // also write paper.md and the plots here (e.g. docs/results)
+  std::string visibility = "fixed";
+  bool quiet = false;
+};
+
+const char* const kImplementations[] = {"software", "one_pipe", "two_pipes", "concurrent"};
+constexpr int kImplementationCount = 4;
+
+TimingCase implementation_case(const PaperScene& s, int impl, const std::string& host) {
+  TimingCase c;
+  c.label = s.row.label() + " " + kImplementations[impl];
+  c.scene = &s.scene;
+  c.solver = s.solver;
+  c.recording = &s.functional.recording;
+  c.software = impl == 0;
+  c.host = host;
+  c.board.device = "xc2v6000";
+  c.board.host = host;
+  c.board.lanes = impl == 1 ? 1 : 2;
+  c.board.concurrent = impl == 3;  // the paper's "concurrent hardware software": two pipelines, enhanced driver
+  return c;
+}
+
+// Sec 4.1's six- and seven-bank variants against five banks, on the largest scene: at 15 bits a
+// word holds two coordinates, so five banks feed two full-rate lanes, and one or two more banks
+// feed two more lanes at 1/3 or 2/3 rate.
+struct BankVariant {
+  unsigned banks, lanes;
+};
+const BankVariant kBankVariants[] = {{5, 2}, {6, 4}, {7, 4}};
+
+TimingCase bank_variant_case(const PaperScene& s, const BankVariant& v, const std::string& host) {
+  TimingCase c = implementation_case(s, 2, host);
+  c.label = s.row.label() + " " + std::to_string(v.banks) + " banks " + std::to_string(v.lanes) + " lanes";
+  c.board.banks = v.banks;
+  c.board.lanes = v.lanes;
+  return c;
+}
+
+double fpga_busy(const TimingOutcome& o) {
+  return o.report.contains("time") && o.report["time"].contains("fpga_busy_seconds")
+             ? o.report["time"]["fpga_busy_seconds"].get<double>()
+             : 0.0;
+}
+
+struct PaperResults {
+  std::vector<PaperScene>* scenes = nullptr;
+  std::vector<TimingOutcome> outcomes;  // kImplementationCount per scene, then the bank variants
+  std::vector<board::PaperEstimate> estimates;
+  const TimingOutcome& at(std::size_t scene, int impl) const { return outcomes[scene * kImplementationCount + impl]; }
+  const TimingOutcome& bank_variant(std::size_t v) const {
+    return outcomes[scenes->size() * kImplementationCount + v];
+  }
+};
+
+double paper_seconds(const PaperRow& row, int impl) {
+  return impl == 0 ? row.software_seconds : impl == 1 ? row.one_pipe_seconds : NAN;
+}
+
+nlohmann::ordered_json scene_records(const PaperResults& r) {
+  nlohmann::ordered_json records = nlohmann::ordered_json::array();
+  for (std::size_t i = 0; i < r.scenes->size(); ++i) {
+    const PaperScene& s = (*r.scenes)[i];
+    for (int impl = 0; impl < kImplementationCount; ++impl) {
+      const TimingOutcome& o = r.at(i, impl);
+      const double paper = paper_seconds(s.row, impl);
+      nlohmann::ordered_json rec = {{"faces", s.row.faces},
+                                    {"patches", s.row.patches},
+                                    {"steps", s.row.steps},
+                                    {"implementation", kImplementations[impl]},
+                                    {"seconds", o.simulated_seconds},
+                                    {"role", impl < 2 ? "calibration" : "prediction"},
+                                    {"paper_seconds", std::isnan(paper) ? nlohmann::ordered_json() : nlohmann::ordered_json(paper)},
+                                    {"relative_residual", std::isnan(paper) ? nlohmann::ordered_json()
+                                                                            : nlohmann::ordered_json((o.simulated_seconds - paper) / paper)},
+                                    {"fpga_busy_seconds", fpga_busy(o)},
+                                    {"speedup_vs_software", r.at(i, 0).simulated_seconds / o.simulated_seconds},
+                                    {"steps_per_second", s.row.steps / o.simulated_seconds},
+                                    {"convergence_steps_ours", s.convergence_steps}};
+      records.push_back(rec);
+    }
+  }
+  return records;
+}
+
+nlohmann::ordered_json estimate_records(const PaperResults& r) {
+  nlohmann::ordered_json records = nlohmann::ordered_json::array();
+  for (const board::PaperEstimate& e : r.estimates) {
+    records.push_back({{"estimate", e.estimate},
+                       {"device", e.device},
+                       {"lanes", e.lanes},
+                       {"clock_mhz", e.clock_mhz},
+                       {"intersections_per_s", e.intersections_per_s},
+                       {"bytes_per_cycle", e.bytes_per_cycle},
+                       {"gb_per_s", e.gb_per_s},
+                       {"speedup_vs_software", e.speedup_vs_software},
+                       {"note", e.note}});
+  }
+  return records;
+}
+
+nlohmann::ordered_json bank_variant_records(const PaperResults& r) {
+  nlohmann::ordered_json records = nlohmann::ordered_json::array();
+  const TimingOutcome& base = r.bank_variant(0);
+  for (std::size_t v = 0; v < std::size(kBankVariants); ++v) {
+    const TimingOutcome& o = r.bank_variant(v);
+    records.push_back({{"banks", kBankVariants[v].banks},
+                       {"lanes", kBankVariants[v].lanes},
+                       {"seconds", o.simulated_seconds},
+                       {"fpga_busy_seconds", fpga_busy(o)},
+                       {"fpga_speedup_over_five_banks", fpga_busy(base) / fpga_busy(o)},
+                       {"run_speedup_over_five_banks", base.simulated_seconds / o.simulated_seconds}});
+  }
+  return records;
+}
+
+nlohmann::ordered_json summary(const PaperResults& r) {
+  double speedup_sum = 0, steps_per_s = 0;
+  const std::size_t n = r.scenes->size();
+  for (std::size_t i = 0; i < n; ++i) {
+    speedup_sum += r.at(i, 0).simulated_seconds / r.at(i, 3).simulated_seconds;
+    steps_per_s += (*r.scenes)[i].row.steps / r.at(i, 3).simulated_seconds;
+  }
+  return {{"average_overall_speedup", speedup_sum / n},
+          {"largest_scene_overall_speedup", r.at(n - 1, 0).simulated_seconds / r.at(n - 1, 3).simulated_seconds},
+          {"average_steps_per_second_concurrent", steps_per_s / n},
+          {"overall_speedup_definition", "software seconds / concurrent seconds (two pipelines with the concurrent driver)"}};
+}
+
+void write_csv(const std::string& path, const nlohmann::ordered_json& scenes, const nlohmann::ordered_json& estimates) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error(path + ": cannot open for writing");
+  auto field = [](const nlohmann::ordered_json& v) { return v.is_null() ? std::string() : v.is_string() ? v.get<std::string>() : v.dump(); };
+  out << "record,faces,patches,steps,implementation,seconds,paper_seconds,relative_residual,fpga_busy_seconds,"
+         "speedup_vs_software,device,lanes,clock_mhz,intersections_per_s,bytes_per_cycle,gb_per_s,estimate\n";
+  for (const auto& s : scenes) {
+    out << "scene," << s["faces"] << ',' << s["patches"] << ',' << s["steps"] << ',' << field(s["implementation"]) << ','
+        << s["seconds"] << ',' << field(s["paper_seconds"]) << ',' << field(s["relative_residual"]) << ','
+        << s["fpga_busy_seconds"] << ',' << s["speedup_vs_software"] << ",,,,,,,\n";
+  }
+  for (const auto& e : estimates) {
+    out << "estimate,,,,,,,,," << e["speedup_vs_software"] << ',' << field(e["device"]) << ',' << e["lanes"] << ','
+        << e["clock_mhz"] << ',' << e["intersections_per_s"] << ',' << e["bytes_per_cycle"] << ',' << e["gb_per_s"] << ",\""
+        << field(e["estimate"]) << "\"\n";
+  }
+}
+
+void print_table(const PaperResults& r) {
+  std::printf("\nTable 2 (seconds; paper figures in brackets; * = calibration column)\n");
+  std::printf("%6s %7s %6s %6s | %17s | %17s | %9s | %10s | %7s\n", "faces", "patches", "steps", "ours", "software*",
+              "one pipe*", "two pipes", "concurrent", "speedup");
+  for (std::size_t i = 0; i < r.scenes->size(); ++i) {
+    const PaperScene& s = (*r.scenes)[i];
+    char ours[16];
+    std::snprintf(ours, sizeof ours, s.convergence_steps ? "%d" : ">%d", s.convergence_steps ? s.convergence_steps : s.recorded_steps);
+    std::printf("%6d %7d %6d %6s | %7.1f [%7.1f] | %7.1f [%7.1f] | %9.1f | %10.1f | %6.2fx\n", s.row.faces, s.row.patches,
+                s.row.steps, ours, r.at(i, 0).simulated_seconds, s.row.software_seconds, r.at(i, 1).simulated_seconds,
+                s.row.one_pipe_seconds, r.at(i, 2).simulated_seconds, r.at(i, 3).simulated_seconds,
+                r.at(i, 0).simulated_seconds / r.at(i, 3).simulated_seconds);
+  }
+  std::printf("\nSec 5.6 estimates (15-bit pipeline)\n");
+  for (const board::PaperEstimate& e : r.estimates) {
+    std::printf("  %-36s %-14s lanes %-3d %7.1f MHz %10.4g int/s %7.3f B/cycle %6.2f GB/s %7.2fx software  %s\n",
+                e.estimate.c_str(), e.device.c_str(), e.lanes, e.clock_mhz, e.intersections_per_s, e.bytes_per_cycle,
+                e.gb_per_s, e.speedup_vs_software, e.note.c_str());
+  }
+  std::printf("\nSec 4.1 bank variants (largest scene, 15 bits)\n");
+  for (std::size_t v = 0; v < std::size(kBankVariants); ++v) {
+    const TimingOutcome& o = r.bank_variant(v);
+    std::printf("  %u banks, %u lanes: %8.1f s, FPGA busy %8.1f s, FPGA speedup over 5 banks %.3fx\n", kBankVariants[v].banks,
+                kBankVariants[v].lanes, o.simulated_seconds, fpga_busy(o), fpga_busy(r.bank_variant(0)) / fpga_busy(o));
+  }
+}
+
+}  // namespace
+
+void write_paper_markdown(const std::string& path, const nlohmann::ordered_json& json, const std::string& host);
+
+namespace {
+
+int run_paper(const PaperOptions& o) {
+  ProgressLine progress(!o.quiet);
+  const std::vector<PaperRow> rows = load_paper_table(o.table);
+  const HostProfile host = find_host_profile(o.host);  // fails early with a clear message
+  std::vector<PaperScene> scenes =
+      prepare_paper_scenes(rows, o.visibility, 15, [&](const std::string& what) { progress.update("%-40s", what.c_str()); });
+  std::vector<TimingCase> cases;
+  for (const PaperScene& s : scenes) {
+    for (int impl = 0; impl < kImplementationCount; ++impl) cases.push_back(implementation_case(s, impl, o.host));
+  }
+  for (const BankVariant& v : kBankVariants) cases.push_back(bank_variant_case(scenes.back(), v, o.host));
+  progress.update("simulating %zu configurations%-20s", cases.size(), "");
+  PaperResults r;
+  r.scenes = &scenes;
+  r.outcomes = run_timing_study(cases);
+  r.estimates = board::paper_estimates(1.0 / host.work[static_cast<int>(HostWork::IntersectionTest)].to_seconds(), 15);
+  progress.finish();
+
+  nlohmann::ordered_json json;
+  json["schema"] = "rc2000sim.paper/1";
+  json["host_profile"] = o.host;
+  json["visibility"] = "bit-exact fixed point, 15 fractional bits, every segment against every face";
+  json["scene_records"] = scene_records(r);
+  json["estimate_records"] = estimate_records(r);
+  json["bank_variants"] = bank_variant_records(r);
+  json["summary"] = summary(r);
+  std::filesystem::create_directories(o.out_dir);
+  std::ofstream(o.out_dir + "/paper.json") << json.dump(2) << "\n";
+  write_csv(o.out_dir + "/paper.csv", json["scene_records"], json["estimate_records"]);
+  print_table(r);
+  std::printf("\n  average overall speedup %.2fx, largest scene %.2fx (software / concurrent)\n",
+              json["summary"]["average_overall_speedup"].get<double>(), json["summary"]["largest_scene_overall_speedup"].get<double>());
+  if (!o.docs_dir.empty()) {
+    std::filesystem::create_directories(o.docs_dir + "/paper");
+    plot("paper.py", o.out_dir + "/paper.csv", o.docs_dir + "/paper");
+    write_paper_markdown(o.docs_dir + "/paper.md", json, o.host);
+  } else {
+    plot("paper.py", o.out_dir + "/paper.csv", o.out_dir);
+  }
+  std::printf("  wrote %s/paper.json, paper.csv%s (%.1f s)\n", o.out_dir.c_str(),
+              o.docs_dir.empty() ? "" : (", " + o.docs_dir + "/paper.md").c_str(), progress.seconds());
+  return 0;
+}
+
+}  // namespace
+
+void add_paper_command(CLI::App& app, int& exit_code) {
+  auto o = std::make_shared<PaperOptions>();
+  CLI::App* cmd = app.add_subcommand("paper", "Predict the paper's Table 2 and sec 5.6 with the calibrated model");
+  cmd->add_option("--table", o->table, "Measured Table 2 columns")->check(CLI::ExistingFile)->capture_default_str();
+  cmd->add_option("--host", o->host, "Host profile (rc2000sim calibrate writes the default)")->capture_default_str();
+  cmd->add_option("--out", o->out_dir, "Output folder for paper.csv, paper.json and plots")->capture_default_str();
+  cmd->add_option("--docs", o->docs_dir, "Also write paper.md and its plots here (e.g. docs/results)");
+  cmd->add_option("--visibility", o->visibility, "Bit-exact backend that answers visibility once per scene: fixed or fast")
+      ->check(CLI::IsMember({"fixed", "fast"}))->capture_default_str();
+  cmd->add_flag("--quiet", o->quiet, "No progress output");
+  cmd->callback([o, &exit_code] { exit_code = run_paper(*o); });
+}
+
+}  // namespace rc

@@ -1,0 +1,44 @@
+// The paper's eight Table 2 scenes as rc2000sim runs them: our Cornell Box refined to exactly 70
+// faces, split to 280 and 1120 faces and into 280..4480 patches, solved paper-faithfully (every
+// segment to every other patch, every face) for exactly the paper's step counts, with the answers
+// recorded once for replay by every timing configuration.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "host_sw/timing_study.h"
+#include "scenes/prepare.h"
+
+namespace rc {
+
+// One row of the measured columns of Table 2 (configs/paper-table2.json).
+struct PaperRow {
+  int faces = 0, patches = 0, steps = 0;
+  double software_seconds = 0, one_pipe_seconds = 0;
+  std::string label() const;  // e.g. "1120/4480"
+};
+
+std::vector<PaperRow> load_paper_table(const std::string& path);
+std::string default_paper_table_path();
+
+// The scene options that give exactly `faces` faces and `patches` patches (70 x 4^k faces,
+// faces x 4^m patches); throws std::invalid_argument for other counts.
+SceneOptions paper_scene_options(int faces, int patches);
+
+struct PaperScene {
+  PaperRow row;
+  Scene scene;
+  SolverOptions solver;  // paper-faithful, exactly row.steps steps
+  RecordedRun functional;
+  int convergence_steps = 0;  // steps our scene needs for 99.5% (0: more than recorded)
+  int recorded_steps = 0;
+};
+
+// Solves every row once with the bit-exact `backend` at `bits`, recording 10% more steps than the
+// paper's so that the step at which 99.5% convergence is reached can be reported beside it.
+std::vector<PaperScene> prepare_paper_scenes(const std::vector<PaperRow>& rows, const std::string& backend, int bits,
+                                             const std::function<void(const std::string&)>& progress);
+
+}  // namespace rc

@@ -1,0 +1,79 @@
+#!/usr/bin/python3
+"""Plots of rc2000sim paper.csv: Table 2 (model against paper) and the sec 5.6 estimates."""
+import csv
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+IMPLEMENTATIONS = ["software", "one_pipe", "two_pipes", "concurrent"]
+COLOURS = {"software": "tab:grey", "one_pipe": "tab:blue", "two_pipes": "tab:orange", "concurrent": "tab:green"}
+
+
+def table2(rows, out):
+    scenes = []
+    for r in rows:
+        key = f'{r["faces"]}/{r["patches"]}'
+        if key not in scenes:
+            scenes.append(key)
+    fig, ax = plt.subplots(figsize=(9, 4.5))
+    width = 0.2
+    for k, impl in enumerate(IMPLEMENTATIONS):
+        xs, model, paper_x, paper = [], [], [], []
+        for i, key in enumerate(scenes):
+            for r in rows:
+                if f'{r["faces"]}/{r["patches"]}' == key and r["implementation"] == impl:
+                    xs.append(i + (k - 1.5) * width)
+                    model.append(float(r["seconds"]))
+                    if r["paper_seconds"]:
+                        paper_x.append(xs[-1])
+                        paper.append(float(r["paper_seconds"]))
+        ax.bar(xs, model, width, color=COLOURS[impl], label=f"{impl} (model)")
+        if paper:
+            ax.plot(paper_x, paper, "k_", markersize=14, mew=2)
+    ax.plot([], [], "k_", markersize=14, mew=2, label="paper (calibration columns)")
+    ax.set_yscale("log")
+    ax.set_xticks(range(len(scenes)))
+    ax.set_xticklabels(scenes)
+    ax.set_xlabel("faces / patches")
+    ax.set_ylabel("seconds")
+    ax.set_title("Table 2: model (bars) and the paper's measured columns (black)")
+    ax.legend(fontsize=8)
+    ax.grid(True, axis="y", which="both", lw=0.3)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "table2.png"), dpi=110)
+
+
+def estimates(rows, out):
+    labels = [f'{r["estimate"]}\n{r["device"]}' + (f' ({r["lanes"]} lanes)' if r["lanes"] != "0" else "") for r in rows]
+    rates = [float(r["intersections_per_s"]) for r in rows]
+    speedups = [float(r["speedup_vs_software"]) for r in rows]
+    software = rates[0] / speedups[0]
+    fig, ax = plt.subplots(figsize=(9, 4.2))
+    ax.barh(range(len(rows)), rates, color="tab:blue")
+    ax.axvline(software, color="k", ls="--", label="calibrated software rate")
+    for i, (rate, s) in enumerate(zip(rates, speedups)):
+        ax.text(rate, i, f" {s:.1f}x", va="center", fontsize=8)
+    ax.set_yticks(range(len(rows)))
+    ax.set_yticklabels(labels, fontsize=8)
+    ax.set_xscale("log")
+    ax.set_xlabel("intersections per second")
+    ax.set_title("Sec 5.6: intersection rates the model predicts")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "estimates.png"), dpi=110)
+
+
+def main(csv_path, out):
+    rows = list(csv.DictReader(open(csv_path)))
+    table2([r for r in rows if r["record"] == "scene"], out)
+    estimates([r for r in rows if r["record"] == "estimate"], out)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        sys.exit("usage: paper.py paper.csv OUTPUT_FOLDER")
+    main(sys.argv[1], sys.argv[2])

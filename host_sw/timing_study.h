@@ -1,0 +1,53 @@
+// Many timing configurations of one functional answer, in one simulation. Visibility is computed
+// once per scene and width (a recording); every configuration (software, lanes, banks, device,
+// concurrency, host profile) replays it through its own SystemC system. SystemC elaborates once per
+// process, so all systems are elaborated side by side and run by a single sc_start; they share
+// nothing, so each one's simulated time is what it would be alone.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "host_sw/board_run.h"
+#include "host_sw/radiosity.h"
+#include "host_sw/visibility_recording.h"
+#include "scenes/scene.h"
+
+namespace rc {
+
+// A functional run whose answers are kept for replay.
+struct RecordedRun {
+  SolverResult result;
+  VisibilityRecording recording;
+  int convergence_step = 0;  // first step at which the convergence target was met (0: not within the run)
+};
+
+// Solves with a software backend ("fixed", "fast", ...) at `bits`, recording every step.
+RecordedRun record_functional_run(const Scene& scene, const SolverOptions& solver, const std::string& backend, int bits);
+
+struct TimingCase {
+  std::string label;
+  const Scene* scene = nullptr;
+  SolverOptions solver;
+  const VisibilityRecording* recording = nullptr;
+  bool software = false;                // the software-only implementation (host CPU tests every segment)
+  BoardRunOptions board;                // the board implementation (its oracle is the replay)
+  std::string host = "athlon-mp-2600";  // host profile of a software case (board cases: board.host)
+};
+
+struct TimingOutcome {
+  std::string label;
+  double simulated_seconds = 0;
+  int steps = 0;
+  nlohmann::ordered_json report;  // the system's report (rc2000sim.board/1 or rc2000sim.software/1)
+};
+
+// Throws std::invalid_argument for a bad case (before elaboration) and rethrows a system's error.
+// May be called once per process.
+std::vector<TimingOutcome> run_timing_study(const std::vector<TimingCase>& cases);
+
+}  // namespace rc

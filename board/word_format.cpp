@@ -15,13 +15,10 @@ pipeline::FaceRecord face_record_from_words(const std::uint64_t w[9], unsigned w
 void pack_rays(const BankLayout& layout, const RaySplit& split, const std::int64_t* x, const std::int64_t* y,
                const std::int64_t* z, std::vector<std::vector<std::uint8_t>>& images) {
   const unsigned word_bytes = layout.word_bits / 8;
-  images.resize(layout.banks_available);
-  for (auto& image : images) image.clear();
+  blank_ray_images(layout, split, images);
   const std::int64_t* axis[3] = {x, y, z};
   for (std::size_t g = 0; g < layout.groups.size(); ++g) {
     const RayGroup& group = layout.groups[g];
-    for (unsigned j = 0; j < group.k(); ++j)
-      images[group.banks[j]].assign(group_bank_words(group, j, split.packets[g]) * word_bytes, 0);
     for (std::uint64_t p = 0; p < split.packets[g]; ++p) {
       for (unsigned a = 0; a < 3; ++a) {
         std::uint64_t word = 0;
@@ -34,6 +31,17 @@ void pack_rays(const BankLayout& layout, const RaySplit& split, const std::int64
         store_word(images[at.bank].data(), at.word, word_bytes, word);
       }
     }
+  }
+}
+
+void blank_ray_images(const BankLayout& layout, const RaySplit& split, std::vector<std::vector<std::uint8_t>>& images) {
+  const unsigned word_bytes = layout.word_bits / 8;
+  images.resize(layout.banks_available);
+  for (auto& image : images) image.clear();
+  for (std::size_t g = 0; g < layout.groups.size(); ++g) {
+    const RayGroup& group = layout.groups[g];
+    for (unsigned j = 0; j < group.k(); ++j)
+      images[group.banks[j]].assign(group_bank_words(group, j, split.packets[g]) * word_bytes, 0);
   }
 }
 

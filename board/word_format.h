@@ -54,6 +54,9 @@ pipeline::FaceRecord face_record_from_words(const std::uint64_t words[9], unsign
 void pack_rays(const BankLayout& layout, const RaySplit& split, const std::int64_t* x, const std::int64_t* y,
                const std::int64_t* z, std::vector<std::vector<std::uint8_t>>& images);
 
+// The images pack_rays would make, all words zero: the sizes a timing replay moves.
+void blank_ray_images(const BankLayout& layout, const RaySplit& split, std::vector<std::vector<std::uint8_t>>& images);
+
 // Wrapper side: reads the coordinate words of a pass from the banks (bank_data[b] = bank b's
 // storage) back into x, y, z in pass order.
 void unpack_rays(const BankLayout& layout, const RaySplit& split, const std::vector<const std::uint8_t*>& bank_data,

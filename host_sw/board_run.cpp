@@ -8,6 +8,7 @@
 #include "board/device_profile.h"
 #include "board/fast_wrapper.h"
 #include "host_sw/software_system.h"
+#include "host_sw/work_replay.h"
 
 namespace rc {
 
@@ -72,9 +73,15 @@ BoardSystem::BoardSystem(const sc_core::sc_module_name& name, const Scene& scene
 
 void BoardSystem::run() {
   try {
-    ProgressiveRadiosity solver(m_scene, *m_visibility, m_solver, &m_cpu);
-    if (m_setup.on_progress) solver.on_progress(m_setup.on_progress);
-    m_result = solver.run();
+    if (m_setup.replay != nullptr) {
+      m_visibility->load_faces(m_scene.face_triangles());
+      replay_host_work(*m_setup.replay, {m_scene.patches.size(), m_solver.fixed_steps}, m_cpu, m_visibility.get());
+      m_result.steps = m_solver.fixed_steps;
+    } else {
+      ProgressiveRadiosity solver(m_scene, *m_visibility, m_solver, &m_cpu);
+      if (m_setup.on_progress) solver.on_progress(m_setup.on_progress);
+      m_result = solver.run();
+    }
     m_cpu.sync();
   } catch (...) {
     m_error = std::current_exception();

@@ -28,6 +28,7 @@
 #include "host_sw/host_cpu_model.h"
 #include "host_sw/radiosity.h"
 #include "host_sw/trace_writer.h"
+#include "host_sw/visibility_recording.h"
 #include "scenes/scene.h"
 
 namespace rc {
@@ -67,6 +68,9 @@ struct BoardSetup {
   BoardVisibilityOptions driver;
   int trace_first_step = 1, trace_last_step = 0;  // empty range: no trace
   bool stop_when_done = true;                      // sc_stop() when the solver has finished
+  // Timing replay (work_replay.h): the host replays this recording's work instead of running the
+  // solver, and the board runs the same passes without data. The result then has no radiosity.
+  const VisibilityRecording* replay = nullptr;
   std::function<void(const StepProgress&)> on_progress;
 };
 

@@ -179,6 +179,7 @@ void BoardVisibility::plan_passes() {
 }
 
 void BoardVisibility::submit(const SegmentBatch& batch) {
+  timing_only_ = false;
   if (batch.end_faces.size() != batch.size()) {
     throw std::invalid_argument("segment batch has " + std::to_string(batch.size()) + " end points but " +
                                 std::to_string(batch.end_faces.size()) + " end faces");
@@ -192,6 +193,31 @@ void BoardVisibility::submit(const SegmentBatch& batch) {
   order_segments(batch);
   blocked_.assign(rays_, 0);
   if (options_.oracle != nullptr) ask_oracle(batch);
+  run_step();
+}
+
+// Timing replay: a step of `segments` segments with blank data. The rays are "grouped" trivially,
+// the buffers moved have their real sizes, and the lanes copy an all-clear answer.
+void BoardVisibility::submit_timing_only(std::size_t segments, int source_face) {
+  if (board_.params().model != board::WrapperModel::fast) {
+    throw std::invalid_argument("timing replay needs the fast wrapper model");
+  }
+  rays_ = segments;
+  order_.resize(rays_);
+  std::iota(order_.begin(), order_.end(), std::size_t{0});
+  end_faces_.assign(rays_, 0);
+  start_ = {0, 0, 0};
+  source_face_ = source_face >= 0 ? static_cast<std::uint32_t>(source_face) : reg::kNoFace;
+  cpu_.charge(DriverWork::SegmentPack, rays_);
+  blocked_.assign(rays_, 0);
+  oracle_answer_.assign(rays_, 0);
+  timing_only_ = true;
+  run_step();
+}
+
+void BoardVisibility::collect_timing_only() { finish_step(); }
+
+void BoardVisibility::run_step() {
   if (rays_ == 0 || faces_.empty()) {
     passes_.clear();
     next_pass_ = 0;
@@ -210,6 +236,12 @@ void BoardVisibility::submit(const SegmentBatch& batch) {
 }
 
 void BoardVisibility::collect(std::vector<std::uint8_t>& blocked) {
+  finish_step();
+  blocked.assign(rays_, 0);
+  for (std::size_t i = 0; i < rays_; ++i) blocked[order_[i]] = blocked_[i];
+}
+
+void BoardVisibility::finish_step() {
   if (next_pass_ < passes_.size()) {
     finish_pass(passes_[next_pass_]);  // started by submit()
     for (++next_pass_; next_pass_ < passes_.size(); ++next_pass_) {
@@ -217,8 +249,6 @@ void BoardVisibility::collect(std::vector<std::uint8_t>& blocked) {
       finish_pass(passes_[next_pass_]);
     }
   }
-  blocked.assign(rays_, 0);
-  for (std::size_t i = 0; i < rays_; ++i) blocked[order_[i]] = blocked_[i];
 }
 
 // The oracle answers in segment order; the banks hold the rays in end-face order.
@@ -235,7 +265,11 @@ void BoardVisibility::ask_oracle(const SegmentBatch& batch) {
 void BoardVisibility::upload_rays(std::size_t batch) {
   const std::size_t first = batch_first(batch);
   split_ = board::split_rays(layout_, batch_size(batch));
-  board::pack_rays(layout_, split_, x_.data() + first, y_.data() + first, z_.data() + first, images_);
+  if (timing_only_) {
+    board::blank_ray_images(layout_, split_, images_);
+  } else {
+    board::pack_rays(layout_, split_, x_.data() + first, y_.data() + first, z_.data() + first, images_);
+  }
   for (unsigned b = 0; b < images_.size(); ++b)
     dma(tlmx::DmaDirection::to_device, images_[b].data(), board_.bank_pci_address(b), images_[b].size(), "rays");
 }
@@ -273,7 +307,8 @@ void BoardVisibility::start_pass(const Pass& pass) {
                    static_cast<std::uint32_t>(set_first(pass.set)), source_face_, static_cast<std::uint32_t>(start_.x),
                    static_cast<std::uint32_t>(start_.y), static_cast<std::uint32_t>(start_.z),
                    static_cast<std::uint32_t>(mask_start)});
-  board_.wrapper().set_oracle(options_.oracle ? oracle_answer_.data() + batch_first(pass.batch) : nullptr);
+  const bool copy_answer = options_.oracle != nullptr || timing_only_;
+  board_.wrapper().set_oracle(copy_answer ? oracle_answer_.data() + batch_first(pass.batch) : nullptr);
   cpu_.clear_intervals();  // host compute from here on may overlap the pass
   write_registers(reg::kControl, {reg::kStart | (pass.first_of_batch ? reg::kClear : 0u)});
   host_event("start pass", from);

@@ -71,6 +71,13 @@ class BoardVisibility : public VisibilityBackend {
 
   const BoardDriverStats& stats() const { return stats_; }
 
+  // Timing replay (host_sw/work_replay.h): exactly the passes, transfers, registers, interrupts
+  // and driver work of submit()/collect() for a step of `segments` segments from `source_face`,
+  // without the data: buffers of the real sizes are moved blank and the lanes do not compute.
+  // Only the fast wrapper model supports it.
+  void submit_timing_only(std::size_t segments, int source_face);
+  void collect_timing_only();
+
  private:
   struct Pass {
     std::size_t batch = 0, set = 0;
@@ -78,6 +85,8 @@ class BoardVisibility : public VisibilityBackend {
   };
 
   void order_segments(const SegmentBatch& batch);
+  void run_step();     // the step's passes (serial) or its first pass (concurrent)
+  void finish_step();  // the remaining passes
   void ask_oracle(const SegmentBatch& batch);
   void plan_passes();
   void start_pass(const Pass& pass);
@@ -122,6 +131,7 @@ class BoardVisibility : public VisibilityBackend {
   std::uint32_t source_face_ = 0;
   std::vector<std::uint8_t> blocked_;  // end-face order
   std::vector<std::uint8_t> oracle_answer_;  // end-face order, when options_.oracle is set
+  bool timing_only_ = false;                 // the current step came from submit_timing_only
   std::vector<Pass> passes_;
   std::size_t next_pass_ = 0;
   board::RaySplit split_;              // of the batch in the ray banks

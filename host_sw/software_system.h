@@ -11,6 +11,7 @@
 
 #include "host_sw/host_cpu_model.h"
 #include "host_sw/radiosity.h"
+#include "host_sw/visibility_recording.h"
 #include "scenes/scene.h"
 
 namespace rc {
@@ -20,6 +21,9 @@ class SoftwareSystem : public sc_core::sc_module {
   // `visibility` answers (e.g. a replay); its tests_performed() is what the host pays for.
   SoftwareSystem(const sc_core::sc_module_name& name, const Scene& scene, const SolverOptions& solver,
                  VisibilityBackend& visibility, const HostProfile& host);
+  // Timing replay (work_replay.h) of solver.fixed_steps steps of a recording; no radiosity.
+  SoftwareSystem(const sc_core::sc_module_name& name, const Scene& scene, const SolverOptions& solver,
+                 const VisibilityRecording& replay, const HostProfile& host);
 
   bool finished() const { return m_finished; }
   void rethrow_if_failed() const;
@@ -33,7 +37,9 @@ class SoftwareSystem : public sc_core::sc_module {
 
   const Scene& m_scene;
   SolverOptions m_solver;
-  VisibilityBackend& m_visibility;
+  VisibilityBackend* m_visibility = nullptr;
+  const VisibilityRecording* m_replay = nullptr;
+  std::uint64_t m_tests = 0;
   HostCpuModel m_cpu;
   SolverResult m_result;
   sc_core::sc_time m_end = sc_core::SC_ZERO_TIME;

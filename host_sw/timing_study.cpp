@@ -21,9 +21,8 @@ RecordedRun record_functional_run(const Scene& scene, const SolverOptions& solve
 
 namespace {
 
-// One case's system and the replay that answers it; kept alive until the study ends.
+// One case's system; every case replays its recording's work (work_replay.h).
 struct CaseSystem {
-  std::unique_ptr<ReplayVisibility> replay;
   std::unique_ptr<SoftwareSystem> software;
   std::unique_ptr<BoardSystem> board;
 
@@ -32,16 +31,15 @@ struct CaseSystem {
 
 CaseSystem elaborate(const TimingCase& c, std::size_t index) {
   if (c.scene == nullptr || c.recording == nullptr) throw std::invalid_argument("timing case '" + c.label + "' has no scene or recording");
+  if (c.solver.fixed_steps <= 0) throw std::invalid_argument("timing case '" + c.label + "' needs a fixed step count");
   CaseSystem s;
-  s.replay = std::make_unique<ReplayVisibility>(*c.recording);
   const std::string name = "case" + std::to_string(index);
   if (c.software) {
-    s.software = std::make_unique<SoftwareSystem>(name.c_str(), *c.scene, c.solver, *s.replay, find_host_profile(c.host));
+    s.software = std::make_unique<SoftwareSystem>(name.c_str(), *c.scene, c.solver, *c.recording, find_host_profile(c.host));
   } else {
-    BoardRunOptions o = c.board;
-    o.oracle = s.replay.get();
-    BoardSetup setup = make_board_setup(o);
+    BoardSetup setup = make_board_setup(c.board);
     setup.stop_when_done = false;
+    setup.replay = c.recording;
     s.board = std::make_unique<BoardSystem>(name.c_str(), *c.scene, c.solver, setup);
   }
   return s;

@@ -5,9 +5,24 @@
 
 namespace rc {
 
-void VisibilityRecording::add_step(const std::vector<std::uint8_t>& blocked) {
+std::uint64_t brute_force_tests(const SegmentBatch& batch, std::size_t faces) {
+  std::uint64_t tests = 0;
+  for (std::size_t s = 0; s < batch.size(); ++s) {
+    const std::size_t own = batch.end_faces[s] != batch.source_face ? 2 : 1;
+    tests += faces > own ? faces - own : 0;
+  }
+  return tests;
+}
+
+void VisibilityRecording::add_step(const std::vector<std::uint8_t>& blocked, int source_face,
+                                   std::uint64_t brute_force_tests) {
   offsets_.push_back(total_);
   sizes_.push_back(static_cast<std::uint32_t>(blocked.size()));
+  std::uint32_t count = 0;
+  for (std::uint8_t b : blocked) count += b != 0;
+  blocked_.push_back(count);
+  source_faces_.push_back(source_face);
+  tests_.push_back(brute_force_tests);
   bits_.resize((total_ + blocked.size() + 7) / 8, 0);
   for (std::size_t i = 0; i < blocked.size(); ++i) {
     if (blocked[i]) bits_[(total_ + i) / 8] |= std::uint8_t(1u << ((total_ + i) % 8));
@@ -21,9 +36,20 @@ void VisibilityRecording::step_flags(std::size_t step, std::vector<std::uint8_t>
   for (std::size_t i = 0; i < blocked.size(); ++i) blocked[i] = (bits_[(first + i) / 8] >> ((first + i) % 8)) & 1u;
 }
 
+void RecordingVisibility::load_faces(const std::vector<Triangle>& faces) {
+  faces_ = faces.size();
+  answer_.load_faces(faces);
+}
+
+void RecordingVisibility::submit(const SegmentBatch& batch) {
+  source_face_ = batch.source_face;
+  tests_ = brute_force_tests(batch, faces_);
+  answer_.submit(batch);
+}
+
 void RecordingVisibility::collect(std::vector<std::uint8_t>& blocked) {
   answer_.collect(blocked);
-  recording_.add_step(blocked);
+  recording_.add_step(blocked, source_face_, tests_);
 }
 
 void ReplayVisibility::load_faces(const std::vector<Triangle>& faces) {
@@ -39,10 +65,7 @@ void ReplayVisibility::submit(const SegmentBatch& batch) {
                                                             : std::string("has no such step")));
   }
   recording_.step_flags(next_step_++, blocked_);
-  for (std::size_t s = 0; s < batch.size(); ++s) {
-    const std::size_t own = batch.end_faces[s] != batch.source_face ? 2 : 1;
-    tests_ += faces_ > own ? faces_ - own : 0;
-  }
+  tests_ += brute_force_tests(batch, faces_);
 }
 
 void ReplayVisibility::collect(std::vector<std::uint8_t>& blocked) { blocked = blocked_; }

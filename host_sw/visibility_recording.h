@@ -13,29 +13,39 @@
 
 namespace rc {
 
-// Per step: the number of segments and their blocked flags, packed 8 to a byte.
+// Per step: the segments' blocked flags (packed 8 to a byte), and what a timing replay needs
+// without them: the shooter's face, how many segments were blocked, and how many segment-face
+// tests a brute-force backend makes (every face but each segment's own two).
 class VisibilityRecording {
  public:
-  void add_step(const std::vector<std::uint8_t>& blocked);
+  void add_step(const std::vector<std::uint8_t>& blocked, int source_face, std::uint64_t brute_force_tests);
   std::size_t steps() const { return sizes_.size(); }
   std::size_t segments(std::size_t step) const { return sizes_[step]; }
+  std::size_t blocked(std::size_t step) const { return blocked_[step]; }
+  int source_face(std::size_t step) const { return source_faces_[step]; }
+  std::uint64_t brute_force_tests(std::size_t step) const { return tests_[step]; }
   void step_flags(std::size_t step, std::vector<std::uint8_t>& blocked) const;
   std::uint64_t total_segments() const { return total_; }
 
  private:
   std::vector<std::uint64_t> offsets_;  // first bit of each step
-  std::vector<std::uint32_t> sizes_;
+  std::vector<std::uint32_t> sizes_, blocked_;
+  std::vector<int> source_faces_;
+  std::vector<std::uint64_t> tests_;
   std::vector<std::uint8_t> bits_;
   std::uint64_t total_ = 0;
 };
+
+// Segment-face tests of a brute-force backend for one batch of a scene with `faces` faces.
+std::uint64_t brute_force_tests(const SegmentBatch& batch, std::size_t faces);
 
 class RecordingVisibility : public VisibilityBackend {
  public:
   RecordingVisibility(VisibilityBackend& answer, VisibilityRecording& recording)
       : answer_(answer), recording_(recording) {}
   std::string name() const override { return answer_.name(); }
-  void load_faces(const std::vector<Triangle>& faces) override { answer_.load_faces(faces); }
-  void submit(const SegmentBatch& batch) override { answer_.submit(batch); }
+  void load_faces(const std::vector<Triangle>& faces) override;
+  void submit(const SegmentBatch& batch) override;
   void collect(std::vector<std::uint8_t>& blocked) override;
   std::uint64_t tests_performed() const override { return answer_.tests_performed(); }
   bool runs_on_host() const override { return answer_.runs_on_host(); }
@@ -43,6 +53,9 @@ class RecordingVisibility : public VisibilityBackend {
  private:
   VisibilityBackend& answer_;
   VisibilityRecording& recording_;
+  std::size_t faces_ = 0;
+  int source_face_ = -1;
+  std::uint64_t tests_ = 0;
 };
 
 // Replays a recording. tests_performed() counts what a brute-force backend tests (every segment

@@ -20,4 +20,13 @@ struct SolutionError {
 // Throws std::invalid_argument unless both have one value per patch of the same scene.
 SolutionError compare_solutions(const std::vector<Spectrum>& solution, const std::vector<Spectrum>& reference);
 
+// A solution on finer patches averaged onto coarser ones of the same faces: each face's patches are
+// split uniformly and in order (scenes/subdivide.h), so coarse patch c of a face covers fine
+// patches c*4^d .. c*4^d + 4^d - 1 of it, all of equal area. `faces` faces, `levels` deeper by d.
+std::vector<Spectrum> coarsen_solution(const std::vector<Spectrum>& fine, std::size_t faces, int levels_deeper);
+
+// Relative RMSE of two linear images over the pixels both cover, against the reference's mean.
+struct HdrImage;
+double image_difference(const HdrImage& image, const HdrImage& reference);
+
 }  // namespace rc

@@ -164,6 +164,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"float", "fixed"}))->capture_default_str();
   add_bits_option(*cmd, options->bits);
   BoardRunOptions& b = options->board;
+  b.host = "athlon-mp-2600-calibrated";  // the profile fitted to the paper's measurements (docs/calibration.md)
   cmd->add_option("--device", b.device, "Board: device profile, configs/devices/NAME.json or a path")->capture_default_str();
   cmd->add_option("--lanes", b.lanes, "Board: pipeline lanes")->check(CLI::Range(1, 64))->capture_default_str();
   cmd->add_option("--banks", b.banks, "Board: memory banks (0: the profile's)")->check(CLI::Range(0, 64))

@@ -26,6 +26,8 @@ int sc_main(int argc, char** argv) {
   rc::add_accuracy_command(app, exit_code);
   rc::add_calibrate_command(app, exit_code);
   rc::add_paper_command(app, exit_code);
+  rc::add_sweep_command(app, exit_code);
+  rc::add_bench_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

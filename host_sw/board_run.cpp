@@ -187,6 +187,10 @@ nlohmann::ordered_json BoardSystem::report(double wall_seconds) const {
     }
   }
   r["lanes"] = lanes;
+  ordered_json limits = ordered_json::array();
+  for (const auto& [limit, tally] : d.limits)
+    limits.push_back({{"limit", limit}, {"passes", tally.passes}, {"fpga_busy_seconds", seconds(tally.fpga_busy)}});
+  r["stream_limits"] = limits;  // what bounded each pass's stream (board/pass_timing.h), and its FPGA time
   r["intersections"] = {{"tests", d.tests},
                         {"per_second", total > 0 ? d.tests / total : 0.0},
                         {"per_second_while_fpga_busy", busy > 0 ? d.tests / busy : 0.0}};

@@ -347,6 +347,9 @@ void BoardVisibility::on_pass(const board::PassRecord& r) {
   ++stats_.passes;
   stats_.tests += r.rays * r.faces;
   stats_.fpga_busy += r.end - r.start;
+  PassLimitTally& limit = stats_.limits[r.limit];
+  ++limit.passes;
+  limit.fpga_busy += r.end - r.start;
   if (trace_ == nullptr || !trace_->wants(cpu_.step())) return;
   for (std::size_t l = 0; l < r.lane_rays.size(); ++l) {
     trace_->complete("lane " + std::to_string(l), "pass", r.start, r.end,

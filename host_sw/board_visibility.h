@@ -17,6 +17,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,13 @@ struct BoardVisibilityOptions {
   VisibilityBackend* oracle = nullptr;
 };
 
+// Passes whose stream was bounded by one term of the pass time (PassRecord::limit: "lanes",
+// "bank N (role)"), and the FPGA time they took: what a faster board would have to relieve.
+struct PassLimitTally {
+  std::uint64_t passes = 0;
+  sc_core::sc_time fpga_busy = sc_core::SC_ZERO_TIME;
+};
+
 struct BoardDriverStats {
   std::uint64_t passes = 0;
   std::uint64_t ray_batches = 0;        // over all steps
@@ -54,6 +62,7 @@ struct BoardDriverStats {
   sc_core::sc_time waiting = sc_core::SC_ZERO_TIME;  // host thread waiting for the interrupt
   sc_core::sc_time fpga_busy = sc_core::SC_ZERO_TIME;  // sum of pass durations
   sc_core::sc_time overlap = sc_core::SC_ZERO_TIME;    // host compute during passes
+  std::map<std::string, PassLimitTally> limits;        // by PassRecord::limit (ordered: deterministic reports)
 };
 
 class BoardVisibility : public VisibilityBackend {

@@ -1,0 +1,175 @@
+#!/usr/bin/python3
+"""Plots of rc2000sim sweep.csv, written into OUTPUT_FOLDER:
+
+lanes_b<bits>_<driver>.png        simulated time (solid) and FPGA busy time (dashed) against lanes,
+                                  one panel per device, one colour per bank count, the bottleneck
+                                  of each simulated point as its marker
+heatmap_<device>_b<bits>_<driver>.png
+                                  simulated time over lanes x banks, bottleneck letter in each cell,
+                                  configurations that cannot exist in grey
+"""
+import csv
+import math
+import os
+import re
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.lines import Line2D  # noqa: E402
+
+# bottleneck -> (letter in heat maps, marker in line plots, description)
+BOTTLENECKS = {
+    "fpga_lanes": ("L", "o", "FPGA: lanes at full rate"),
+    "fpga_result_bank": ("R", "s", "FPGA: result bank (read-modify-write)"),
+    "fpga_ray_bank": ("B", "D", "FPGA: ray bank bandwidth"),
+    "fpga_other": ("F", "P", "FPGA: other"),
+    "host_compute": ("H", "^", "host compute"),
+    "host_driver": ("D", "v", "host driver CPU"),
+    "pci": ("P", "X", "PCI transfers"),
+}
+
+
+def driver(row):
+    return "concurrent" if row["concurrent"] == "1" else "serial"
+
+
+def slug(name):
+    base = os.path.basename(name)
+    if base.endswith(".json"):
+        base = base[:-5]
+    return re.sub(r"[^A-Za-z0-9_.-]", "_", base)
+
+
+def ordered(values):
+    seen = []
+    for v in values:
+        if v not in seen:
+            seen.append(v)
+    return seen
+
+
+def software_seconds(rows):
+    """The software-only time of the width, recovered from any simulated row's speedup."""
+    for r in rows:
+        if r["status"] == "ok" and r["speedup_vs_software"]:
+            return float(r["simulated_seconds"]) * float(r["speedup_vs_software"])
+    return None
+
+
+def lanes_plot(rows, bits, drv, out):
+    devices = ordered(r["device"] for r in rows)
+    banks = sorted({int(r["banks"]) for r in rows if r["status"] == "ok"})
+    colours = plt.cm.viridis([i / max(len(banks) - 1, 1) for i in range(len(banks))])
+    legend_inches = 3.2  # room on the right for the legend, whatever the number of panels
+    width = 4.6 * len(devices) + legend_inches
+    fig, axes = plt.subplots(1, len(devices), figsize=(width, 4.2), sharey=True, squeeze=False)
+    used = set()
+    for ax, device in zip(axes[0], devices):
+        for colour, b in zip(colours, banks):
+            pts = sorted((int(r["lanes"]), r) for r in rows
+                         if r["device"] == device and int(r["banks"]) == b and r["status"] == "ok")
+            if not pts:
+                continue
+            lanes = [p[0] for p in pts]
+            ax.plot(lanes, [float(p[1]["simulated_seconds"]) for p in pts], "-", color=colour, lw=1.2)
+            ax.plot(lanes, [float(p[1]["fpga_busy_seconds"]) for p in pts], "--", color=colour, lw=0.9)
+            for lane, r in pts:
+                kind = r["bottleneck"]
+                used.add(kind)
+                ax.plot(lane, float(r["simulated_seconds"]), BOTTLENECKS.get(kind, ("?", "*", kind))[1],
+                        color=colour, ms=5, mec="k", mew=0.4)
+        software = software_seconds(r for r in rows if r["device"] == device)
+        if software:
+            ax.axhline(software, color="grey", ls=":", lw=1)
+        ax.set_title(device, fontsize=10)
+        ax.set_xlabel("lanes")
+        ax.set_ylim(bottom=0)
+        ax.grid(True, lw=0.3)
+    axes[0][0].set_ylabel("seconds")
+    handles = [Line2D([], [], color=c, lw=1.5, label=f"{b} banks") for c, b in zip(colours, banks)]
+    handles += [Line2D([], [], color="k", ls="-", label="simulated"),
+                Line2D([], [], color="k", ls="--", label="FPGA busy"),
+                Line2D([], [], color="grey", ls=":", label="software alone")]
+    handles += [Line2D([], [], ls="", marker=BOTTLENECKS[k][1], color="w", mec="k", label=BOTTLENECKS[k][2])
+                for k in BOTTLENECKS if k in used]
+    fig.legend(handles=handles, loc="center right", fontsize=8)
+    fig.suptitle(f"Simulated and FPGA busy time against lanes ({bits}-bit, {drv} driver); marker: bottleneck",
+                 fontsize=10)
+    fig.tight_layout(rect=(0, 0, 1 - legend_inches / width, 0.95))
+    fig.savefig(os.path.join(out, f"lanes_b{bits}_{drv}.png"), dpi=110)
+    plt.close(fig)
+
+
+def heatmap(rows, device, bits, drv, out):
+    lanes = sorted({int(r["lanes"]) for r in rows})
+    banks = sorted({int(r["banks"]) for r in rows})
+    # Lane counts that fit nowhere in the sweep are left out (one line under the plot says so).
+    fits = [n for n in lanes if any(int(r["lanes"]) == n and r["invalid_kind"] != "does_not_fit" for r in rows)]
+    if not fits:
+        return
+    cell = {(int(r["lanes"]), int(r["banks"])): r for r in rows}
+    grid = [[math.nan] * len(banks) for _ in fits]
+    for i, n in enumerate(fits):
+        for j, b in enumerate(banks):
+            r = cell.get((n, b))
+            if r and r["status"] == "ok":
+                grid[i][j] = float(r["simulated_seconds"])
+    fig, ax = plt.subplots(figsize=(1.0 + 0.75 * len(banks), 1.2 + 0.42 * len(fits)))
+    cmap = plt.cm.viridis_r.copy()
+    cmap.set_bad("0.85")
+    image = ax.imshow(grid, cmap=cmap, aspect="auto", origin="lower")
+    low, high = image.get_clim()
+    for i, n in enumerate(fits):
+        for j, b in enumerate(banks):
+            r = cell.get((n, b))
+            if r is None:
+                continue
+            colour = "k"
+            if r["status"] == "ok":
+                letter = BOTTLENECKS.get(r["bottleneck"], ("?",))[0]
+                seconds = float(r["simulated_seconds"])
+                text = f"{seconds:.4g}\n{letter}"
+                # viridis_r is dark at the top of the range: white text there.
+                if high > low and (seconds - low) / (high - low) > 0.6:
+                    colour = "w"
+            else:
+                text = "fit" if r["invalid_kind"] == "does_not_fit" else "banks"
+            ax.text(j, i, text, ha="center", va="center", fontsize=6.5, color=colour)
+    ax.set_xticks(range(len(banks)))
+    ax.set_xticklabels(banks)
+    ax.set_yticks(range(len(fits)))
+    ax.set_yticklabels(fits)
+    ax.set_xlabel("banks")
+    ax.set_ylabel("lanes")
+    bar = fig.colorbar(image, ax=ax)
+    bar.set_label("simulated seconds")
+    ax.set_title(f"{device}, {bits}-bit, {drv}: simulated seconds", fontsize=9)
+    key = "  ".join(f"{v[0]} {v[2]}" for k, v in BOTTLENECKS.items()
+                    if any(r["bottleneck"] == k for r in rows))
+    note = f"grey: cannot exist (banks: too few banks). {key}"
+    if len(fits) < len(lanes):
+        note += f"\nnot shown: {len(lanes) - len(fits)} lane count(s) that do not fit the device"
+    fig.text(0.01, 0.005, note, fontsize=6, va="bottom", wrap=True)
+    fig.tight_layout(rect=(0, 0.06, 1, 1))
+    fig.savefig(os.path.join(out, f"heatmap_{slug(device)}_b{bits}_{drv}.png"), dpi=110)
+    plt.close(fig)
+
+
+def main(csv_path, out):
+    rows = list(csv.DictReader(open(csv_path)))
+    for bits in ordered(r["bits"] for r in rows):
+        for drv in ordered(driver(r) for r in rows):
+            block = [r for r in rows if r["bits"] == bits and driver(r) == drv]
+            if any(r["status"] == "ok" for r in block):
+                lanes_plot(block, bits, drv, out)
+            for device in ordered(r["device"] for r in block):
+                heatmap([r for r in block if r["device"] == device], device, bits, drv, out)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        sys.exit("usage: sweep.py sweep.csv OUTPUT_FOLDER")
+    main(sys.argv[1], sys.argv[2])

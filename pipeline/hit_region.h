@@ -1,0 +1,100 @@
+// Which end points can the pipeline report as hitting one face from one start point? A
+// conservative answer, so that a visibility backend can skip the rest without changing a bit.
+//
+// For a fixed face and start, tvec, qvec and t are fixed (they never see the direction), and the
+// pipeline's det, u and v are linear functions of the direction d = end - start up to a small,
+// proven truncation error. The strict decision then turns into four linear conditions on d that
+// every hit satisfies (docs/fast-visibility.md has the derivation):
+//
+//   det beyond t:  s * det > |t|          (the end lies beyond the face's plane)
+//   u > 0:         s * u > 0              (three planes through the start and the face's edges)
+//   v > 0:         s * v > 0
+//   u + v < det:   s * (det - u - v) > 0
+//
+// with s = sign(t) (t == 0 never hits). Each becomes A . d >= c with an integer vector A and a
+// threshold c lowered by the largest error truncation can add. The region they bound is the
+// face's shadow frustum seen from the start, widened by the truncation error; outside it the
+// pipeline cannot report a hit.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <cstring>
+
+#include "pipeline/fixed_format.h"
+
+namespace rc::pipeline {
+
+// The four conditions in exact integer arithmetic: a hit at direction d requires
+// a[k] . d >= c[k] for every k. For the tests and the proof, not for speed.
+struct ExactHitConditions {
+  bool empty = false;  // t == 0: no direction can hit
+  std::array<std::array<__int128, 3>, 4> a{};
+  std::array<__int128, 4> c{};
+
+  bool allows(const FixedVec3& direction) const;
+};
+ExactHitConditions exact_hit_conditions(const FaceRecord& face, const FixedVec3& start, int bits);
+
+// The same four conditions in double precision, moved into end-point space, with thresholds
+// lowered by a margin that covers every rounding of the double evaluation, so that
+// may_hit(end) is true whenever ExactHitConditions::allows(end - start) is.
+class HitRegion {
+ public:
+  // Throws std::invalid_argument for a width outside 7..31. Requires a valid face record and
+  // start position (as pipeline::segment_hits does).
+  HitRegion(const FaceRecord& face, const FixedVec3& start, int bits);
+
+  // True when t == 0: the pipeline reports a miss for every end point.
+  bool empty() const { return empty_; }
+
+  // False only if no hit can end at (x, y, z), the pipeline's integer coordinates (units of
+  // 2^-bits) held as doubles.
+  [[gnu::always_inline]] bool may_hit(double x, double y, double z) const {
+    bool inside = true;  // all four planes, without branches: the outcome is unpredictable
+    for (int k = 0; k < 4; ++k) inside &= ax_[k] * x + ay_[k] * y + az_[k] * z >= threshold_[k];
+    return inside;
+  }
+
+  // kBoxes boxes at once in single precision: bit j of the result is 0 only if no hit can end in
+  // box j. bound[0] holds the boxes' lower corners, bound[1] the upper ones, per axis and box;
+  // they must enclose the points (lower corners rounded down to float, upper ones up) and lie
+  // within [0, 2^bits]. The float thresholds carry a wider margin than the double ones (2^-20
+  // instead of 2^-44 of the same scale), which covers single-precision rounding.
+  static constexpr int kBoxes = 8;  // one AVX register of floats; the lane mask packs 8 bytes
+  [[gnu::always_inline]] unsigned may_hit_boxes(const float bound[2][3][kBoxes]) const {
+    const float* base = &bound[0][0][0];
+    IntLanes inside = IntLanes{} - 1;
+    for (int k = 0; k < 4; ++k) {
+      FloatLanes x, y, z;  // the maximising corner's coordinates of every box
+      std::memcpy(&x, base + offset_[k][0], sizeof x);
+      std::memcpy(&y, base + offset_[k][1], sizeof y);
+      std::memcpy(&z, base + offset_[k][2], sizeof z);
+      inside &= a_float_[k][0] * x + a_float_[k][1] * y + a_float_[k][2] * z >= threshold_float_[k];
+    }
+    // Lane j (all ones or all zeros) to bit j: narrow to bytes, keep bit j of byte j, and sum
+    // the bytes into the top byte with one multiplication.
+    static_assert(kBoxes == 8, "the lane mask packs one byte per box into 64 bits");
+    using ByteLanes = std::int8_t __attribute__((vector_size(kBoxes)));
+    const ByteLanes bytes = __builtin_convertvector(inside, ByteLanes);
+    std::uint64_t packed;
+    std::memcpy(&packed, &bytes, sizeof packed);
+    return static_cast<unsigned>(((packed & 0x8040201008040201ull) * 0x0101010101010101ull) >> 56);
+  }
+
+ private:
+  // One float lane per box (GCC/Clang vector extensions: one AVX register, two SSE registers, or
+  // NEON, whichever the function is compiled for).
+  using FloatLanes = float __attribute__((vector_size(4 * kBoxes)));
+  using IntLanes = std::int32_t __attribute__((vector_size(4 * kBoxes)));
+
+  bool empty_ = false;
+  // Plane k: ax_[k] * x + ay_[k] * y + az_[k] * z >= threshold_[k] for every possible hit.
+  double ax_[4]{}, ay_[4]{}, az_[4]{}, threshold_[4]{};
+  // The same in float. offset_[k][i] is where, in a bound array, axis i of the box corner
+  // (lower or upper) with the largest plane-k value starts.
+  float a_float_[4][3]{}, threshold_float_[4]{};
+  int offset_[4][3]{};
+};
+
+}  // namespace rc::pipeline

@@ -38,13 +38,13 @@ struct WidthResult {
 WidthResult measure_width(const Scene& scene, const SolverOptions& solver, const SolverResult& reference, int bits) {
   WidthResult r;
   r.bits = bits;
-  auto fixed = make_software_visibility("fixed", bits);
+  auto fixed = make_software_visibility("fast", bits);
   const SolverResult solved = ProgressiveRadiosity(scene, *fixed, solver).run();
   r.steps = solved.steps;
   r.error = compare_solutions(solved.radiosity, reference.radiosity);
 
   FloatVisibility float_answer;
-  auto fixed_shadow = make_software_visibility("fixed", bits);
+  auto fixed_shadow = make_software_visibility("fast", bits);
   ComparingVisibility compare(float_answer, *fixed_shadow);
   ProgressiveRadiosity(scene, compare, solver).run();
   r.segments_compared = compare.segments_compared();

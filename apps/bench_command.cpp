@@ -39,7 +39,7 @@ struct BenchOptions {
   std::vector<int> widths{7, 11, 15, 19, 23, 27, 31};
   std::vector<double> convergences{0.99, 0.995, 0.999, 0.9999};
   std::vector<int> patch_levels{1, 2, 3};
-  std::string visibility = "fixed";
+  std::string visibility = "fast";
   BoardRunOptions board;  // the hardware whose time is predicted
   std::string out_dir = "out/bench";
   std::string docs_dir;

@@ -18,7 +18,7 @@ struct CalibrateOptions {
   std::string base = "athlon-mp-2600";
   std::string out = std::string(RC_SOURCE_DIR) + "/configs/hosts/athlon-mp-2600-calibrated.json";
   std::string name = "athlon-mp-2600-calibrated";
-  std::string visibility = "fixed";
+  std::string visibility = "fast";
   int bits = 15;
   bool quiet = false;
 };

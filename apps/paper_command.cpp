@@ -23,7 +23,7 @@ struct PaperOptions {
   std::string host = "athlon-mp-2600-calibrated";
   std::string out_dir = "out/paper";
   std::string docs_dir;  // also write paper.md and the plots here (e.g. docs/results)
-  std::string visibility = "fixed";
+  std::string visibility = "fast";
   bool quiet = false;
 };
 

@@ -32,7 +32,7 @@ RunOutcome run_software(const RunOptions& o, const Scene& scene, ProgressLine& p
   });
   RunOutcome out;
   out.solver = solver.run();
-  out.visibility_name = visibility->name() + (o.visibility == "fixed" ? " " + std::to_string(o.bits) + "-bit" : "");
+  out.visibility_name = visibility->name() + (o.visibility != "float" ? " " + std::to_string(o.bits) + "-bit" : "");
   out.visibility_tests = visibility->tests_performed();
   for (int k = 0; k < kHostWorkKinds; ++k) out.host_work[to_string(HostWork(k))] = work.count(HostWork(k));
   return out;
@@ -56,6 +56,12 @@ void parse_trace_steps(const std::string& text, BoardRunOptions& board) {
 RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& progress) {
   BoardRunOptions board = o.board;
   board.bits = o.bits;
+  // The lanes copy the culled kernel's answer, proven bit-identical (tests BoardOracle.*, FastVisibility.*).
+  std::unique_ptr<VisibilityBackend> oracle;
+  if (!o.lanes_compute) {
+    oracle = make_software_visibility("fast", o.bits);
+    board.oracle = oracle.get();
+  }
   parse_trace_steps(o.trace_steps, board);
   board.on_progress = [&](const StepProgress& p) {
     progress.update("step %d, %.2f%% converged", p.step, 100.0 * p.convergence_reached);
@@ -160,8 +166,9 @@ void add_run_command(CLI::App& app, int& exit_code) {
   add_solver_options(*cmd, *solver);
   cmd->add_option("--impl", options->impl, "Who answers visibility: software or board (the SystemC RC2000 model)")
       ->check(CLI::IsMember({"software", "board"}))->capture_default_str();
-  cmd->add_option("--visibility", options->visibility, "Software backend: float or fixed")
-      ->check(CLI::IsMember({"float", "fixed"}))->capture_default_str();
+  cmd->add_option("--visibility", options->visibility,
+                  "Software backend: float, fixed (bit-exact, brute force) or fast (bit-exact, culled, all cores)")
+      ->check(CLI::IsMember({"float", "fixed", "fast"}))->capture_default_str();
   add_bits_option(*cmd, options->bits);
   BoardRunOptions& b = options->board;
   b.host = "athlon-mp-2600-calibrated";  // the profile fitted to the paper's measurements (docs/calibration.md)
@@ -170,6 +177,9 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--banks", b.banks, "Board: memory banks (0: the profile's)")->check(CLI::Range(0, 64))
       ->capture_default_str();
   cmd->add_flag("--concurrent", b.concurrent, "Board: form factors while the FPGA works (paper sec 4.3)");
+  cmd->add_flag("--lanes-compute", options->lanes_compute,
+                "Board: the lanes test every ray against every face (slow) instead of copying the bit-identical "
+                "culled answer; timing and results are the same");
   cmd->add_option("--host", b.host, "Board: host CPU profile, configs/hosts/NAME.json or a path")->capture_default_str();
   cmd->add_option("--trace", b.trace_path, "Board: write a Chrome/Perfetto trace.json of --trace-steps");
   cmd->add_option("--trace-steps", options->trace_steps, "Board: steps to trace, FIRST:LAST")->capture_default_str();

@@ -15,7 +15,8 @@ struct RunOptions {
   SceneOptions scene;
   SolverOptions solver;              // resolved from SolverCli
   std::string impl = "software";     // software | board
-  std::string visibility = "float";  // software backend: float | fixed
+  std::string visibility = "float";  // software backend: float | fixed | fast
+  bool lanes_compute = false;        // board: the lanes test every ray against every face themselves
   int bits = 15;                     // fractional bits of the fixed-point pipeline
   BoardRunOptions board;             // --impl board
   std::string trace_steps = "1:3";   // A:B, steps written to the trace

@@ -33,7 +33,7 @@ struct SweepOptions {
   std::string concurrent = "on";
   bool paper_faithful = true;
   std::string host = "athlon-mp-2600-calibrated";
-  std::string visibility = "fixed";
+  std::string visibility = "fast";
   std::string out_dir = "out/sweep";
   bool full_banks = false;
   bool quiet = false;

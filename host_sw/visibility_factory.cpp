@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "host_sw/fast_visibility.h"
 #include "host_sw/fixed_visibility.h"
 #include "host_sw/float_visibility.h"
 
@@ -10,7 +11,8 @@ namespace rc {
 std::unique_ptr<VisibilityBackend> make_software_visibility(const std::string& name, int bits) {
   if (name == "float") return std::make_unique<FloatVisibility>();
   if (name == "fixed") return std::make_unique<FixedPointVisibility>(bits);
-  throw std::invalid_argument("unknown visibility backend '" + name + "' (expected float or fixed)");
+  if (name == "fast") return std::make_unique<FastFixedVisibility>(bits);
+  throw std::invalid_argument("unknown visibility backend '" + name + "' (expected float, fixed or fast)");
 }
 
 }  // namespace rc

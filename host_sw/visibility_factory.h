@@ -8,8 +8,10 @@
 
 namespace rc {
 
-// "float" (double precision) or "fixed" (the bit-exact pipeline arithmetic at `bits` fractional
-// bits, on the CPU). Throws std::invalid_argument with the accepted names otherwise.
+// "float" (double precision), "fixed" (the bit-exact pipeline arithmetic at `bits` fractional bits,
+// every segment against every face, on the CPU) or "fast" (the same answers bit for bit, testing only
+// the faces that could hit, on every core; docs/fast-visibility.md). Throws std::invalid_argument
+// with the accepted names otherwise.
 std::unique_ptr<VisibilityBackend> make_software_visibility(const std::string& name, int bits);
 
 }  // namespace rc

@@ -59,6 +59,7 @@ struct WrapperSignals {  // optional, for VCD traces; written when they change
 class WrapperBase : public sc_core::sc_module {
  protected:
   const std::uint8_t* m_oracle = nullptr;
+  bool m_timing_only = false;
 
 
  public:
@@ -78,6 +79,9 @@ class WrapperBase : public sc_core::sc_module {
   // instead of computing every ray against every face; its timing, bank traffic and result words
   // are unchanged. nullptr: compute. Only the fast model supports it.
   void set_oracle(const std::uint8_t* flags) { m_oracle = flags; }
+  // Timing replay: the next passes neither compute nor write result words (their values are not
+  // wanted); timing and the banks' traffic counters are unchanged. Only the fast model.
+  void set_timing_only(bool timing_only) { m_timing_only = timing_only; }
 
   // First device clock edge at or after t (edges at multiples of the device period from time 0).
   sc_core::sc_time next_edge(const sc_core::sc_time& t) const;

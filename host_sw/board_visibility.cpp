@@ -210,7 +210,6 @@ void BoardVisibility::submit_timing_only(std::size_t segments, int source_face) 
   source_face_ = source_face >= 0 ? static_cast<std::uint32_t>(source_face) : reg::kNoFace;
   cpu_.charge(DriverWork::SegmentPack, rays_);
   blocked_.assign(rays_, 0);
-  oracle_answer_.assign(rays_, 0);
   timing_only_ = true;
   run_step();
 }
@@ -307,8 +306,8 @@ void BoardVisibility::start_pass(const Pass& pass) {
                    static_cast<std::uint32_t>(set_first(pass.set)), source_face_, static_cast<std::uint32_t>(start_.x),
                    static_cast<std::uint32_t>(start_.y), static_cast<std::uint32_t>(start_.z),
                    static_cast<std::uint32_t>(mask_start)});
-  const bool copy_answer = options_.oracle != nullptr || timing_only_;
-  board_.wrapper().set_oracle(copy_answer ? oracle_answer_.data() + batch_first(pass.batch) : nullptr);
+  board_.wrapper().set_oracle(options_.oracle != nullptr ? oracle_answer_.data() + batch_first(pass.batch) : nullptr);
+  board_.wrapper().set_timing_only(timing_only_);
   cpu_.clear_intervals();  // host compute from here on may overlap the pass
   write_registers(reg::kControl, {reg::kStart | (pass.first_of_batch ? reg::kClear : 0u)});
   host_event("start pass", from);
@@ -337,7 +336,7 @@ void BoardVisibility::read_results(std::size_t batch) {
   buffer_.assign(split_.result_words * word_bytes_, 0);
   dma(tlmx::DmaDirection::to_host, buffer_.data(), board_.bank_pci_address(layout_.result_bank), buffer_.size(),
       "results");
-  board::unpack_results(layout_, split_, buffer_.data(), blocked_.data() + batch_first(batch));
+  if (!timing_only_) board::unpack_results(layout_, split_, buffer_.data(), blocked_.data() + batch_first(batch));
   cpu_.charge(DriverWork::ResultUnpack, batch_size(batch));
 }
 

@@ -109,7 +109,7 @@ void print_summary(const RunOptions& o, const Scene& scene, const RunOutcome& ou
   if (!out.board.empty()) print_board_summary(out.board);
   std::printf("  wall time    %.2f s\n", wall);
   std::printf("  outputs      %s/report.json, patches.csv, image.png%s\n", o.out_dir.c_str(),
-              o.board.trace_path.empty() ? "" : ", trace");
+              o.board.trace_path.empty() ? "" : (", " + o.board.trace_path).c_str());
 }
 
 nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& prepared, const RunOutcome& out,

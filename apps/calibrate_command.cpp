@@ -26,20 +26,8 @@ struct CalibrateOptions {
 std::vector<TimingCase> calibration_cases(const std::vector<PaperScene>& scenes, const std::string& host) {
   std::vector<TimingCase> cases;
   for (const PaperScene& s : scenes) {
-    TimingCase c;
-    c.scene = &s.scene;
-    c.solver = s.solver;
-    c.recording = &s.functional.recording;
-    c.label = s.row.label() + " software";
-    c.software = true;
-    c.host = host;
-    cases.push_back(c);
-    c.label = s.row.label() + " one_pipe";
-    c.software = false;
-    c.board.device = "xc2v6000";
-    c.board.lanes = 1;
-    c.board.host = host;
-    cases.push_back(c);
+    cases.push_back(paper_timing_case(s, PaperImplementation::Software, host));
+    cases.push_back(paper_timing_case(s, PaperImplementation::OnePipe, host));
   }
   return cases;
 }

@@ -27,23 +27,13 @@ struct PaperOptions {
   bool quiet = false;
 };
 
-const char* const kImplementations[] = {"software", "one_pipe", "two_pipes", "concurrent"};
-constexpr int kImplementationCount = 4;
+constexpr int kImplementationCount = kPaperImplementations;
 
 TimingCase implementation_case(const PaperScene& s, int impl, const std::string& host) {
-  TimingCase c;
-  c.label = s.row.label() + " " + kImplementations[impl];
-  c.scene = &s.scene;
-  c.solver = s.solver;
-  c.recording = &s.functional.recording;
-  c.software = impl == 0;
-  c.host = host;
-  c.board.device = "xc2v6000";
-  c.board.host = host;
-  c.board.lanes = impl == 1 ? 1 : 2;
-  c.board.concurrent = impl == 3;  // the paper's "concurrent hardware software": two pipelines, enhanced driver
-  return c;
+  return paper_timing_case(s, static_cast<PaperImplementation>(impl), host);
 }
+
+const char* implementation_name(int impl) { return to_string(static_cast<PaperImplementation>(impl)); }
 
 // Sec 4.1's six- and seven-bank variants against five banks, on the largest scene: at 15 bits a
 // word holds two coordinates, so five banks feed two full-rate lanes, and one or two more banks
@@ -91,7 +81,7 @@ nlohmann::ordered_json scene_records(const PaperResults& r) {
       nlohmann::ordered_json rec = {{"faces", s.row.faces},
                                     {"patches", s.row.patches},
                                     {"steps", s.row.steps},
-                                    {"implementation", kImplementations[impl]},
+                                    {"implementation", implementation_name(impl)},
                                     {"seconds", o.simulated_seconds},
                                     {"role", impl < 2 ? "calibration" : "prediction"},
                                     {"paper_seconds", std::isnan(paper) ? nlohmann::ordered_json() : nlohmann::ordered_json(paper)},

@@ -73,4 +73,29 @@ std::vector<PaperScene> prepare_paper_scenes(const std::vector<PaperRow>& rows, 
   return scenes;
 }
 
+const char* to_string(PaperImplementation implementation) {
+  switch (implementation) {
+    case PaperImplementation::Software: return "software";
+    case PaperImplementation::OnePipe: return "one_pipe";
+    case PaperImplementation::TwoPipes: return "two_pipes";
+    case PaperImplementation::Concurrent: return "concurrent";
+  }
+  return "unknown";
+}
+
+TimingCase paper_timing_case(const PaperScene& s, PaperImplementation implementation, const std::string& host) {
+  TimingCase c;
+  c.label = s.row.label() + " " + to_string(implementation);
+  c.scene = &s.scene;
+  c.solver = s.solver;
+  c.recording = &s.functional.recording;
+  c.software = implementation == PaperImplementation::Software;
+  c.host = host;
+  c.board.device = "xc2v6000";
+  c.board.host = host;
+  c.board.lanes = implementation == PaperImplementation::OnePipe ? 1 : 2;
+  c.board.concurrent = implementation == PaperImplementation::Concurrent;
+  return c;
+}
+
 }  // namespace rc

@@ -38,6 +38,14 @@ struct PaperScene {
 
 // Solves every row once with the bit-exact `backend` at `bits`, recording 10% more steps than the
 // paper's so that the step at which 99.5% convergence is reached can be reported beside it.
+// The paper's four implementations (Table 2's columns) as timing cases of one scene.
+enum class PaperImplementation { Software, OnePipe, TwoPipes, Concurrent };
+constexpr int kPaperImplementations = 4;
+const char* to_string(PaperImplementation implementation);  // "software", "one_pipe", ...
+// software: host CPU only; one_pipe / two_pipes: the XC2V6000 RC2000 with 1 / 2 lanes, serial
+// driver; concurrent: 2 lanes with the concurrent driver (sec 4.3, the paper's "enhanced driver").
+TimingCase paper_timing_case(const PaperScene& scene, PaperImplementation implementation, const std::string& host);
+
 std::vector<PaperScene> prepare_paper_scenes(const std::vector<PaperRow>& rows, const std::string& backend, int bits,
                                              const std::function<void(const std::string&)>& progress);
 

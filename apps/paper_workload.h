@@ -37,7 +37,8 @@ struct PaperScene {
 };
 
 // Solves every row once with the bit-exact `backend` at `bits`, recording 10% more steps than the
-// paper's so that the step at which 99.5% convergence is reached can be reported beside it.
+// paper's so that the step at which 99.5% convergence is reached can be reported beside it. The
+// rows are solved in parallel, one per core; the result does not depend on it.
 // The paper's four implementations (Table 2's columns) as timing cases of one scene.
 enum class PaperImplementation { Software, OnePipe, TwoPipes, Concurrent };
 constexpr int kPaperImplementations = 4;

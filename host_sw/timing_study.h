@@ -27,7 +27,9 @@ struct RecordedRun {
 };
 
 // Solves with a software backend ("fixed", "fast", ...) at `bits`, recording every step.
-RecordedRun record_functional_run(const Scene& scene, const SolverOptions& solver, const std::string& backend, int bits);
+// `threads`: the backend's own threads (fast only; 0 = every core).
+RecordedRun record_functional_run(const Scene& scene, const SolverOptions& solver, const std::string& backend, int bits,
+                                  int threads = 0);
 
 struct TimingCase {
   std::string label;

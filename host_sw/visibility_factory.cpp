@@ -8,10 +8,10 @@
 
 namespace rc {
 
-std::unique_ptr<VisibilityBackend> make_software_visibility(const std::string& name, int bits) {
+std::unique_ptr<VisibilityBackend> make_software_visibility(const std::string& name, int bits, int threads) {
   if (name == "float") return std::make_unique<FloatVisibility>();
   if (name == "fixed") return std::make_unique<FixedPointVisibility>(bits);
-  if (name == "fast") return std::make_unique<FastFixedVisibility>(bits);
+  if (name == "fast") return std::make_unique<FastFixedVisibility>(bits, threads);
   throw std::invalid_argument("unknown visibility backend '" + name + "' (expected float, fixed or fast)");
 }
 

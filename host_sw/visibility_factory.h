@@ -12,6 +12,7 @@ namespace rc {
 // every segment against every face, on the CPU) or "fast" (the same answers bit for bit, testing only
 // the faces that could hit, on every core; docs/fast-visibility.md). Throws std::invalid_argument
 // with the accepted names otherwise.
-std::unique_ptr<VisibilityBackend> make_software_visibility(const std::string& name, int bits);
+// `threads` (fast only): 0 = every core.
+std::unique_ptr<VisibilityBackend> make_software_visibility(const std::string& name, int bits, int threads = 0);
 
 }  // namespace rc

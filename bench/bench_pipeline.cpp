@@ -43,6 +43,19 @@ bool select_isa(benchmark::State& state, int index, rc::pipeline::KernelIsa& isa
   return false;
 }
 
+// The workload's end points as the X, Y and Z ray banks hold them.
+struct QuantisedEnds {
+  std::vector<std::int64_t> x, y, z;
+  QuantisedEnds(const Workload& w, int bits) {
+    for (const rc::Vec3& e : w.ends) {
+      const rc::pipeline::FixedVec3 q = rc::pipeline::quantize_point(e, bits);
+      x.push_back(q.x);
+      y.push_back(q.y);
+      z.push_back(q.z);
+    }
+  }
+};
+
 void BM_FixedKernel(benchmark::State& state) {
   const int bits = static_cast<int>(state.range(0));
   rc::pipeline::KernelIsa isa;
@@ -50,13 +63,8 @@ void BM_FixedKernel(benchmark::State& state) {
   const Workload& w = workload();
   const rc::pipeline::FaceRecord face = rc::pipeline::make_face_record(w.face, bits);
   const rc::pipeline::FixedVec3 start = rc::pipeline::quantize_point(w.start, bits);
-  std::vector<std::int64_t> x, y, z;
-  for (const rc::Vec3& e : w.ends) {
-    const rc::pipeline::FixedVec3 q = rc::pipeline::quantize_point(e, bits);
-    x.push_back(q.x);
-    y.push_back(q.y);
-    z.push_back(q.z);
-  }
+  const QuantisedEnds ends(w, bits);
+  const std::vector<std::int64_t>&x = ends.x, &y = ends.y, &z = ends.z;
   std::vector<std::uint8_t> blocked(kRays, 0);
   for (auto _ : state) {
     rc::pipeline::occlude_face(isa, face, start, x.data(), y.data(), z.data(), kRays, bits,
@@ -73,13 +81,8 @@ void BM_FixedKernelMasked(benchmark::State& state) {
   const Workload& w = workload();
   const rc::pipeline::FaceRecord face = rc::pipeline::make_face_record(w.face, bits);
   const rc::pipeline::FixedVec3 start = rc::pipeline::quantize_point(w.start, bits);
-  std::vector<std::int64_t> x, y, z;
-  for (const rc::Vec3& e : w.ends) {
-    const rc::pipeline::FixedVec3 q = rc::pipeline::quantize_point(e, bits);
-    x.push_back(q.x);
-    y.push_back(q.y);
-    z.push_back(q.z);
-  }
+  const QuantisedEnds ends(w, bits);
+  const std::vector<std::int64_t>&x = ends.x, &y = ends.y, &z = ends.z;
   std::vector<std::uint8_t> blocked(kRays, 0), skip(kRays, 0);
   for (std::size_t i = 0; i < kRays; i += 7) skip[i] = 1;
   for (auto _ : state) {

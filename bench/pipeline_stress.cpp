@@ -64,6 +64,24 @@ std::string pair(const Confusion& c, std::size_t of) {
   return percent(c.false_hits, of) + " / " + percent(c.false_misses, of);
 }
 
+// A markdown table: one row per case kind, one column per width, one confusion of Tally per cell.
+void print_by_kind(const char* title, const std::vector<int>& widths, const std::vector<std::vector<Tally>>& by_kind,
+                   Confusion Tally::*which) {
+  std::printf("\n%s\n\n| kind |", title);
+  for (int w : widths) std::printf(" %d bits |", w);
+  std::printf("\n|---|");
+  for (std::size_t w = 0; w < widths.size(); ++w) std::printf("---:|");
+  std::printf("\n");
+  for (int k = 0; k < rc::pipeline::kCaseKindCount; ++k) {
+    std::printf("| %s |", rc::pipeline::name(static_cast<rc::pipeline::CaseKind>(k)));
+    for (std::size_t w = 0; w < widths.size(); ++w) {
+      const Tally& t = by_kind[w][k];
+      std::printf(" %s |", pair(t.*which, t.cases).c_str());
+    }
+    std::printf("\n");
+  }
+}
+
 Options parse(int argc, char** argv) {
   Options o;
   for (int i = 1; i + 1 < argc; i += 2) {
@@ -118,33 +136,9 @@ int main(int argc, char** argv) {
                 pair(t.float_vs_double, t.cases).c_str(), t.det_zero, t.det_zero_hits);
   }
 
-  std::printf("\nFixed versus exact by kind: false hits / false misses.\n\n| kind |");
-  for (int w : opt.widths) std::printf(" %d bits |", w);
-  std::printf("\n|---|");
-  for (std::size_t w = 0; w < opt.widths.size(); ++w) std::printf("---:|");
-  std::printf("\n");
-  for (int k = 0; k < rc::pipeline::kCaseKindCount; ++k) {
-    std::printf("| %s |", rc::pipeline::name(static_cast<CaseKind>(k)));
-    for (std::size_t w = 0; w < opt.widths.size(); ++w) {
-      const Tally& t = by_kind[w][k];
-      std::printf(" %s |", pair(t.fixed_vs_exact, t.cases).c_str());
-    }
-    std::printf("\n");
-  }
-
-  std::printf("\nFixed versus double (un-quantised geometry) by kind: false hits / false misses.\n\n| kind |");
-  for (int w : opt.widths) std::printf(" %d bits |", w);
-  std::printf("\n|---|");
-  for (std::size_t w = 0; w < opt.widths.size(); ++w) std::printf("---:|");
-  std::printf("\n");
-  for (int k = 0; k < rc::pipeline::kCaseKindCount; ++k) {
-    std::printf("| %s |", rc::pipeline::name(static_cast<CaseKind>(k)));
-    for (std::size_t w = 0; w < opt.widths.size(); ++w) {
-      const Tally& t = by_kind[w][k];
-      std::printf(" %s |", pair(t.fixed_vs_double, t.cases).c_str());
-    }
-    std::printf("\n");
-  }
+  print_by_kind("Fixed versus exact by kind: false hits / false misses.", opt.widths, by_kind, &Tally::fixed_vs_exact);
+  print_by_kind("Fixed versus double (un-quantised geometry) by kind: false hits / false misses.", opt.widths, by_kind,
+                &Tally::fixed_vs_double);
 
   std::size_t violations = 0;
   for (const Tally& t : total) violations += t.outside_band_mismatches + t.det_zero_hits;

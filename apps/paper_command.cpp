@@ -27,14 +27,6 @@ struct PaperOptions {
   bool quiet = false;
 };
 
-constexpr int kImplementationCount = kPaperImplementations;
-
-TimingCase implementation_case(const PaperScene& s, int impl, const std::string& host) {
-  return paper_timing_case(s, static_cast<PaperImplementation>(impl), host);
-}
-
-const char* implementation_name(int impl) { return to_string(static_cast<PaperImplementation>(impl)); }
-
 // Sec 4.1's six- and seven-bank variants against five banks, on the largest scene: at 15 bits a
 // word holds two coordinates, so five banks feed two full-rate lanes, and one or two more banks
 // feed two more lanes at 1/3 or 2/3 rate.
@@ -44,7 +36,7 @@ struct BankVariant {
 const BankVariant kBankVariants[] = {{5, 2}, {6, 4}, {7, 4}};
 
 TimingCase bank_variant_case(const PaperScene& s, const BankVariant& v, const std::string& host) {
-  TimingCase c = implementation_case(s, 2, host);
+  TimingCase c = paper_timing_case(s, PaperImplementation::TwoPipes, host);
   c.label = s.row.label() + " " + std::to_string(v.banks) + " banks " + std::to_string(v.lanes) + " lanes";
   c.board.banks = v.banks;
   c.board.lanes = v.lanes;
@@ -59,11 +51,11 @@ double fpga_busy(const TimingOutcome& o) {
 
 struct PaperResults {
   std::vector<PaperScene>* scenes = nullptr;
-  std::vector<TimingOutcome> outcomes;  // kImplementationCount per scene, then the bank variants
+  std::vector<TimingOutcome> outcomes;  // kPaperImplementations per scene, then the bank variants
   std::vector<board::PaperEstimate> estimates;
-  const TimingOutcome& at(std::size_t scene, int impl) const { return outcomes[scene * kImplementationCount + impl]; }
+  const TimingOutcome& at(std::size_t scene, int impl) const { return outcomes[scene * kPaperImplementations + impl]; }
   const TimingOutcome& bank_variant(std::size_t v) const {
-    return outcomes[scenes->size() * kImplementationCount + v];
+    return outcomes[scenes->size() * kPaperImplementations + v];
   }
 };
 
@@ -75,13 +67,13 @@ nlohmann::ordered_json scene_records(const PaperResults& r) {
   nlohmann::ordered_json records = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < r.scenes->size(); ++i) {
     const PaperScene& s = (*r.scenes)[i];
-    for (int impl = 0; impl < kImplementationCount; ++impl) {
+    for (int impl = 0; impl < kPaperImplementations; ++impl) {
       const TimingOutcome& o = r.at(i, impl);
       const double paper = paper_seconds(s.row, impl);
       nlohmann::ordered_json rec = {{"faces", s.row.faces},
                                     {"patches", s.row.patches},
                                     {"steps", s.row.steps},
-                                    {"implementation", implementation_name(impl)},
+                                    {"implementation", to_string(PaperImplementation(impl))},
                                     {"seconds", o.simulated_seconds},
                                     {"role", impl < 2 ? "calibration" : "prediction"},
                                     {"paper_seconds", std::isnan(paper) ? nlohmann::ordered_json() : nlohmann::ordered_json(paper)},
@@ -200,7 +192,7 @@ int run_paper(const PaperOptions& o) {
       prepare_paper_scenes(rows, o.visibility, 15, [&](const std::string& what) { progress.update("%-40s", what.c_str()); });
   std::vector<TimingCase> cases;
   for (const PaperScene& s : scenes) {
-    for (int impl = 0; impl < kImplementationCount; ++impl) cases.push_back(implementation_case(s, impl, o.host));
+    for (int impl = 0; impl < kPaperImplementations; ++impl) cases.push_back(paper_timing_case(s, PaperImplementation(impl), o.host));
   }
   for (const BankVariant& v : kBankVariants) cases.push_back(bank_variant_case(scenes.back(), v, o.host));
   progress.update("simulating %zu configurations%-20s", cases.size(), "");

@@ -191,7 +191,6 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->callback([options, solver, &exit_code] {
     options->solver = solver->resolved();
     options->render.height = options->render.width;
-    if (options->impl == "board") options->visibility = "board";
     exit_code = run_simulation(*options);
   });
 }

@@ -59,7 +59,7 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   // The lanes copy the culled kernel's answer, proven bit-identical (tests BoardOracle.*, FastVisibility.*).
   std::unique_ptr<VisibilityBackend> oracle;
   if (!o.lanes_compute) {
-    oracle = make_software_visibility("fast", o.bits);
+    oracle = make_functional_answer("fast", o.bits);
     board.oracle = oracle.get();
   }
   parse_trace_steps(o.trace_steps, board);

@@ -26,7 +26,7 @@ class ComparingVisibility : public VisibilityBackend {
  private:
   VisibilityBackend& answer_;
   VisibilityBackend& shadow_;
-  std::vector<std::uint8_t> shadow_blocked_;
+  std::vector<std::uint8_t> shadow_blocked_, needed_;
   std::uint64_t compared_ = 0, only_shadow_ = 0, only_answer_ = 0;
 };
 

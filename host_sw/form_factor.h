@@ -1,7 +1,11 @@
 // Patch-to-patch form factors from the shooter's centre to a receiver's centre.
 #pragma once
 
+#include <cmath>
 #include <string>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/constants.hpp>
 
 #include "scenes/geometry.h"
 
@@ -27,10 +31,28 @@ struct PairGeometry {
   static constexpr double kMinCosine = 1e-9;
 };
 
-PairGeometry pair_geometry(const Vec3& shooter_centre, const Vec3& shooter_normal,
-                           const Vec3& receiver_centre, const Vec3& receiver_normal);
+// Inline: the solver calls both once per receiver per step.
+inline PairGeometry pair_geometry(const Vec3& shooter_centre, const Vec3& shooter_normal,
+                                  const Vec3& receiver_centre, const Vec3& receiver_normal) {
+  const Vec3 d = receiver_centre - shooter_centre;
+  const double r2 = glm::dot(d, d);
+  if (r2 == 0) return {};
+  const double r = std::sqrt(r2);
+  return {glm::dot(shooter_normal, d) / r, -glm::dot(receiver_normal, d) / r, r2};
+}
 
 // F from the receiver to the shooter (what shooting multiplies by), unoccluded.
-double form_factor(FormFactorKind kind, const PairGeometry& g, double shooter_area);
+inline double form_factor(FormFactorKind kind, const PairGeometry& g, double shooter_area) {
+  if (!g.exchanges()) return 0.0;
+  const double cc = g.cos_shooter * g.cos_receiver;
+  const double pi = glm::pi<double>();
+  switch (kind) {
+    case FormFactorKind::PointToPoint:
+      return cc * shooter_area / (pi * g.distance_squared);
+    case FormFactorKind::Disc:
+      return cc * shooter_area / (pi * g.distance_squared + shooter_area);
+  }
+  return 0.0;
+}
 
 }  // namespace rc

@@ -12,7 +12,7 @@ enum class HostWork : int {
   Step,              // per shooting step: bookkeeping, loop overhead
   PatchScan,         // per patch examined when choosing the next shooter
   FormFactor,        // per receiver whose geometry and form factor are computed
-  EnergyUpdate,      // per receiver whose radiosity is updated
+  EnergyUpdate,      // per receiver whose radiosity is updated (exchanges energy, not blocked)
   SegmentSetup,      // per visibility segment the host builds (and, on the board, converts)
   IntersectionTest,  // per segment-triangle test done by host software
   Count

@@ -79,22 +79,34 @@ void ProgressiveRadiosity::shoot(int shooter, SolverResult& result) {
   unshot_[shooter] = Spectrum{};
 
   // Receivers in front of the shooter and facing it get a segment; the rest get nothing.
+  // Without culling (paper-faithful) those get a segment too, marked as not needed: the hardware
+  // tests it, but no answer about it can change the solution (its form factor is 0).
   batch_.start = s.centre;
   batch_.source_face = s.face;
+  batch_.shooter = shooter;
   batch_.ends.clear();
   batch_.end_faces.clear();
+  batch_.needed.clear();
   receivers_.clear();
+  geometry_.clear();
+  bool all_needed = true;
   for (int j = 0; j < static_cast<int>(scene_.patches.size()); ++j) {
     if (j == shooter) continue;
     const Patch& r = scene_.patches[j];
-    if (options_.cull_receivers && !pair_geometry(s.centre, s.normal, r.centre, r.normal).exchanges()) {
+    const PairGeometry g = pair_geometry(s.centre, s.normal, r.centre, r.normal);
+    const bool exchanges = g.exchanges();
+    if (options_.cull_receivers && !exchanges) {
       ++result.receivers_skipped;
       continue;
     }
     receivers_.push_back(j);
+    geometry_.push_back(g);
     batch_.ends.push_back(r.centre);
     batch_.end_faces.push_back(r.face);
+    batch_.needed.push_back(exchanges);
+    all_needed &= exchanges;
   }
+  if (all_needed) batch_.needed.clear();
   charge(HostWork::SegmentSetup, receivers_.size());
   result.segments += receivers_.size();
   const std::uint64_t tests_before = visibility_.tests_performed();
@@ -102,10 +114,7 @@ void ProgressiveRadiosity::shoot(int shooter, SolverResult& result) {
 
   // Form factors while visibility is being answered (overlaps on the board in concurrent mode).
   form_factors_.resize(receivers_.size());
-  for (std::size_t k = 0; k < receivers_.size(); ++k) {
-    const Patch& r = scene_.patches[receivers_[k]];
-    form_factors_[k] = form_factor(options_.form_factor, pair_geometry(s.centre, s.normal, r.centre, r.normal), s.area);
-  }
+  for (std::size_t k = 0; k < receivers_.size(); ++k) form_factors_[k] = form_factor(options_.form_factor, geometry_[k], s.area);
   charge(HostWork::FormFactor, receivers_.size());
 
   visibility_.collect(blocked_);
@@ -113,7 +122,10 @@ void ProgressiveRadiosity::shoot(int shooter, SolverResult& result) {
 
   double arrived = 0;
   std::uint64_t updated = 0;
+  // Receivers that exchange energy and are not blocked are updated (and charged for); the others
+  // are skipped, whatever the backend said about the unneeded ones.
   for (std::size_t k = 0; k < receivers_.size(); ++k) {
+    if (!batch_.is_needed(k)) continue;
     if (blocked_[k]) {
       ++result.blocked_segments;
       continue;

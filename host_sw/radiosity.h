@@ -43,7 +43,7 @@ struct SolverResult {
   double convergence_reached = 0;   // 1 - max_unshot / max_initial
   EnergyBalance energy;
   std::uint64_t segments = 0;       // visibility segments asked for
-  std::uint64_t blocked_segments = 0;
+  std::uint64_t blocked_segments = 0;   // of the segments whose receiver exchanges energy
   std::uint64_t receivers_skipped = 0;  // behind the shooter or facing away: no segment (when culling)
 };
 
@@ -78,6 +78,7 @@ class ProgressiveRadiosity {
   // Per-step scratch, kept to avoid reallocating every step.
   SegmentBatch batch_;
   std::vector<int> receivers_;
+  std::vector<PairGeometry> geometry_;  // shooter-receiver geometry, by receiver
   std::vector<double> form_factors_;
   std::vector<std::uint8_t> blocked_;
 };

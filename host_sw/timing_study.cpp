@@ -10,7 +10,7 @@ namespace rc {
 RecordedRun record_functional_run(const Scene& scene, const SolverOptions& solver, const std::string& backend, int bits,
                                   int threads) {
   RecordedRun run;
-  auto answer = make_software_visibility(backend, bits, threads);
+  auto answer = make_functional_answer(backend, bits, threads);
   RecordingVisibility recorder(*answer, run.recording);
   ProgressiveRadiosity radiosity(scene, recorder, solver);
   radiosity.on_progress([&](const StepProgress& p) {

@@ -18,7 +18,23 @@ struct SegmentBatch {
   int source_face = -1;
   std::vector<Vec3> ends;     // one per segment
   std::vector<int> end_faces; // face each end point lies on, same length as ends
+  // Segments whose answer the solver uses: 1 per segment, or empty for all of them. The paper-
+  // faithful solver sends segments to receivers that exchange no energy (form factor 0); their
+  // answers change nothing, so a backend may skip them (and report them clear) and the solver
+  // ignores them whatever a backend says. The board still tests them: the hardware does.
+  std::vector<std::uint8_t> needed;
+  // The shooting patch. Within one solver run (one load_faces), batches from the same shooter are
+  // identical, so their answers may be reused (ShooterMemoVisibility). -1: no such promise.
+  int shooter = -1;
+
   std::size_t size() const { return ends.size(); }
+  bool is_needed(std::size_t segment) const { return needed.empty() || needed[segment] != 0; }
+  std::size_t needed_count() const {
+    if (needed.empty()) return size();
+    std::size_t n = 0;
+    for (std::uint8_t b : needed) n += b != 0;
+    return n;
+  }
 };
 
 // Own-face rule (every backend follows it): a segment is never tested against its source face or

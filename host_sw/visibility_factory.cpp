@@ -5,6 +5,8 @@
 #include "host_sw/fast_visibility.h"
 #include "host_sw/fixed_visibility.h"
 #include "host_sw/float_visibility.h"
+#include "host_sw/needed_only_visibility.h"
+#include "host_sw/shooter_memo_visibility.h"
 
 namespace rc {
 
@@ -13,6 +15,11 @@ std::unique_ptr<VisibilityBackend> make_software_visibility(const std::string& n
   if (name == "fixed") return std::make_unique<FixedPointVisibility>(bits);
   if (name == "fast") return std::make_unique<FastFixedVisibility>(bits, threads);
   throw std::invalid_argument("unknown visibility backend '" + name + "' (expected float, fixed or fast)");
+}
+
+std::unique_ptr<VisibilityBackend> make_functional_answer(const std::string& name, int bits, int threads) {
+  return std::make_unique<ShooterMemoVisibility>(
+      std::make_unique<NeededOnlyVisibility>(make_software_visibility(name, bits, threads)));
 }
 
 }  // namespace rc

@@ -15,4 +15,10 @@ namespace rc {
 // `threads` (fast only): 0 = every core.
 std::unique_ptr<VisibilityBackend> make_software_visibility(const std::string& name, int bits, int threads = 0);
 
+// The same backend for answers whose tests nobody pays for (a recording for timing replay, the
+// board's oracle): it skips segments the solver does not need and reuses a repeated shooter's
+// answer (NeededOnlyVisibility, ShooterMemoVisibility). The solver's results are bit-identical;
+// tests_performed() counts only the tests really run.
+std::unique_ptr<VisibilityBackend> make_functional_answer(const std::string& name, int bits, int threads = 0);
+
 }  // namespace rc

@@ -14,19 +14,27 @@ std::uint64_t brute_force_tests(const SegmentBatch& batch, std::size_t faces) {
   return tests;
 }
 
-void VisibilityRecording::add_step(const std::vector<std::uint8_t>& blocked, int source_face,
-                                   std::uint64_t brute_force_tests) {
+void VisibilityRecording::add_step(const std::vector<std::uint8_t>& blocked, const std::vector<std::uint8_t>& needed,
+                                   int source_face, std::uint64_t brute_force_tests) {
+  if (!needed.empty() && needed.size() != blocked.size()) {
+    throw std::invalid_argument("a step has " + std::to_string(blocked.size()) + " answers but " +
+                                std::to_string(needed.size()) + " needed flags");
+  }
   offsets_.push_back(total_);
   sizes_.push_back(static_cast<std::uint32_t>(blocked.size()));
-  std::uint32_t count = 0;
-  for (std::uint8_t b : blocked) count += b != 0;
-  blocked_.push_back(count);
+  bits_.resize((total_ + blocked.size() + 7) / 8, 0);
+  std::uint32_t needed_count = 0, blocked_count = 0;
+  for (std::size_t i = 0; i < blocked.size(); ++i) {
+    if (!needed.empty() && !needed[i]) continue;
+    ++needed_count;
+    if (!blocked[i]) continue;
+    ++blocked_count;
+    bits_[(total_ + i) / 8] |= std::uint8_t(1u << ((total_ + i) % 8));
+  }
+  needed_.push_back(needed_count);
+  blocked_.push_back(blocked_count);
   source_faces_.push_back(source_face);
   tests_.push_back(brute_force_tests);
-  bits_.resize((total_ + blocked.size() + 7) / 8, 0);
-  for (std::size_t i = 0; i < blocked.size(); ++i) {
-    if (blocked[i]) bits_[(total_ + i) / 8] |= std::uint8_t(1u << ((total_ + i) % 8));
-  }
   total_ += blocked.size();
 }
 
@@ -43,13 +51,14 @@ void RecordingVisibility::load_faces(const std::vector<Triangle>& faces) {
 
 void RecordingVisibility::submit(const SegmentBatch& batch) {
   source_face_ = batch.source_face;
+  needed_ = batch.needed;
   tests_ = brute_force_tests(batch, faces_);
   answer_.submit(batch);
 }
 
 void RecordingVisibility::collect(std::vector<std::uint8_t>& blocked) {
   answer_.collect(blocked);
-  recording_.add_step(blocked, source_face_, tests_);
+  recording_.add_step(blocked, needed_, source_face_, tests_);
 }
 
 void ReplayVisibility::load_faces(const std::vector<Triangle>& faces) {

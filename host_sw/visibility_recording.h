@@ -13,15 +13,19 @@
 
 namespace rc {
 
-// Per step: the segments' blocked flags (packed 8 to a byte), and what a timing replay needs
-// without them: the shooter's face, how many segments were blocked, and how many segment-face
-// tests a brute-force backend makes (every face but each segment's own two).
+// Per step: the segments' blocked flags (packed 8 to a byte; segments the solver does not need
+// are kept clear), and what a timing replay needs without them: the shooter's face, how many
+// segments the solver needed (SegmentBatch::needed) and how many of those were blocked, and how
+// many segment-face tests a brute-force backend makes (every face but each segment's own two).
 class VisibilityRecording {
  public:
-  void add_step(const std::vector<std::uint8_t>& blocked, int source_face, std::uint64_t brute_force_tests);
+  // `needed`: the batch's mask (empty: every segment).
+  void add_step(const std::vector<std::uint8_t>& blocked, const std::vector<std::uint8_t>& needed, int source_face,
+                std::uint64_t brute_force_tests);
   std::size_t steps() const { return sizes_.size(); }
   std::size_t segments(std::size_t step) const { return sizes_[step]; }
-  std::size_t blocked(std::size_t step) const { return blocked_[step]; }
+  std::size_t needed(std::size_t step) const { return needed_[step]; }
+  std::size_t blocked(std::size_t step) const { return blocked_[step]; }  // of the needed ones
   int source_face(std::size_t step) const { return source_faces_[step]; }
   std::uint64_t brute_force_tests(std::size_t step) const { return tests_[step]; }
   void step_flags(std::size_t step, std::vector<std::uint8_t>& blocked) const;
@@ -29,7 +33,7 @@ class VisibilityRecording {
 
  private:
   std::vector<std::uint64_t> offsets_;  // first bit of each step
-  std::vector<std::uint32_t> sizes_, blocked_;
+  std::vector<std::uint32_t> sizes_, needed_, blocked_;
   std::vector<int> source_faces_;
   std::vector<std::uint64_t> tests_;
   std::vector<std::uint8_t> bits_;
@@ -55,6 +59,7 @@ class RecordingVisibility : public VisibilityBackend {
   VisibilityRecording& recording_;
   std::size_t faces_ = 0;
   int source_face_ = -1;
+  std::vector<std::uint8_t> needed_;
   std::uint64_t tests_ = 0;
 };
 

@@ -28,7 +28,7 @@ void replay_host_work(const VisibilityRecording& recording, const ReplayShape& s
     } else {
       charge(HostWork::IntersectionTest, recording.brute_force_tests(step));
     }
-    charge(HostWork::EnergyUpdate, segments - recording.blocked(step));
+    charge(HostWork::EnergyUpdate, recording.needed(step) - recording.blocked(step));
     charge(HostWork::Step, 1);
     charge(HostWork::PatchScan, shape.patches);
   }

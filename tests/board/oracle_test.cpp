@@ -3,6 +3,7 @@
 #include "board_test_support.h"
 #include "system_support.h"
 
+#include "host_sw/visibility_factory.h"
 #include "host_sw/visibility_recording.h"
 
 namespace rc::test {
@@ -94,9 +95,10 @@ TEST(TimingReplay, ReplayedWorkTakesExactlyTheRealRunsTime) {
   faithful.cull_receivers = false;
   SolverOptions culled = steps(70);
   VisibilityRecording faithful_rec, culled_rec;
+  // Recorded as rc2000sim paper records: unneeded segments skipped, repeated shooters reused.
   for (auto [options, recording] : {std::pair{&faithful, &faithful_rec}, std::pair{&culled, &culled_rec}}) {
-    FixedPointVisibility answer(15);
-    RecordingVisibility recorder(answer, *recording);
+    auto answer = make_functional_answer("fixed", 15);
+    RecordingVisibility recorder(*answer, *recording);
     ProgressiveRadiosity(scene, recorder, *options).run();
   }
   const HostProfile host = find_host_profile("athlon-mp-2600");

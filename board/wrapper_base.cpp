@@ -46,10 +46,10 @@ std::uint8_t* WrapperBase::bank(unsigned b) {
   return m_dmi[b];
 }
 
-std::uint32_t WrapperBase::mask_count(std::uint64_t face_in_set) {
-  if (m_layout.mask_bank) return static_cast<std::uint32_t>(load_word(bank(*m_layout.mask_bank), face_in_set, m_word_bytes));
+WrapperBase::OwnFaceTable WrapperBase::own_face_table() {
+  if (m_layout.mask_bank) return {bank(*m_layout.mask_bank), 0, m_word_bytes};
   const std::uint64_t base = static_cast<std::uint64_t>(m_regs.value(reg::kFaceCount)) * m_layout.face_words();
-  return static_cast<std::uint32_t>(load_word(bank(m_layout.face_bank), base + face_in_set, m_word_bytes));
+  return {bank(m_layout.face_bank), base, m_word_bytes};
 }
 
 pipeline::FaceRecord WrapperBase::face_record(std::uint64_t face_in_set) {
@@ -75,7 +75,8 @@ PassInputs WrapperBase::read_inputs() {
     in.error = reg::kTooManyFaces;
   } else {
     std::uint64_t masked = in.mask_start;
-    for (std::uint64_t f = 0; f < in.faces; ++f) masked += mask_count(f);
+    const OwnFaceTable table = own_face_table();
+    for (std::uint64_t f = 0; f < in.faces; ++f) masked += table.count(f);
     if (masked > in.rays) in.error = reg::kMaskOverrun;
   }
   const std::int64_t limit = std::int64_t(1) << m_layout.bits;

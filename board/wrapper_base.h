@@ -15,6 +15,7 @@
 
 #include "board/bank_layout.h"
 #include "board/control_regs.h"
+#include "board/word_format.h"
 #include "board/pass_timing.h"
 #include "pipeline/fixed_format.h"
 #include "tlm/dmi_activity.h"
@@ -89,7 +90,17 @@ class WrapperBase : public sc_core::sc_module {
  protected:
   std::uint8_t* bank(unsigned b);  // DMI pointer (acquired on first use)
   PassInputs read_inputs();        // registers -> PassInputs, with error checks
-  std::uint32_t mask_count(std::uint64_t face_in_set);  // own-face table entry
+  // The own-face table in its bank: count(f) is how many of the pass's rays end on face f of the set.
+  struct OwnFaceTable {
+    const std::uint8_t* words;
+    std::uint64_t first;  // word index of face 0's entry
+    unsigned word_bytes;
+    std::uint32_t count(std::uint64_t face_in_set) const {
+      return static_cast<std::uint32_t>(load_word(words, first + face_in_set, word_bytes));
+    }
+  };
+  OwnFaceTable own_face_table();
+  std::uint32_t mask_count(std::uint64_t face_in_set) { return own_face_table().count(face_in_set); }
   pipeline::FaceRecord face_record(std::uint64_t face_in_set);
   void begin_pass();
   void complete_pass(const PassRecord& record);

@@ -82,11 +82,11 @@ std::uint32_t BoardVisibility::read_register(std::uint64_t offset) {
 }
 
 void BoardVisibility::dma(tlmx::DmaDirection direction, void* host, std::uint64_t address, std::uint64_t bytes,
-                          const char* what) {
+                          const char* what, bool no_data) {
   if (bytes == 0) return;
   cpu_.charge(DriverWork::Call, 1);
   cpu_.sync();
-  const tlmx::DmaResult r = board_.dma.transfer(direction, host, address, bytes);
+  const tlmx::DmaResult r = board_.dma.transfer({direction, host, address, bytes, no_data});
   if (!r.ok()) throw std::runtime_error(std::string("DMA of ") + what + " failed");
   stats_.pci += r.duration();
   ++stats_.dma_transfers;
@@ -202,14 +202,16 @@ void BoardVisibility::submit_timing_only(std::size_t segments, int source_face) 
   if (board_.params().model != board::WrapperModel::fast) {
     throw std::invalid_argument("timing replay needs the fast wrapper model");
   }
-  rays_ = segments;
-  order_.resize(rays_);
-  std::iota(order_.begin(), order_.end(), std::size_t{0});
-  end_faces_.assign(rays_, 0);
+  if (!timing_only_ || rays_ != segments) {  // a replay's steps mostly have the same size: set up once
+    rays_ = segments;
+    order_.resize(rays_);
+    std::iota(order_.begin(), order_.end(), std::size_t{0});
+    end_faces_.assign(rays_, 0);
+    blocked_.assign(rays_, 0);
+  }
   start_ = {0, 0, 0};
   source_face_ = source_face >= 0 ? static_cast<std::uint32_t>(source_face) : reg::kNoFace;
   cpu_.charge(DriverWork::SegmentPack, rays_);
-  blocked_.assign(rays_, 0);
   timing_only_ = true;
   run_step();
 }
@@ -264,13 +266,17 @@ void BoardVisibility::ask_oracle(const SegmentBatch& batch) {
 void BoardVisibility::upload_rays(std::size_t batch) {
   const std::size_t first = batch_first(batch);
   split_ = board::split_rays(layout_, batch_size(batch));
-  if (timing_only_) {
-    board::blank_ray_images(layout_, split_, images_);
-  } else {
+  if (!timing_only_) {
     board::pack_rays(layout_, split_, x_.data() + first, y_.data() + first, z_.data() + first, images_);
+    blank_images_rays_ = kNoBlankImages;
+  } else if (blank_images_rays_ != batch_size(batch)) {  // only their sizes matter: made once per size
+    board::blank_ray_images(layout_, split_, images_);
+    blank_images_rays_ = batch_size(batch);
   }
-  for (unsigned b = 0; b < images_.size(); ++b)
-    dma(tlmx::DmaDirection::to_device, images_[b].data(), board_.bank_pci_address(b), images_[b].size(), "rays");
+  for (unsigned b = 0; b < images_.size(); ++b) {
+    dma(tlmx::DmaDirection::to_device, images_[b].data(), board_.bank_pci_address(b), images_[b].size(), "rays",
+        timing_only_);
+  }
 }
 
 // One word per face of the set: how many of the batch's rays end on it. MASK_START (returned via
@@ -281,10 +287,10 @@ void BoardVisibility::upload_mask(std::size_t batch, std::size_t set) {
   const int f0 = static_cast<int>(set_first(set));
   const std::size_t n = set_size(set);
   buffer_.assign(n * word_bytes_, 0);
-  auto it = std::lower_bound(begin, end, f0);
-  for (std::size_t f = 0; f < n; ++f) {
-    const auto next = std::upper_bound(it, end, f0 + static_cast<int>(f));
-    board::store_word(buffer_.data(), f, word_bytes_, static_cast<std::uint64_t>(next - it));
+  // One run of equal end faces at a time: O(distinct faces x log rays), not O(faces x log rays).
+  for (auto it = std::lower_bound(begin, end, f0); it != end && *it < f0 + static_cast<int>(n);) {
+    const auto next = std::upper_bound(it, end, *it);
+    board::store_word(buffer_.data(), static_cast<std::size_t>(*it - f0), word_bytes_, static_cast<std::uint64_t>(next - it));
     it = next;
   }
   const std::uint64_t address = layout_.mask_bank ? board_.bank_pci_address(*layout_.mask_bank)
@@ -333,9 +339,13 @@ void BoardVisibility::finish_pass(const Pass& pass) {
 }
 
 void BoardVisibility::read_results(std::size_t batch) {
-  buffer_.assign(split_.result_words * word_bytes_, 0);
+  if (timing_only_) {
+    buffer_.resize(split_.result_words * word_bytes_);  // moved without data: contents immaterial
+  } else {
+    buffer_.assign(split_.result_words * word_bytes_, 0);
+  }
   dma(tlmx::DmaDirection::to_host, buffer_.data(), board_.bank_pci_address(layout_.result_bank), buffer_.size(),
-      "results");
+      "results", timing_only_);
   if (!timing_only_) board::unpack_results(layout_, split_, buffer_.data(), blocked_.data() + batch_first(batch));
   cpu_.charge(DriverWork::ResultUnpack, batch_size(batch));
 }

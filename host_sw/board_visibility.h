@@ -82,7 +82,8 @@ class BoardVisibility : public VisibilityBackend {
 
   // Timing replay (host_sw/work_replay.h): exactly the passes, transfers, registers, interrupts
   // and driver work of submit()/collect() for a step of `segments` segments from `source_face`,
-  // without the data: buffers of the real sizes are moved blank and the lanes do not compute.
+  // without the data: rays and results move as transfers of their real sizes that carry no bytes
+  // (tlmx::NoDataExtension), the own-face table and faces move for real, and the lanes do not compute.
   // Only the fast wrapper model supports it.
   void submit_timing_only(std::size_t segments, int source_face);
   void collect_timing_only();
@@ -109,7 +110,9 @@ class BoardVisibility : public VisibilityBackend {
   // Bus access from the host thread; each syncs the host's local time first.
   void write_registers(std::uint64_t offset, const std::vector<std::uint32_t>& values);
   std::uint32_t read_register(std::uint64_t offset);
-  void dma(tlmx::DmaDirection direction, void* host, std::uint64_t address, std::uint64_t bytes, const char* what);
+  // no_data: timed and counted like any transfer, bytes not moved (timing replay of blank buffers).
+  void dma(tlmx::DmaDirection direction, void* host, std::uint64_t address, std::uint64_t bytes, const char* what,
+           bool no_data = false);
   void host_event(const char* name, const sc_core::sc_time& from);
 
   std::size_t batch_first(std::size_t b) const { return b * rays_per_batch_; }
@@ -146,6 +149,8 @@ class BoardVisibility : public VisibilityBackend {
   board::RaySplit split_;              // of the batch in the ray banks
   board::PassRecord last_record_;
   std::vector<std::vector<std::uint8_t>> images_;
+  static constexpr std::size_t kNoBlankImages = ~std::size_t{0};
+  std::size_t blank_images_rays_ = kNoBlankImages;  // images_ are blank ones for a batch of this size
   std::vector<std::uint8_t> buffer_;
 };
 

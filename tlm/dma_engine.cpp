@@ -46,6 +46,7 @@ DmaResult DmaEngine::transfer(const DmaRequest& request) {
   tlm_utils::tlm_quantumkeeper keeper;  // per call: transfer() may run in several threads at once
   keeper.reset();
   tlm::tlm_generic_payload trans;
+  if (request.no_data) trans.set_extension(&m_no_data);
   DmaResult result;
   result.start = sc_core::sc_time_stamp();
   result.status = tlm::TLM_OK_RESPONSE;
@@ -58,6 +59,7 @@ DmaResult DmaEngine::transfer(const DmaRequest& request) {
     if (keeper.need_sync()) keeper.sync();
   }
   keeper.sync();
+  if (request.no_data) trans.clear_extension(&m_no_data);  // the payload must not free it
   result.end = sc_core::sc_time_stamp();
   count(request, result);
   return result;

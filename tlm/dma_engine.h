@@ -24,6 +24,8 @@
 #include <tlm>
 #include <tlm_utils/simple_initiator_socket.h>
 
+#include "tlm/no_data_extension.h"
+
 namespace rc::tlmx {
 
 enum class DmaDirection { to_device, to_host };
@@ -38,6 +40,7 @@ struct DmaRequest {
   void* host = nullptr;              // host buffer: read for to_device, written for to_host
   std::uint64_t device_address = 0;  // address on the bus (e.g. BAR base + offset)
   std::uint64_t bytes = 0;
+  bool no_data = false;              // timed and counted, bytes not moved (NoDataExtension)
 };
 
 struct DmaResult {
@@ -85,6 +88,7 @@ class DmaEngine : public sc_core::sc_module {
   void end_of_simulation() override;
 
   DmaConfig m_config;
+  NoDataExtension m_no_data;  // attached to the bursts of no_data requests, never owned by a payload
   std::deque<DmaRequest> m_queue;
   bool m_worker_busy = false;
   sc_core::sc_event m_kick;

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <sstream>
 
+#include "tlm/no_data_extension.h"
 #include "tlm/timing.h"
 
 namespace rc::tlmx {
@@ -59,6 +60,7 @@ tlm::tlm_response_status SramBank::check(const tlm::tlm_generic_payload& trans) 
 }
 
 void SramBank::copy(tlm::tlm_generic_payload& trans) {
+  if (carries_no_data(trans)) return;
   std::uint8_t* cell = m_data.data() + trans.get_address();
   if (trans.is_read())
     std::memcpy(trans.get_data_ptr(), cell, trans.get_data_length());

@@ -223,3 +223,35 @@ TEST(DmaEngine, StopsAtFailingBurstAndReportsError) {
 
 }  // namespace
 }  // namespace rc::tlmx::test
+
+namespace rc::tlmx::test {
+namespace {
+
+// A no-data request (timing replay of blank buffers) takes exactly the time of a real one and is
+// counted the same by engine, bus and bank, but moves no byte either way.
+TEST(DmaEngine, NoDataTransfersAreTimedAndCountedButMoveNothing) {
+  Rig rig(PciBusConfig{}, fast_bank(), 4096);
+  const std::vector<std::uint8_t> data = pattern(3 * 4096 + 100, 3);
+  std::vector<std::uint8_t> readback(data.size(), 0xAB);
+  DmaResult real, blank_write, blank_read;
+  ScriptedInitiator driver("driver", [&](ScriptedInitiator&) {
+    real = rig.dma.transfer(DmaDirection::to_device, const_cast<std::uint8_t*>(data.data()), kBar, data.size());
+    std::vector<std::uint8_t> zeros(data.size(), 0);
+    blank_write = rig.dma.transfer({DmaDirection::to_device, zeros.data(), kBar, zeros.size(), true});
+    blank_read = rig.dma.transfer({DmaDirection::to_host, readback.data(), kBar, readback.size(), true});
+  });
+  driver.out.bind(rig.bus.in);
+  sc_core::sc_start();
+  ASSERT_TRUE(driver.finished);
+  EXPECT_TRUE(real.ok() && blank_write.ok() && blank_read.ok());
+  EXPECT_EQ(blank_write.duration(), real.duration());
+  EXPECT_EQ(blank_read.duration(), real.duration());
+  EXPECT_EQ(std::vector<std::uint8_t>(rig.bank.data(), rig.bank.data() + data.size()), data);  // not overwritten
+  EXPECT_EQ(readback, std::vector<std::uint8_t>(data.size(), 0xAB));                          // not read
+  EXPECT_EQ(rig.bank.report().bytes_written, 2 * data.size());
+  EXPECT_EQ(rig.bank.report().bytes_read, data.size());
+  EXPECT_EQ(rig.dma.report().bursts, 3u * 4u);
+}
+
+}  // namespace
+}  // namespace rc::tlmx::test

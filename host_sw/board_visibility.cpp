@@ -85,8 +85,11 @@ void BoardVisibility::dma(tlmx::DmaDirection direction, void* host, std::uint64_
                           const char* what, bool no_data) {
   if (bytes == 0) return;
   cpu_.charge(DriverWork::Call, 1);
-  cpu_.sync();
-  const tlmx::DmaResult r = board_.dma.transfer({direction, host, address, bytes, no_data});
+  // Temporally decoupled: issued at the host's local time, which moves to the completion. The bus
+  // reserves itself at each burst's request time, so the times are those of a synced transfer.
+  sc_time local = cpu_.local();
+  const tlmx::DmaResult r = board_.dma.transfer({direction, host, address, bytes, no_data}, local);
+  cpu_.set_local(local);
   if (!r.ok()) throw std::runtime_error(std::string("DMA of ") + what + " failed");
   stats_.pci += r.duration();
   ++stats_.dma_transfers;

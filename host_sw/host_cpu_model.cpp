@@ -1,5 +1,7 @@
 #include "host_sw/host_cpu_model.h"
 
+#include <stdexcept>
+
 #include <algorithm>
 
 #include "board/profile_reader.h"
@@ -39,13 +41,16 @@ HostCpuModel::HostCpuModel(const HostProfile& profile) : profile_(profile) { kee
 
 sc_core::sc_time HostCpuModel::now() const { return sc_core::sc_time_stamp() + keeper_.get_local_time(); }
 
-void HostCpuModel::advance(const sc_core::sc_time& cost, const std::string& name, bool compute) {
+// `name()` is only called when tracing: most charges are never traced, and naming them costs more
+// than charging them.
+template <class Name>
+void HostCpuModel::advance(const sc_core::sc_time& cost, Name&& name, bool compute) {
   if (cost == sc_core::SC_ZERO_TIME) return;
   const sc_core::sc_time from = now();
   keeper_.inc(cost);
   const sc_core::sc_time to = now();
   if (compute) intervals_.emplace_back(from, to);
-  if (trace_ != nullptr && trace_->wants(step())) trace_->complete("host", name, from, to);
+  if (trace_ != nullptr && trace_->wants(step())) trace_->complete("host", name(), from, to);
   if (!free_running_ && keeper_.need_sync()) keeper_.sync();
 }
 
@@ -54,7 +59,7 @@ void HostCpuModel::charge(HostWork work, std::uint64_t count) {
   const sc_core::sc_time cost = sc_core::sc_time::from_value(profile_.work[k].value() * count);
   counts_[k] += count;
   times_[k] += cost;
-  advance(cost, to_string(work), true);
+  advance(cost, [work] { return to_string(work); }, true);
   if (work == HostWork::Step) steps_done_ += static_cast<int>(count);
 }
 
@@ -63,10 +68,16 @@ void HostCpuModel::charge(DriverWork work, std::uint64_t count) {
   const sc_core::sc_time cost = sc_core::sc_time::from_value(profile_.driver[k].value() * count);
   driver_counts_[k] += count;
   driver_times_[k] += cost;
-  advance(cost, to_string(work), false);
+  advance(cost, [work] { return to_string(work); }, false);
 }
 
 void HostCpuModel::sync() { keeper_.sync(); }
+
+void HostCpuModel::set_local(const sc_core::sc_time& local) {
+  if (local < keeper_.get_local_time()) throw std::logic_error("host local time cannot go back");
+  keeper_.set(local);
+  if (!free_running_ && keeper_.need_sync()) keeper_.sync();
+}
 
 sc_core::sc_time HostCpuModel::overlap(const sc_core::sc_time& from, const sc_core::sc_time& to) const {
   sc_core::sc_time total = sc_core::SC_ZERO_TIME;

@@ -56,6 +56,9 @@ class HostCpuModel : public HostCostSink {
   void set_free_running(bool free_running) { free_running_ = free_running; }
   sc_core::sc_time now() const;       // sc_time_stamp() + local time
   sc_core::sc_time local() const { return keeper_.get_local_time(); }
+  // A temporally decoupled bus access ran from local() to `local` (not earlier): the host's local
+  // time moves there, syncing only if that passes the quantum. Bus time is not compute time.
+  void set_local(const sc_core::sc_time& local);
 
   int step() const { return steps_done_ + 1; }  // the shooting step being worked on (from 1)
   void set_trace(TraceWriter* trace) { trace_ = trace; }
@@ -73,7 +76,8 @@ class HostCpuModel : public HostCostSink {
   sc_core::sc_time driver_time() const;   // all DriverWork
 
  private:
-  void advance(const sc_core::sc_time& cost, const std::string& name, bool compute);
+  template <class Name>
+  void advance(const sc_core::sc_time& cost, Name&& name, bool compute);
 
   HostProfile profile_;
   tlm_utils::tlm_quantumkeeper keeper_;

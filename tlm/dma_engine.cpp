@@ -41,26 +41,43 @@ tlm::tlm_response_status DmaEngine::burst(tlm::tlm_generic_payload& trans, const
   return trans.get_response_status();
 }
 
-DmaResult DmaEngine::transfer(const DmaRequest& request) {
+template <class Sync>
+DmaResult DmaEngine::run_bursts(const DmaRequest& request, sc_core::sc_time& local, Sync&& sync) {
   if (request.host == nullptr && request.bytes != 0) SC_REPORT_ERROR(kMsgType, "transfer without a host buffer");
-  tlm_utils::tlm_quantumkeeper keeper;  // per call: transfer() may run in several threads at once
-  keeper.reset();
   tlm::tlm_generic_payload trans;
   if (request.no_data) trans.set_extension(&m_no_data);
   DmaResult result;
-  result.start = sc_core::sc_time_stamp();
+  result.start = sc_core::sc_time_stamp() + local;
   result.status = tlm::TLM_OK_RESPONSE;
   while (result.bytes_done < request.bytes) {  // zero bytes: no burst, done at once
-    sc_core::sc_time local = keeper.get_local_time();
     result.status = burst(trans, request, result.bytes_done, local);
-    keeper.set(local);
     if (result.status != tlm::TLM_OK_RESPONSE) break;
     result.bytes_done += trans.get_data_length();
-    if (keeper.need_sync()) keeper.sync();
+    sync(local);
   }
-  keeper.sync();
   if (request.no_data) trans.clear_extension(&m_no_data);  // the payload must not free it
+  return result;
+}
+
+DmaResult DmaEngine::transfer(const DmaRequest& request) {
+  tlm_utils::tlm_quantumkeeper keeper;  // per call: transfer() may run in several threads at once
+  keeper.reset();
+  sc_core::sc_time local = sc_core::SC_ZERO_TIME;
+  DmaResult result = run_bursts(request, local, [&](sc_core::sc_time& t) {
+    keeper.set(t);
+    if (keeper.need_sync()) keeper.sync();
+    t = keeper.get_local_time();
+  });
+  keeper.set(local);
+  keeper.sync();
   result.end = sc_core::sc_time_stamp();
+  count(request, result);
+  return result;
+}
+
+DmaResult DmaEngine::transfer(const DmaRequest& request, sc_core::sc_time& local) {
+  DmaResult result = run_bursts(request, local, [](sc_core::sc_time&) {});
+  result.end = sc_core::sc_time_stamp() + local;
   count(request, result);
   return result;
 }

@@ -71,6 +71,11 @@ class DmaEngine : public sc_core::sc_module {
 
   DmaResult transfer(DmaDirection direction, void* host, std::uint64_t device_address, std::uint64_t bytes);
   DmaResult transfer(const DmaRequest& request);
+  // Temporally decoupled: the first burst is issued at the caller's local time offset `local`,
+  // the rest back to back, and `local` comes back as the completion's offset; nothing waits. The
+  // same times as transfer() called after syncing `local`, without the two context switches. The
+  // caller owns the local time (its quantum keeper) and syncs when it must.
+  DmaResult transfer(const DmaRequest& request, sc_core::sc_time& local);
 
   void start(const DmaRequest& request);
   const sc_core::sc_event& done_event() const { return m_done; }
@@ -84,6 +89,9 @@ class DmaEngine : public sc_core::sc_module {
   void worker();
   tlm::tlm_response_status burst(tlm::tlm_generic_payload& trans, const DmaRequest& request, std::uint64_t done,
                                  sc_core::sc_time& local);
+  // The bursts, from local time `local`; `sync` is called between bursts when a quantum keeper asks.
+  template <class Sync>
+  DmaResult run_bursts(const DmaRequest& request, sc_core::sc_time& local, Sync&& sync);
   void count(const DmaRequest& request, const DmaResult& result);
   void end_of_simulation() override;
 

@@ -255,3 +255,37 @@ TEST(DmaEngine, NoDataTransfersAreTimedAndCountedButMoveNothing) {
 
 }  // namespace
 }  // namespace rc::tlmx::test
+
+namespace rc::tlmx::test {
+namespace {
+
+// A temporally decoupled transfer issued at a local offset gives the times a synced one gives at
+// that moment, and waits for nothing.
+TEST(DmaEngine, DecoupledTransferTimesEqualSyncedOnes) {
+  Rig rig(PciBusConfig{}, fast_bank(), 4096);
+  std::vector<std::uint8_t> data = pattern(2 * 4096 + 12, 5);
+  const sc_time offset(1234, SC_NS);
+  DmaResult synced, decoupled;
+  sc_time local_after, now_after;
+  ScriptedInitiator driver("driver", [&](ScriptedInitiator&) {
+    sc_core::wait(offset);
+    synced = rig.dma.transfer(DmaDirection::to_device, data.data(), kBar, data.size());
+    const sc_time base = sc_core::sc_time_stamp();
+    sc_time local = offset;
+    decoupled = rig.dma.transfer({DmaDirection::to_device, data.data(), kBar + 0x10000, data.size()}, local);
+    local_after = local;
+    now_after = sc_core::sc_time_stamp() - base;
+  });
+  driver.out.bind(rig.bus.in);
+  sc_core::sc_start();
+  ASSERT_TRUE(driver.finished);
+  EXPECT_EQ(synced.start, offset);
+  EXPECT_EQ(decoupled.start, synced.end + offset);
+  EXPECT_EQ(decoupled.duration(), synced.duration());
+  EXPECT_EQ(local_after, offset + synced.duration());
+  EXPECT_EQ(now_after, SC_ZERO_TIME);  // no wait
+  EXPECT_EQ(std::vector<std::uint8_t>(rig.bank.data() + 0x10000, rig.bank.data() + 0x10000 + data.size()), data);
+}
+
+}  // namespace
+}  // namespace rc::tlmx::test

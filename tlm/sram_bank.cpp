@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <new>
 #include <sstream>
 
 #include "tlm/no_data_extension.h"
@@ -17,8 +18,9 @@ SramBank::SramBank(const sc_core::sc_module_name& name, const SramBankConfig& co
     : sc_core::sc_module(name), in("in"), m_config(config) {
   if (m_config.capacity_bytes == 0 || m_config.word_bytes == 0 || m_config.cycles_per_word == 0)
     SC_REPORT_ERROR(kMsgType, "capacity_bytes, word_bytes and cycles_per_word must be positive");
-  // Allocated up front: six 4 MiB banks are 24 MiB, and an always-valid array keeps DMI simple.
-  m_data.assign(m_config.capacity_bytes, 0);
+  // Allocated up front (an always-valid array keeps DMI simple) but zeroed lazily (sram_bank.h).
+  m_data.reset(static_cast<std::uint8_t*>(std::calloc(m_config.capacity_bytes, 1)));
+  if (!m_data && m_config.capacity_bytes != 0) throw std::bad_alloc();
   in.register_b_transport(this, &SramBank::b_transport);
   in.register_transport_dbg(this, &SramBank::transport_dbg);
   in.register_get_direct_mem_ptr(this, &SramBank::get_direct_mem_ptr);
@@ -61,7 +63,7 @@ tlm::tlm_response_status SramBank::check(const tlm::tlm_generic_payload& trans) 
 
 void SramBank::copy(tlm::tlm_generic_payload& trans) {
   if (carries_no_data(trans)) return;
-  std::uint8_t* cell = m_data.data() + trans.get_address();
+  std::uint8_t* cell = m_data.get() + trans.get_address();
   if (trans.is_read())
     std::memcpy(trans.get_data_ptr(), cell, trans.get_data_length());
   else
@@ -100,9 +102,9 @@ unsigned int SramBank::transport_dbg(tlm::tlm_generic_payload& trans) {
   if (address >= m_config.capacity_bytes || trans.get_command() == tlm::TLM_IGNORE_COMMAND) return 0;
   const std::uint64_t bytes = std::min<std::uint64_t>(trans.get_data_length(), m_config.capacity_bytes - address);
   if (trans.is_read())
-    std::memcpy(trans.get_data_ptr(), m_data.data() + address, bytes);
+    std::memcpy(trans.get_data_ptr(), m_data.get() + address, bytes);
   else
-    std::memcpy(m_data.data() + address, trans.get_data_ptr(), bytes);
+    std::memcpy(m_data.get() + address, trans.get_data_ptr(), bytes);
   return static_cast<unsigned int>(bytes);
 }
 
@@ -110,7 +112,7 @@ unsigned int SramBank::transport_dbg(tlm::tlm_generic_payload& trans) {
 // C * P / W, because DMI users stream; the first-word latency is theirs to add once per stream.
 bool SramBank::get_direct_mem_ptr(tlm::tlm_generic_payload& trans, tlm::tlm_dmi& dmi) {
   if (trans.get_address() >= m_config.capacity_bytes) return false;
-  dmi.set_dmi_ptr(m_data.data());
+  dmi.set_dmi_ptr(m_data.get());
   dmi.set_start_address(0);
   dmi.set_end_address(m_config.capacity_bytes - 1);
   dmi.allow_read_write();

@@ -12,6 +12,8 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdlib>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -60,8 +62,8 @@ class SramBank : public sc_core::sc_module, public DmiActivitySink {
   sc_core::sc_time access_time(tlm::tlm_command command, std::uint64_t address, std::uint64_t bytes) const;
 
   // Backdoor to the storage, for loading and inspecting contents without simulated time or counters.
-  std::uint8_t* data() { return m_data.data(); }
-  const std::uint8_t* data() const { return m_data.data(); }
+  std::uint8_t* data() { return m_data.get(); }
+  const std::uint8_t* data() const { return m_data.get(); }
 
   void record_dmi_access(const DmiActivity& activity) override;
 
@@ -80,7 +82,12 @@ class SramBank : public sc_core::sc_module, public DmiActivitySink {
   void count(const tlm::tlm_generic_payload& trans, const sc_core::sc_time& delay);
 
   SramBankConfig m_config;
-  std::vector<std::uint8_t> m_data;
+  // Zeroed by calloc: large blocks come straight from the kernel's zero pages, so a bank costs
+  // memory only where it is written (a study elaborates dozens of boards of six 4 MiB banks).
+  struct FreeBytes {
+    void operator()(std::uint8_t* p) const { std::free(p); }
+  };
+  std::unique_ptr<std::uint8_t, FreeBytes> m_data;
   SramBankReport m_report;
 };
 

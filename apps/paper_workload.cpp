@@ -89,8 +89,12 @@ std::vector<PaperScene> prepare_paper_scenes(const std::vector<PaperRow>& rows, 
         progress("solving " + p.row.label() + " (" + std::to_string(p.row.steps) + " steps)");
       }
       try {
+        // The paper's step count at least (the replays need it), then on to our own convergence
+        // (the "ours" column), at most recorded_steps.
         SolverOptions recorded = p.solver;
-        recorded.fixed_steps = p.recorded_steps;
+        recorded.fixed_steps = 0;
+        recorded.min_steps = p.row.steps;
+        recorded.max_steps = p.recorded_steps;
         p.functional = record_functional_run(p.scene, recorded, backend, bits, 1);
         p.convergence_steps = p.functional.convergence_step;
       } catch (...) {

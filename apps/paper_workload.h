@@ -33,12 +33,9 @@ struct PaperScene {
   SolverOptions solver;  // paper-faithful, exactly row.steps steps
   RecordedRun functional;
   int convergence_steps = 0;  // steps our scene needs for 99.5% (0: more than recorded)
-  int recorded_steps = 0;
+  int recorded_steps = 0;     // at most this many steps are solved (the paper's + 10%)
 };
 
-// Solves every row once with the bit-exact `backend` at `bits`, recording 10% more steps than the
-// paper's so that the step at which 99.5% convergence is reached can be reported beside it. The
-// rows are solved in parallel, one per core; the result does not depend on it.
 // The paper's four implementations (Table 2's columns) as timing cases of one scene.
 enum class PaperImplementation { Software, OnePipe, TwoPipes, Concurrent };
 constexpr int kPaperImplementations = 4;
@@ -47,6 +44,9 @@ const char* to_string(PaperImplementation implementation);  // "software", "one_
 // driver; concurrent: 2 lanes with the concurrent driver (sec 4.3, the paper's "enhanced driver").
 TimingCase paper_timing_case(const PaperScene& scene, PaperImplementation implementation, const std::string& host);
 
+// Solves every row once with the bit-exact `backend` at `bits`, recording the paper's steps and on
+// to our own 99.5% convergence (at most 10% more), which is reported beside the paper's count. The
+// rows are solved in parallel, one per core; the result does not depend on it.
 std::vector<PaperScene> prepare_paper_scenes(const std::vector<PaperRow>& rows, const std::string& backend, int bits,
                                              const std::function<void(const std::string&)>& progress);
 

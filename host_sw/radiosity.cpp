@@ -36,6 +36,7 @@ int ProgressiveRadiosity::choose_shooter() const {
 
 bool ProgressiveRadiosity::done(int steps, double max_unshot) const {
   if (options_.fixed_steps > 0) return steps >= options_.fixed_steps;
+  if (steps < std::min(options_.min_steps, options_.max_steps)) return false;
   return steps >= options_.max_steps || max_unshot < (1.0 - options_.convergence) * initial_max_power_;
 }
 

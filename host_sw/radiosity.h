@@ -18,6 +18,8 @@ struct SolverOptions {
   double convergence = 0.995;  // paper: 99.5%
   int fixed_steps = 0;         // > 0: run exactly this many steps, ignoring convergence
   int max_steps = 10'000'000;  // safety stop; reported as not converged
+  int min_steps = 0;           // converging runs: never stop before this many steps (a recording
+                               // that timing replays of that many steps will need)
   FormFactorKind form_factor = FormFactorKind::PointToPoint;
   // true: receivers behind the shooter or facing away get no segment. false (paper-faithful):
   // every other patch gets a segment, as the paper's hardware and software tested (they exchange

@@ -87,6 +87,24 @@ TEST(Convergence, StopsAtTheFirstStepBelowTheThreshold) {
   EXPECT_GE(before.max_unshot_power, 0.01 * before.max_initial_power);
 }
 
+// min_steps keeps a converging run going (a recording must cover the steps its replays need);
+// past it, the run stops at convergence as usual, and max_steps still caps it.
+TEST(Convergence, MinStepsKeepsARunGoingButNotPastConvergence) {
+  SceneOptions scene_options;
+  scene_options.patch_levels = 1;
+  const Scene scene = prepare_scene(scene_options).scene;
+  SolverOptions options;
+  options.convergence = 0.99;
+  const int converges_at = solve(scene, options).steps;
+  options.min_steps = converges_at + 25;
+  EXPECT_EQ(solve(scene, options).steps, converges_at + 25);
+  options.min_steps = converges_at - 25;
+  EXPECT_EQ(solve(scene, options).steps, converges_at);
+  options.min_steps = converges_at + 25;
+  options.max_steps = converges_at + 5;
+  EXPECT_EQ(solve(scene, options).steps, converges_at + 5);
+}
+
 TEST(Determinism, SameInputGivesBitIdenticalOutput) {
   SceneOptions scene_options;
   scene_options.face_target = 70;

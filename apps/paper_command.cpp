@@ -197,6 +197,7 @@ int run_paper(const PaperOptions& o) {
   for (const BankVariant& v : kBankVariants) cases.push_back(bank_variant_case(scenes.back(), v, o.host));
   progress.update("simulating %zu configurations%-20s", cases.size(), "");
   const double functional_seconds = progress.seconds();
+  PlotProcess plotter("paper.py");  // loads while the single-threaded study leaves a core idle
   PaperResults r;
   r.scenes = &scenes;
   r.outcomes = run_timing_study(cases);
@@ -220,11 +221,12 @@ int run_paper(const PaperOptions& o) {
               json["summary"]["average_overall_speedup"].get<double>(), json["summary"]["largest_scene_overall_speedup"].get<double>());
   if (!o.docs_dir.empty()) {
     std::filesystem::create_directories(o.docs_dir + "/paper");
-    plot("paper.py", o.out_dir + "/paper.csv", o.docs_dir + "/paper");
+    plotter.draw(o.out_dir + "/paper.csv", o.docs_dir + "/paper");
     write_paper_markdown(o.docs_dir + "/paper.md", json, o.host);
   } else {
-    plot("paper.py", o.out_dir + "/paper.csv", o.out_dir);
+    plotter.draw(o.out_dir + "/paper.csv", o.out_dir);
   }
+  plotter.finish();
   std::printf("  wall: functional visibility and solver %.2f s, SystemC timing of %zu systems %.2f s (%.0f%%), total %.2f s\n",
               functional_seconds, cases.size(), study_seconds, 100.0 * study_seconds / progress.seconds(), progress.seconds());
   std::printf("  wrote %s/paper.json, paper.csv%s\n", o.out_dir.c_str(),

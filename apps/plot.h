@@ -2,12 +2,33 @@
 // scripts/) to draw it with a script from apps/plots/. A missing python only costs the picture.
 #pragma once
 
+#include <cstdio>
 #include <string>
 
 namespace rc {
 
-// Runs apps/plots/<script> INPUT OUTPUT (a PNG, or a folder for scripts that draw several);
-// returns false (and warns on stderr) if it could not.
+// A plot script running in a child process that takes its requests on stdin (apps/plots/entry.py).
+// Start it before the last stretch of work that leaves a core idle (a single-threaded SystemC
+// study): the interpreter and matplotlib load meanwhile, and draw() costs only the drawing.
+class PlotProcess {
+ public:
+  explicit PlotProcess(const std::string& script);
+  ~PlotProcess() { finish(); }
+  PlotProcess(const PlotProcess&) = delete;
+  PlotProcess& operator=(const PlotProcess&) = delete;
+
+  // Asks for apps/plots/<script> INPUT OUTPUT (a PNG, or a folder for scripts that draw several).
+  void draw(const std::string& csv_path, const std::string& output);
+  // Waits for every drawing; false (with a warning on stderr) if the script could not run or failed.
+  bool finish();
+
+ private:
+  std::string command_;
+  std::FILE* pipe_ = nullptr;
+  bool ok_ = true;
+};
+
+// One drawing, start to finish; returns false (and warns on stderr) if it could not.
 bool plot(const std::string& script, const std::string& csv_path, const std::string& output);
 
 }  // namespace rc

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Plot rc2000sim accuracy.csv: radiosity error and differing visibility decisions per width."""
 import csv
-import sys
+
+import entry  # apps/plots/entry.py, beside this script
 
 import matplotlib
 
@@ -33,6 +34,4 @@ def main(csv_path, png_path):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
-        sys.exit("usage: accuracy.py accuracy.csv accuracy.png")
-    main(sys.argv[1], sys.argv[2])
+    entry.run(main, "usage: accuracy.py accuracy.csv accuracy.png")

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Pareto plot of rc2000sim bench.csv: wall time and predicted hardware time against error."""
 import csv
-import sys
+
+import entry  # apps/plots/entry.py, beside this script
 
 import matplotlib
 
@@ -61,6 +62,4 @@ def main(csv_path, png_path):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
-        sys.exit("usage: bench.py bench.csv pareto.png")
-    main(sys.argv[1], sys.argv[2])
+    entry.run(main, "usage: bench.py bench.csv pareto.png")

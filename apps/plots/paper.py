@@ -2,7 +2,8 @@
 """Plots of rc2000sim paper.csv: Table 2 (model against paper) and the sec 5.6 estimates."""
 import csv
 import os
-import sys
+
+import entry  # apps/plots/entry.py, beside this script
 
 import matplotlib
 
@@ -74,6 +75,4 @@ def main(csv_path, out):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
-        sys.exit("usage: paper.py paper.csv OUTPUT_FOLDER")
-    main(sys.argv[1], sys.argv[2])
+    entry.run(main, "usage: paper.py paper.csv OUTPUT_FOLDER")

@@ -12,7 +12,8 @@ import csv
 import math
 import os
 import re
-import sys
+
+import entry  # apps/plots/entry.py, beside this script
 
 import matplotlib
 
@@ -170,6 +171,4 @@ def main(csv_path, out):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
-        sys.exit("usage: sweep.py sweep.csv OUTPUT_FOLDER")
-    main(sys.argv[1], sys.argv[2])
+    entry.run(main, "usage: sweep.py sweep.csv OUTPUT_FOLDER")

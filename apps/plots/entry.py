@@ -1,0 +1,21 @@
+"""The command line every plot script shares.
+
+  SCRIPT INPUT OUTPUT   draws once.
+  SCRIPT -              reads INPUT<TAB>OUTPUT lines from stdin and draws each: rc2000sim starts the
+                        interpreter (and matplotlib's import, ~0.4 s) while it is still computing on
+                        the other core, and sends the request when the CSV is written (apps/plot.h).
+"""
+import sys
+
+
+def run(main, usage):
+    if len(sys.argv) == 2 and sys.argv[1] == "-":
+        for line in sys.stdin:
+            fields = line.rstrip("\n").split("\t")
+            if len(fields) != 2:
+                sys.exit(f"{usage} (stdin lines: INPUT<TAB>OUTPUT)")
+            main(*fields)
+        return
+    if len(sys.argv) != 3:
+        sys.exit(usage)
+    main(sys.argv[1], sys.argv[2])

@@ -12,6 +12,14 @@ ControlRegs::ControlRegs(const sc_core::sc_module_name& name, sc_core::sc_time a
   m_regs[reg::kSourceFace / 4] = reg::kNoFace;
   in.register_b_transport(this, &ControlRegs::b_transport);
   in.register_transport_dbg(this, &ControlRegs::transport_dbg);
+  SC_HAS_PROCESS(ControlRegs);
+  SC_METHOD(acknowledge_now);
+  sensitive << m_acknowledge_event;
+  dont_initialize();
+}
+
+void ControlRegs::acknowledge_now() {
+  if (m_acknowledge) m_acknowledge();
 }
 
 std::uint32_t ControlRegs::take_start() {
@@ -50,7 +58,14 @@ void ControlRegs::write(std::uint64_t offset, std::uint32_t value, const sc_core
       std::uint32_t& status = m_regs[reg::kStatus / 4];
       const std::uint32_t clear = value & (reg::kDone | reg::kError);
       status &= ~clear;
-      if ((clear & reg::kDone) && m_acknowledge) m_acknowledge();
+      if ((clear & reg::kDone) && m_acknowledge) {
+        // At the access: now for a synced host, later for one running ahead of simulated time.
+        if (effective > sc_core::sc_time_stamp()) {
+          m_acknowledge_event.notify(effective - sc_core::sc_time_stamp());
+        } else {
+          m_acknowledge();
+        }
+      }
       return;
     }
     default:

@@ -1,10 +1,11 @@
 // The wrapper's control/status registers as a TLM target (PCI BAR0). The host reaches them through
 // the PCI bus; the wrapper (same FPGA) reads and updates them directly through the device-side API.
 //
-// Timing: every access annotates register_access_cycles device cycles. A write of START takes
-// effect at t_call + delay (the delay handed in, i.e. the bridge latency, plus this module's), the
-// time the wrapper samples it from (start_time()); the driver writes START with no pending local
-// time on an idle bus, so t_call is the time of the write.
+// Timing: every access annotates register_access_cycles device cycles. A write takes effect at
+// t_call + delay (the delay handed in: the bus's start offset and the bridge latency, plus this
+// module's): START is sampled by the wrapper from then (start_time()), and an acknowledge (DONE
+// cleared) lowers the interrupt then, so a temporally decoupled host gets the same times as a
+// synced one.
 #pragma once
 
 #include <array>
@@ -41,6 +42,7 @@ class ControlRegs : public sc_core::sc_module {
   void b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& delay);
   unsigned int transport_dbg(tlm::tlm_generic_payload& trans);
   void write(std::uint64_t offset, std::uint32_t value, const sc_core::sc_time& effective);
+  void acknowledge_now();  // an acknowledge written ahead of simulated time, at its time
 
   sc_core::sc_time m_access_time;
   std::array<std::uint32_t, reg::kSize / 4> m_regs{};
@@ -49,6 +51,7 @@ class ControlRegs : public sc_core::sc_module {
   sc_core::sc_time m_start_time = sc_core::SC_ZERO_TIME;
   sc_core::sc_event m_start_event;
   std::function<void()> m_acknowledge;
+  sc_core::sc_event m_acknowledge_event;
   std::uint64_t m_accesses = 0;
 };
 

@@ -41,11 +41,13 @@ std::size_t BoardVisibility::set_size(std::size_t s) const {
 // ---- bus access -----------------------------------------------------------------------------------
 
 void BoardVisibility::host_event(const char* name, const sc_time& from) {
-  if (trace_ != nullptr && trace_->wants(cpu_.step())) trace_->complete("host", name, from, sc_core::sc_time_stamp());
+  if (trace_ != nullptr && trace_->wants(cpu_.step())) trace_->complete("host", name, from, cpu_.now());
 }
 
+// Register accesses are temporally decoupled like the DMAs: issued at the host's local time, which
+// moves to their completion. The bus hands the registers the access time (ControlRegs), so START
+// and the acknowledge take effect when a synced host's would.
 void BoardVisibility::write_registers(std::uint64_t offset, const std::vector<std::uint32_t>& values) {
-  cpu_.sync();
   tlm::tlm_generic_payload trans;
   const auto length = static_cast<unsigned>(values.size() * 4);
   trans.set_command(tlm::TLM_WRITE_COMMAND);
@@ -54,16 +56,16 @@ void BoardVisibility::write_registers(std::uint64_t offset, const std::vector<st
   trans.set_data_length(length);
   trans.set_streaming_width(length);
   trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
-  sc_time delay = sc_core::SC_ZERO_TIME;
+  const sc_time issued = cpu_.local();
+  sc_time delay = issued;
   pci_->b_transport(trans, delay);
   if (!trans.is_response_ok()) throw std::runtime_error("register write failed: " + trans.get_response_string());
-  sc_core::wait(delay);
-  stats_.pci += delay;
+  cpu_.set_local(delay);
+  stats_.pci += delay - issued;
   ++stats_.register_accesses;
 }
 
 std::uint32_t BoardVisibility::read_register(std::uint64_t offset) {
-  cpu_.sync();
   std::uint32_t value = 0;
   tlm::tlm_generic_payload trans;
   trans.set_command(tlm::TLM_READ_COMMAND);
@@ -72,11 +74,12 @@ std::uint32_t BoardVisibility::read_register(std::uint64_t offset) {
   trans.set_data_length(4);
   trans.set_streaming_width(4);
   trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
-  sc_time delay = sc_core::SC_ZERO_TIME;
+  const sc_time issued = cpu_.local();
+  sc_time delay = issued;
   pci_->b_transport(trans, delay);
   if (!trans.is_response_ok()) throw std::runtime_error("register read failed: " + trans.get_response_string());
-  sc_core::wait(delay);
-  stats_.pci += delay;
+  cpu_.set_local(delay);
+  stats_.pci += delay - issued;
   ++stats_.register_accesses;
   return value;
 }

@@ -41,15 +41,18 @@ sc_core::sc_time PciBus::transfer_time(std::uint64_t bytes) const {
   return cycles(total, m_config.clock_period);
 }
 
-// The target sees the window-relative address; the initiator gets its own address back.
-sc_core::sc_time PciBus::forward(tlm::tlm_generic_payload& trans, const Decoded& hit) {
+// The target sees the window-relative address and, as its delay, the offset at which the
+// transaction starts on the bus; it returns that plus its own delay D_t. The initiator gets its
+// own address back.
+sc_core::sc_time PciBus::forward(tlm::tlm_generic_payload& trans, const Decoded& hit, const sc_core::sc_time& start) {
   const std::uint64_t address = trans.get_address();
-  sc_core::sc_time target_delay = sc_core::SC_ZERO_TIME;
+  const sc_core::sc_time at = start - sc_core::sc_time_stamp();
+  sc_core::sc_time target_delay = at;
   trans.set_address(hit.offset);
   out[static_cast<int>(hit.window->port)]->b_transport(trans, target_delay);
   trans.set_address(address);
   trans.set_dmi_allowed(false);  // the target may offer DMI, but not through this bus
-  return target_delay;
+  return target_delay > at ? target_delay - at : sc_core::SC_ZERO_TIME;
 }
 
 // No window claims the address: nobody asserts DEVSEL, the initiator times out.
@@ -66,9 +69,9 @@ void PciBus::b_transport(int port, tlm::tlm_generic_payload& trans, sc_core::sc_
   const sc_core::sc_time request = sc_core::sc_time_stamp() + delay;
   const std::uint64_t bytes = trans.get_data_length();
   const std::optional<Decoded> hit = m_map.decode(trans.get_address(), bytes);
-  const sc_core::sc_time occupancy =
-      hit ? std::max(transfer_time(bytes), forward(trans, *hit)) : master_abort(trans);
   const sc_core::sc_time start = std::max(request, m_bus_free_at);
+  const sc_core::sc_time occupancy =
+      hit ? std::max(transfer_time(bytes), forward(trans, *hit, start)) : master_abort(trans);
   m_bus_free_at = start + occupancy;
   PciInitiatorReport& c = counters(port);
   count(c, trans, occupancy, start - request);

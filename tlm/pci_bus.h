@@ -9,8 +9,10 @@
 //   burst_cycles(b)  = S + ceil(ceil(b / W) / E)
 //   transfer_time(n) = (sum of burst_cycles over the bursts) * P
 // ceil(x / E) takes x / E within a relative 1e-9 of an integer as that integer (see timing.h).
-// The target behind the window annotates its own delay D_t; it inserts wait states that overlap the
-// bus data phases, so the bus is occupied for
+// The target behind the window is called with the transaction's start on the bus as its delay
+// (start - sc_time_stamp(), see Arbitration), so a target with side effects (registers) can time
+// them at the access; it adds its own delay D_t, wait states that overlap the bus data phases, so
+// the bus is occupied for
 //   occupancy = max(transfer_time(n), D_t)
 // An unmapped address is a master abort: occupancy = master_abort_cycles * P and
 // TLM_ADDRESS_ERROR_RESPONSE.
@@ -98,7 +100,7 @@ class PciBus : public sc_core::sc_module {
   void end_of_simulation() override;
 
   std::uint64_t burst_cycles(std::uint64_t bytes) const;
-  sc_core::sc_time forward(tlm::tlm_generic_payload& trans, const Decoded& hit);
+  sc_core::sc_time forward(tlm::tlm_generic_payload& trans, const Decoded& hit, const sc_core::sc_time& start);
   sc_core::sc_time master_abort(tlm::tlm_generic_payload& trans);
   PciInitiatorReport& counters(int port);
   void count(PciInitiatorReport& c, const tlm::tlm_generic_payload& trans, const sc_core::sc_time& occupancy,

@@ -75,6 +75,21 @@ class ScriptedHost : public sc_core::sc_module {
     access(tlm::TLM_READ_COMMAND, offset, v);
     return v[0];
   }
+  // Temporally decoupled write: issued at local offset `local`, returns the completion's offset
+  // without waiting.
+  sc_time write_ahead(std::uint64_t offset, std::vector<std::uint32_t> values, sc_time local) {
+    tlm::tlm_generic_payload t;
+    const auto n = static_cast<unsigned>(values.size() * 4);
+    t.set_command(tlm::TLM_WRITE_COMMAND);
+    t.set_address(Rc2000::kBar0 + offset);
+    t.set_data_ptr(reinterpret_cast<unsigned char*>(values.data()));
+    t.set_data_length(n);
+    t.set_streaming_width(n);
+    t.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+    out->b_transport(t, local);
+    EXPECT_TRUE(t.is_response_ok());
+    return local;
+  }
 
  private:
   void access(tlm::tlm_command cmd, std::uint64_t offset, std::vector<std::uint32_t>& values) {

@@ -76,6 +76,52 @@ TEST(BoardPci, InterruptReachesTheHostAfterItsLatency) {
   EXPECT_EQ(board.irq.report().delivered, 2u);
 }
 
+// A host running ahead of simulated time (the driver does) writes START and the acknowledge at a
+// local offset: the pass starts, and the interrupt drops, when those writes reach the registers,
+// exactly as for a host that first waited out the offset.
+TEST(BoardPci, RegistersWrittenAheadOfTimeActAtTheirAccessTime) {
+  Rc2000 board("rc2000", round_params(1));
+  std::vector<PassRecord> passes;
+  std::vector<sc_time> issued;
+  board.wrapper().on_pass([&](const PassRecord& r) { passes.push_back(r); });
+  const sc_time ahead(3210, SC_NS);
+  ScriptedHost host("host", board, [&](ScriptedHost& h) {
+    const PassData d = crossing_pass(10, 15, 1, 5);
+    load_pass(board, d);
+    const std::vector<std::uint32_t> pass_registers = {10, 1, 0, reg::kNoFace, static_cast<std::uint32_t>(d.start.x),
+                                                       static_cast<std::uint32_t>(d.start.y),
+                                                       static_cast<std::uint32_t>(d.start.z), 10};
+    // Synced: wait until 10 us, then write. (Both hosts issue on a device clock edge, so the pass
+    // starts the same time after.)
+    sc_core::wait(sc_time(10, SC_US) - sc_core::sc_time_stamp());
+    issued.push_back(sc_core::sc_time_stamp());
+    h.write(reg::kRayCount, pass_registers);
+    h.write(reg::kControl, {reg::kStart | reg::kClear});
+    board.irq.wait_raised();
+    h.write(reg::kStatus, {reg::kDone});
+    EXPECT_FALSE(board.irq.raised());
+    // Decoupled: the same writes issued at 20 us from an earlier simulated time, without waiting.
+    ASSERT_LT(sc_core::sc_time_stamp(), sc_time(20, SC_US));
+    issued.push_back(sc_time(20, SC_US));
+    sc_time local = h.write_ahead(reg::kRayCount, pass_registers, sc_time(20, SC_US) - sc_core::sc_time_stamp());
+    local = h.write_ahead(reg::kControl, {reg::kStart | reg::kClear}, local);
+    board.irq.wait_raised();
+    const sc_time raised_at = sc_core::sc_time_stamp();
+    local = h.write_ahead(reg::kStatus, {reg::kDone}, ahead);
+    EXPECT_TRUE(board.irq.raised()) << "the acknowledge has not reached the register yet";
+    sc_core::wait(ahead);  // the write starts on the bus; bridge and register access still to go
+    EXPECT_TRUE(board.irq.raised());
+    sc_core::wait(local - ahead);  // the write has completed
+    EXPECT_FALSE(board.irq.raised());
+    EXPECT_EQ(sc_core::sc_time_stamp() - raised_at, local);
+  });
+  sc_core::sc_start();
+  ASSERT_TRUE(host.finished);
+  ASSERT_EQ(passes.size(), 2u);
+  EXPECT_EQ(passes[1].start - issued[1], passes[0].start - issued[0]);
+  EXPECT_EQ(passes[1].end - passes[1].start, passes[0].end - passes[0].start);
+}
+
 // A pass beyond the banks' capacity, or with an own-face table that claims more rays than the pass
 // has, completes at once with ERROR and an error code.
 TEST(BoardPci, WrapperReportsBadPassesAsErrors) {

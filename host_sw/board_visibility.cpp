@@ -47,41 +47,40 @@ void BoardVisibility::host_event(const char* name, const sc_time& from) {
 // Register accesses are temporally decoupled like the DMAs: issued at the host's local time, which
 // moves to their completion. The bus hands the registers the access time (ControlRegs), so START
 // and the acknowledge take effect when a synced host's would.
-void BoardVisibility::write_registers(std::uint64_t offset, const std::vector<std::uint32_t>& values) {
-  tlm::tlm_generic_payload trans;
-  const auto length = static_cast<unsigned>(values.size() * 4);
-  trans.set_command(tlm::TLM_WRITE_COMMAND);
-  trans.set_address(board::Rc2000::kBar0 + offset);
-  trans.set_data_ptr(reinterpret_cast<unsigned char*>(const_cast<std::uint32_t*>(values.data())));
-  trans.set_data_length(length);
-  trans.set_streaming_width(length);
-  trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
-  const sc_time issued = cpu_.local();
-  sc_time delay = issued;
-  pci_->b_transport(trans, delay);
-  if (!trans.is_response_ok()) throw std::runtime_error("register write failed: " + trans.get_response_string());
-  cpu_.set_local(delay);
-  stats_.pci += delay - issued;
-  ++stats_.register_accesses;
+void BoardVisibility::write_registers(std::uint64_t offset, std::initializer_list<std::uint32_t> values) {
+  if (values.size() > register_words_.size()) throw std::logic_error("register burst longer than the register file");
+  std::copy(values.begin(), values.end(), register_words_.begin());
+  register_access(tlm::TLM_WRITE_COMMAND, offset, static_cast<unsigned>(values.size()));
 }
 
 std::uint32_t BoardVisibility::read_register(std::uint64_t offset) {
-  std::uint32_t value = 0;
-  tlm::tlm_generic_payload trans;
-  trans.set_command(tlm::TLM_READ_COMMAND);
+  register_access(tlm::TLM_READ_COMMAND, offset, 1);
+  return register_words_[0];
+}
+
+// One payload for every access: nothing waits between setting it up and its return, so no other
+// access can interleave (and a payload's construction allocates its extension array).
+void BoardVisibility::register_access(tlm::tlm_command command, std::uint64_t offset, unsigned words) {
+  tlm::tlm_generic_payload& trans = register_trans_;
+  const unsigned length = words * 4;
+  trans.set_command(command);
   trans.set_address(board::Rc2000::kBar0 + offset);
-  trans.set_data_ptr(reinterpret_cast<unsigned char*>(&value));
-  trans.set_data_length(4);
-  trans.set_streaming_width(4);
+  trans.set_data_ptr(reinterpret_cast<unsigned char*>(register_words_.data()));
+  trans.set_data_length(length);
+  trans.set_streaming_width(length);
+  trans.set_byte_enable_ptr(nullptr);
+  trans.set_dmi_allowed(false);
   trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
   const sc_time issued = cpu_.local();
   sc_time delay = issued;
   pci_->b_transport(trans, delay);
-  if (!trans.is_response_ok()) throw std::runtime_error("register read failed: " + trans.get_response_string());
+  if (!trans.is_response_ok()) {
+    throw std::runtime_error(std::string("register ") + (command == tlm::TLM_WRITE_COMMAND ? "write" : "read") +
+                             " failed: " + trans.get_response_string());
+  }
   cpu_.set_local(delay);
   stats_.pci += delay - issued;
   ++stats_.register_accesses;
-  return value;
 }
 
 void BoardVisibility::dma(tlmx::DmaDirection direction, void* host, std::uint64_t address, std::uint64_t bytes,

@@ -16,7 +16,9 @@
 // Call load_faces/submit/collect from the host SC_THREAD (they wait for the bus and the interrupt).
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <initializer_list>
 #include <map>
 #include <string>
 #include <vector>
@@ -108,8 +110,9 @@ class BoardVisibility : public VisibilityBackend {
   void on_pass(const board::PassRecord& record);
 
   // Bus access from the host thread; each syncs the host's local time first.
-  void write_registers(std::uint64_t offset, const std::vector<std::uint32_t>& values);
+  void write_registers(std::uint64_t offset, std::initializer_list<std::uint32_t> values);
   std::uint32_t read_register(std::uint64_t offset);
+  void register_access(tlm::tlm_command command, std::uint64_t offset, unsigned words);  // register_words_
   // no_data: timed and counted like any transfer, bytes not moved (timing replay of blank buffers).
   void dma(tlmx::DmaDirection direction, void* host, std::uint64_t address, std::uint64_t bytes, const char* what,
            bool no_data = false);
@@ -148,6 +151,8 @@ class BoardVisibility : public VisibilityBackend {
   std::size_t next_pass_ = 0;
   board::RaySplit split_;              // of the batch in the ray banks
   board::PassRecord last_record_;
+  tlm::tlm_generic_payload register_trans_;
+  std::array<std::uint32_t, 8> register_words_{};  // the longest burst: RAY_COUNT..MASK_START
   std::vector<std::vector<std::uint8_t>> images_;
   static constexpr std::size_t kNoBlankImages = ~std::size_t{0};
   std::size_t blank_images_rays_ = kNoBlankImages;  // images_ are blank ones for a batch of this size

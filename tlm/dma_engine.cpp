@@ -42,9 +42,9 @@ tlm::tlm_response_status DmaEngine::burst(tlm::tlm_generic_payload& trans, const
 }
 
 template <class Sync>
-DmaResult DmaEngine::run_bursts(const DmaRequest& request, sc_core::sc_time& local, Sync&& sync) {
+DmaResult DmaEngine::run_bursts(tlm::tlm_generic_payload& trans, const DmaRequest& request, sc_core::sc_time& local,
+                                Sync&& sync) {
   if (request.host == nullptr && request.bytes != 0) SC_REPORT_ERROR(kMsgType, "transfer without a host buffer");
-  tlm::tlm_generic_payload trans;
   if (request.no_data) trans.set_extension(&m_no_data);
   DmaResult result;
   result.start = sc_core::sc_time_stamp() + local;
@@ -63,7 +63,8 @@ DmaResult DmaEngine::transfer(const DmaRequest& request) {
   tlm_utils::tlm_quantumkeeper keeper;  // per call: transfer() may run in several threads at once
   keeper.reset();
   sc_core::sc_time local = sc_core::SC_ZERO_TIME;
-  DmaResult result = run_bursts(request, local, [&](sc_core::sc_time& t) {
+  tlm::tlm_generic_payload trans;  // per call too: the keeper's syncs let other threads in
+  DmaResult result = run_bursts(trans, request, local, [&](sc_core::sc_time& t) {
     keeper.set(t);
     if (keeper.need_sync()) keeper.sync();
     t = keeper.get_local_time();
@@ -76,7 +77,9 @@ DmaResult DmaEngine::transfer(const DmaRequest& request) {
 }
 
 DmaResult DmaEngine::transfer(const DmaRequest& request, sc_core::sc_time& local) {
-  DmaResult result = run_bursts(request, local, [](sc_core::sc_time&) {});
+  // Nothing waits until it returns, so one payload serves every decoupled call (constructing one
+  // allocates its extension array).
+  DmaResult result = run_bursts(m_decoupled_trans, request, local, [](sc_core::sc_time&) {});
   result.end = sc_core::sc_time_stamp() + local;
   count(request, result);
   return result;

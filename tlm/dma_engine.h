@@ -91,11 +91,13 @@ class DmaEngine : public sc_core::sc_module {
                                  sc_core::sc_time& local);
   // The bursts, from local time `local`; `sync` is called between bursts when a quantum keeper asks.
   template <class Sync>
-  DmaResult run_bursts(const DmaRequest& request, sc_core::sc_time& local, Sync&& sync);
+  DmaResult run_bursts(tlm::tlm_generic_payload& trans, const DmaRequest& request, sc_core::sc_time& local,
+                       Sync&& sync);
   void count(const DmaRequest& request, const DmaResult& result);
   void end_of_simulation() override;
 
   DmaConfig m_config;
+  tlm::tlm_generic_payload m_decoupled_trans;
   NoDataExtension m_no_data;  // attached to the bursts of no_data requests, never owned by a payload
   std::deque<DmaRequest> m_queue;
   bool m_worker_busy = false;

@@ -39,7 +39,7 @@ void CycleWrapper::on_edge() {
 void CycleWrapper::begin() {
   m_running = true;
   begin_pass();
-  m_in = read_inputs();
+  read_inputs(m_in);
   m_record = PassRecord{};
   m_record.start = sc_core::sc_time_stamp();
   m_record.lane_rays.assign(m_layout.lanes, 0);

@@ -31,24 +31,42 @@ void FastWrapper::run() {
     if (m_regs.start_time() > sc_core::sc_time_stamp()) sc_core::wait(m_regs.start_time() - sc_core::sc_time_stamp());
     const sc_core::sc_time start = next_edge(m_regs.start_time());
     begin_pass();
-    const PassInputs in = read_inputs();
-    const PassTiming timing = pass_timing(m_layout, m_timing, in.split, in.faces, in.clear);
+    PassInputs& in = m_in;
+    read_inputs(in);
+    const TimedPass& timed = timed_pass(in);
     compute(in);
-    PassRecord record;
+    PassRecord& record = m_record;
     record.start = start;
-    record.cycles = timing.total;
-    record.end = start + tlmx::cycles(timing.total, m_timing.device_period);
+    record.cycles = timed.timing.total;
+    record.end = start + tlmx::cycles(timed.timing.total, m_timing.device_period);
     record.rays = in.rays;
     record.faces = in.faces;
     record.error = in.error;
-    record.limit = timing.limit;
-    record.lane_rays = lane_rays_per_face(m_layout, in.split);
-    for (std::uint64_t& r : record.lane_rays) r *= in.faces;
+    record.limit = timed.timing.limit;
+    record.lane_rays = timed.lane_rays;
     sc_core::wait(record.end - sc_core::sc_time_stamp());  // the pass: one timed wait
     if (!m_timing_only) write_results(in);
-    report_traffic(timing.banks);
+    report_traffic(timed.timing.banks);
     complete_pass(record);
   }
+}
+
+// A pass's timing depends only on its shape; a run's passes mostly share one, so the last few
+// shapes are kept (their PassTiming and lane totals hold vectors and a string).
+const FastWrapper::TimedPass& FastWrapper::timed_pass(const PassInputs& in) {
+  for (const TimedPass& t : m_timed) {
+    if (t.rays == in.rays && t.faces == in.faces && t.clear == in.clear) return t;
+  }
+  if (m_timed.size() >= kTimedPasses) m_timed.erase(m_timed.begin());
+  TimedPass t;
+  t.rays = in.rays;
+  t.faces = in.faces;
+  t.clear = in.clear;
+  t.timing = pass_timing(m_layout, m_timing, in.split, in.faces, in.clear);
+  t.lane_rays = lane_rays_per_face(m_layout, in.split);
+  for (std::uint64_t& r : t.lane_rays) r *= in.faces;
+  m_timed.push_back(std::move(t));
+  return m_timed.back();
 }
 
 // Face-outer, ray-inner over the end points read back from the X, Y, Z banks. The shooter's face

@@ -19,11 +19,23 @@ class FastWrapper : public WrapperBase {
               std::vector<std::uint64_t> bank_addresses, WrapperSignals signals = {});
 
  private:
+  struct TimedPass {
+    std::uint64_t rays = 0, faces = 0;
+    bool clear = false;
+    PassTiming timing;
+    std::vector<std::uint64_t> lane_rays;  // over all faces of the pass
+  };
+  static constexpr std::size_t kTimedPasses = 4;
+
   void run();
+  const TimedPass& timed_pass(const PassInputs& in);
   void compute(const PassInputs& in);
   void write_results(const PassInputs& in);
 
   // Scratch kept between passes: end points in pass order and the blocked flags.
+  PassInputs m_in;       // the current pass's, reused from pass to pass
+  PassRecord m_record;
+  std::vector<TimedPass> m_timed;  // the last kTimedPasses pass shapes and their timing
   std::vector<std::int64_t> m_x, m_y, m_z;
   std::vector<std::uint8_t> m_blocked;
 };

@@ -89,7 +89,9 @@ class WrapperBase : public sc_core::sc_module {
 
  protected:
   std::uint8_t* bank(unsigned b);  // DMI pointer (acquired on first use)
-  PassInputs read_inputs();        // registers -> PassInputs, with error checks
+  // Registers -> `in`, with error checks. Fills the caller's object so that a wrapper reading one
+  // pass after another reuses its vectors; the ray split is kept for the last ray count.
+  void read_inputs(PassInputs& in);
   // The own-face table in its bank: count(f) is how many of the pass's rays end on face f of the set.
   struct OwnFaceTable {
     const std::uint8_t* words;
@@ -105,6 +107,8 @@ class WrapperBase : public sc_core::sc_module {
   void begin_pass();
   void complete_pass(const PassRecord& record);
   void report_traffic(const std::vector<BankTraffic>& traffic);
+
+  const RaySplit& split_for(std::uint64_t rays);  // split_rays, remembered for the last ray count
 
   BankLayout m_layout;
   WrapperTiming m_timing;
@@ -124,6 +128,8 @@ class WrapperBase : public sc_core::sc_module {
   WrapperSignals m_signals;
   WrapperStats m_stats;
   std::function<void(const PassRecord&)> m_on_pass;
+  std::uint64_t m_split_rays = ~std::uint64_t{0};  // split_for's memo: ray count and its split
+  RaySplit m_split;
 };
 
 }  // namespace rc::board

@@ -270,7 +270,10 @@ void BoardVisibility::ask_oracle(const SegmentBatch& batch) {
 
 void BoardVisibility::upload_rays(std::size_t batch) {
   const std::size_t first = batch_first(batch);
-  split_ = board::split_rays(layout_, batch_size(batch));
+  if (split_rays_ != batch_size(batch)) {  // steps mostly have the same size
+    split_ = board::split_rays(layout_, batch_size(batch));
+    split_rays_ = batch_size(batch);
+  }
   if (!timing_only_) {
     board::pack_rays(layout_, split_, x_.data() + first, y_.data() + first, z_.data() + first, images_);
     blank_images_rays_ = kNoBlankImages;

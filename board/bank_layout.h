@@ -80,6 +80,25 @@ struct RaySplit {
 };
 RaySplit split_rays(const BankLayout& layout, std::uint64_t rays);
 
+// split_rays for one layout, remembered for the last ray count: a run's passes mostly share one,
+// and a split holds four vectors. The host (packing) and the wrapper (reading) each keep one.
+class RaySplitMemo {
+ public:
+  explicit RaySplitMemo(const BankLayout& layout) : m_layout(&layout) {}
+  const RaySplit& operator()(std::uint64_t rays) {
+    if (rays != m_rays) {
+      m_split = split_rays(*m_layout, rays);
+      m_rays = rays;
+    }
+    return m_split;
+  }
+
+ private:
+  const BankLayout* m_layout;
+  std::uint64_t m_rays = ~std::uint64_t{0};
+  RaySplit m_split;
+};
+
 struct WordAddress {
   unsigned bank;
   std::uint64_t word;

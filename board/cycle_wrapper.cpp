@@ -89,7 +89,7 @@ void CycleWrapper::controller() {
         const bool mask_ready = !m_layout.mask_bank || allowed(m_phase_cycle) >= lr + 1;
         if (!(face_ready && mask_ready)) return;
         m_face_record = face_record(m_face);  // the words have arrived: latch them
-        m_mask_hi = m_mask_lo + mask_count(m_face);
+        m_mask_hi = m_mask_lo + own_face_table().count(m_face);
         m_traffic[m_layout.face_bank].reads += words;
         m_traffic[m_layout.face_bank].busy_bank_cycles += lr + words;
         if (m_layout.mask_bank) {

@@ -88,8 +88,9 @@ void FastWrapper::compute(const PassInputs& in) {
     for (unsigned b : g.banks) data[b] = bank(b);
   unpack_rays(m_layout, in.split, data, m_x.data(), m_y.data(), m_z.data());
   std::uint64_t lo = in.mask_start;
+  const OwnFaceTable table = own_face_table();
   for (std::uint64_t f = 0; f < in.faces; ++f) {
-    const std::uint64_t hi = lo + mask_count(f);
+    const std::uint64_t hi = lo + table.count(f);
     if (in.face_first + f != in.source_face) {
       const pipeline::FaceRecord face = face_record(f);
       pipeline::occlude_face(face, in.start, m_x.data(), m_y.data(), m_z.data(), lo, m_layout.bits, m_blocked.data());

@@ -59,14 +59,6 @@ pipeline::FaceRecord WrapperBase::face_record(std::uint64_t face_in_set) {
   return face_record_from_words(words, m_layout.word_bits);
 }
 
-const RaySplit& WrapperBase::split_for(std::uint64_t rays) {
-  if (rays != m_split_rays) {
-    m_split = split_rays(m_layout, rays);
-    m_split_rays = rays;
-  }
-  return m_split;
-}
-
 void WrapperBase::read_inputs(PassInputs& in) {
   in.error = reg::kOk;
   in.clear = (m_regs.take_start() & reg::kClear) != 0;
@@ -76,7 +68,7 @@ void WrapperBase::read_inputs(PassInputs& in) {
   in.source_face = m_regs.value(reg::kSourceFace);
   in.mask_start = m_regs.value(reg::kMaskStart);
   in.start = {m_regs.value(reg::kStartX), m_regs.value(reg::kStartY), m_regs.value(reg::kStartZ)};
-  in.split = split_for(in.rays);
+  in.split = m_split(in.rays);
   if (!in.split.fits) {
     in.error = reg::kTooManyRays;
   } else if (in.faces > m_layout.max_faces_per_set) {
@@ -90,7 +82,7 @@ void WrapperBase::read_inputs(PassInputs& in) {
   const std::int64_t limit = std::int64_t(1) << m_layout.bits;
   if (in.error == reg::kOk && (in.start.x >= limit || in.start.y >= limit || in.start.z >= limit))
     in.error = reg::kBadStartPoint;
-  if (in.error != reg::kOk) in.rays = in.faces = 0, in.split = split_for(0);
+  if (in.error != reg::kOk) in.rays = in.faces = 0, in.split = m_split(0);
 }
 
 void WrapperBase::begin_pass() {

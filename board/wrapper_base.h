@@ -102,13 +102,10 @@ class WrapperBase : public sc_core::sc_module {
     }
   };
   OwnFaceTable own_face_table();
-  std::uint32_t mask_count(std::uint64_t face_in_set) { return own_face_table().count(face_in_set); }
   pipeline::FaceRecord face_record(std::uint64_t face_in_set);
   void begin_pass();
   void complete_pass(const PassRecord& record);
   void report_traffic(const std::vector<BankTraffic>& traffic);
-
-  const RaySplit& split_for(std::uint64_t rays);  // split_rays, remembered for the last ray count
 
   BankLayout m_layout;
   WrapperTiming m_timing;
@@ -128,8 +125,7 @@ class WrapperBase : public sc_core::sc_module {
   WrapperSignals m_signals;
   WrapperStats m_stats;
   std::function<void(const PassRecord&)> m_on_pass;
-  std::uint64_t m_split_rays = ~std::uint64_t{0};  // split_for's memo: ray count and its split
-  RaySplit m_split;
+  RaySplitMemo m_split{m_layout};
 };
 
 }  // namespace rc::board

@@ -270,15 +270,12 @@ void BoardVisibility::ask_oracle(const SegmentBatch& batch) {
 
 void BoardVisibility::upload_rays(std::size_t batch) {
   const std::size_t first = batch_first(batch);
-  if (split_rays_ != batch_size(batch)) {  // steps mostly have the same size
-    split_ = board::split_rays(layout_, batch_size(batch));
-    split_rays_ = batch_size(batch);
-  }
+  const board::RaySplit& split = split_(batch_size(batch));
   if (!timing_only_) {
-    board::pack_rays(layout_, split_, x_.data() + first, y_.data() + first, z_.data() + first, images_);
+    board::pack_rays(layout_, split, x_.data() + first, y_.data() + first, z_.data() + first, images_);
     blank_images_rays_ = kNoBlankImages;
   } else if (blank_images_rays_ != batch_size(batch)) {  // only their sizes matter: made once per size
-    board::blank_ray_images(layout_, split_, images_);
+    board::blank_ray_images(layout_, split, images_);
     blank_images_rays_ = batch_size(batch);
   }
   for (unsigned b = 0; b < images_.size(); ++b) {
@@ -347,14 +344,15 @@ void BoardVisibility::finish_pass(const Pass& pass) {
 }
 
 void BoardVisibility::read_results(std::size_t batch) {
+  const board::RaySplit& split = split_(batch_size(batch));
   if (timing_only_) {
-    buffer_.resize(split_.result_words * word_bytes_);  // moved without data: contents immaterial
+    buffer_.resize(split.result_words * word_bytes_);  // moved without data: contents immaterial
   } else {
-    buffer_.assign(split_.result_words * word_bytes_, 0);
+    buffer_.assign(split.result_words * word_bytes_, 0);
   }
   dma(tlmx::DmaDirection::to_host, buffer_.data(), board_.bank_pci_address(layout_.result_bank), buffer_.size(),
       "results", timing_only_);
-  if (!timing_only_) board::unpack_results(layout_, split_, buffer_.data(), blocked_.data() + batch_first(batch));
+  if (!timing_only_) board::unpack_results(layout_, split, buffer_.data(), blocked_.data() + batch_first(batch));
   cpu_.charge(DriverWork::ResultUnpack, batch_size(batch));
 }
 

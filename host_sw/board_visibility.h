@@ -149,8 +149,7 @@ class BoardVisibility : public VisibilityBackend {
   bool timing_only_ = false;                 // the current step came from submit_timing_only
   std::vector<Pass> passes_;
   std::size_t next_pass_ = 0;
-  board::RaySplit split_;              // of the batch in the ray banks
-  std::size_t split_rays_ = ~std::size_t{0};  // the ray count split_ is for
+  board::RaySplitMemo split_{layout_};  // of the current batch in the ray banks
   board::PassRecord last_record_;
   tlm::tlm_generic_payload register_trans_;
   std::array<std::uint32_t, 8> register_words_{};  // the longest burst: RAY_COUNT..MASK_START

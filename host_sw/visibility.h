@@ -29,12 +29,6 @@ struct SegmentBatch {
 
   std::size_t size() const { return ends.size(); }
   bool is_needed(std::size_t segment) const { return needed.empty() || needed[segment] != 0; }
-  std::size_t needed_count() const {
-    if (needed.empty()) return size();
-    std::size_t n = 0;
-    for (std::uint8_t b : needed) n += b != 0;
-    return n;
-  }
 };
 
 // Own-face rule (every backend follows it): a segment is never tested against its source face or

@@ -8,17 +8,12 @@
 
 #include "host_sw/board_run.h"
 #include "host_sw/fixed_visibility.h"
-#include "scenes/prepare.h"
+#include "common/simple_scenes.h"
 
 namespace rc::test {
 
 // The paper's smallest scene (Table 2, first row): the Cornell Box refined to 70 faces, 280 patches.
-inline Scene small_cornell_box() {
-  SceneOptions o;
-  o.face_target = 70;
-  o.patch_levels = 1;
-  return prepare_scene(o).scene;
-}
+inline Scene small_cornell_box() { return cornell_box(1, 70); }
 
 inline SolverOptions steps(int n) {
   SolverOptions s;

@@ -5,10 +5,21 @@
 #include <vector>
 
 #include "scenes/normalise.h"
+#include "scenes/prepare.h"
 #include "scenes/scene_builder.h"
 #include "scenes/subdivide.h"
 
 namespace rc::test {
+
+// The embedded Cornell Box: its own faces (face_target 0) or refined to face_target faces and each
+// split into 4^face_levels, then every face into 4^patch_levels patches.
+inline Scene cornell_box(int patch_levels, int face_target = 0, int face_levels = 0) {
+  SceneOptions o;
+  o.face_target = face_target;
+  o.face_levels = face_levels;
+  o.patch_levels = patch_levels;
+  return prepare_scene(o).scene;
+}
 
 // Axis-aligned unit-square corners wound so that (v1-v0) x (v2-v0) = `normal` (an axis vector).
 inline std::vector<Vec3> square(const Vec3& origin, const Vec3& a, const Vec3& b) {

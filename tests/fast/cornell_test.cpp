@@ -6,18 +6,10 @@
 
 #include "fast/fast_test_support.h"
 #include "host_sw/radiosity.h"
-#include "scenes/prepare.h"
+#include "common/simple_scenes.h"
 
 namespace rc {
 namespace {
-
-Scene cornell(int face_levels, int patch_levels) {
-  SceneOptions options;
-  options.face_target = 70;
-  options.face_levels = face_levels;
-  options.patch_levels = patch_levels;
-  return prepare_scene(options).scene;
-}
 
 // Runs the fast backend and the brute force side by side on the solver's own batches, counting
 // differing flags; the solver follows the fast backend's answers.
@@ -66,13 +58,13 @@ void expect_every_step_matches(const Scene& scene, int steps, int bits, int thre
 
 TEST(FastCornell, EveryStepMatchesBruteForceOnThePaperSceneSizes) {
   for (int bits : {7, 11, 15, 23, 31}) {
-    expect_every_step_matches(cornell(0, 1), 385, bits, 2);  // 70 faces, 280 patches
-    expect_every_step_matches(cornell(1, 1), 300, bits, 2);  // 280 faces, 1120 patches
+    expect_every_step_matches(test::cornell_box(1, 70, 0), 385, bits, 2);  // 70 faces, 280 patches
+    expect_every_step_matches(test::cornell_box(1, 70, 1), 300, bits, 2);  // 280 faces, 1120 patches
   }
 }
 
 TEST(FastCornell, LargestSceneFirstStepsMatchBruteForce) {
-  const Scene scene = cornell(2, 1);  // 1120 faces, 4480 patches
+  const Scene scene = test::cornell_box(1, 70, 2);  // 1120 faces, 4480 patches
   ASSERT_EQ(scene.faces.size(), 1120u);
   ASSERT_EQ(scene.patches.size(), 4480u);
   for (int bits : {7, 15, 31}) expect_every_step_matches(scene, 25, bits, 3);
@@ -84,7 +76,7 @@ bool same_bits(const std::vector<Spectrum>& a, const std::vector<Spectrum>& b) {
 
 // Two independent solutions, each following its own backend's answers: identical to the bit.
 TEST(FastCornell, RadiositySolutionIsBitIdenticalToBruteForce) {
-  const Scene scene = cornell(1, 1);  // 280 faces, 1120 patches
+  const Scene scene = test::cornell_box(1, 70, 1);  // 280 faces, 1120 patches
   for (int bits : {7, 11, 15, 23, 31}) {
     SolverOptions options;
     options.fixed_steps = 400;
@@ -105,7 +97,7 @@ TEST(FastCornell, RadiositySolutionIsBitIdenticalToBruteForce) {
 
 // Run to convergence on the smallest paper scene, as the paper does.
 TEST(FastCornell, ConvergedSolutionIsBitIdenticalToBruteForce) {
-  const Scene scene = cornell(0, 1);  // 70 faces, 280 patches
+  const Scene scene = test::cornell_box(1, 70, 0);  // 70 faces, 280 patches
   FixedPointVisibility brute(15);
   FastFixedVisibility fast(15, 0);
   const SolverResult expected = ProgressiveRadiosity(scene, brute, SolverOptions{}).run();

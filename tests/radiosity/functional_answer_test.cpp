@@ -7,16 +7,10 @@
 #include "host_sw/radiosity.h"
 #include "host_sw/shooter_memo_visibility.h"
 #include "host_sw/visibility_factory.h"
-#include "scenes/prepare.h"
+#include "common/simple_scenes.h"
 
 namespace rc {
 namespace {
-
-Scene cornell(int patch_levels) {
-  SceneOptions o;
-  o.patch_levels = patch_levels;
-  return prepare_scene(o).scene;
-}
 
 void expect_same_solution(const SolverResult& a, const SolverResult& b) {
   ASSERT_EQ(a.radiosity.size(), b.radiosity.size());
@@ -33,7 +27,7 @@ void expect_same_solution(const SolverResult& a, const SolverResult& b) {
 // Paper-faithful (a segment to every patch) and culled, converged: the brute-force pipeline model
 // answering everything, against the same model behind both wrappers, and the culled kernel too.
 TEST(FunctionalAnswer, SkippingAndReuseChangeNoResult) {
-  const Scene scene = cornell(1);
+  const Scene scene = test::cornell_box(1);
   for (const bool cull : {false, true}) {
     SCOPED_TRACE(cull ? "culled" : "paper-faithful");
     SolverOptions options;

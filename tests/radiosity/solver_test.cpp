@@ -3,7 +3,6 @@
 #include "common/simple_scenes.h"
 #include "host_sw/float_visibility.h"
 #include "host_sw/radiosity.h"
-#include "scenes/prepare.h"
 
 namespace rc {
 namespace {
@@ -51,9 +50,7 @@ TEST(WhiteFurnace, ConvergesToEOverOneMinusRho) {
 }
 
 TEST(EnergyBalance, EmittedEqualsAbsorbedPlusEscapingPlusUnshot) {
-  SceneOptions scene_options;
-  scene_options.patch_levels = 2;
-  const Scene scene = prepare_scene(scene_options).scene;
+  const Scene scene = test::cornell_box(2);
   for (FormFactorKind kind : {FormFactorKind::PointToPoint, FormFactorKind::Disc}) {
     SolverOptions options;
     options.form_factor = kind;
@@ -71,9 +68,7 @@ TEST(EnergyBalance, EmittedEqualsAbsorbedPlusEscapingPlusUnshot) {
 }
 
 TEST(Convergence, StopsAtTheFirstStepBelowTheThreshold) {
-  SceneOptions scene_options;
-  scene_options.patch_levels = 1;
-  const Scene scene = prepare_scene(scene_options).scene;
+  const Scene scene = test::cornell_box(1);
   SolverOptions options;
   options.convergence = 0.99;
   const SolverResult converged = solve(scene, options);
@@ -90,9 +85,7 @@ TEST(Convergence, StopsAtTheFirstStepBelowTheThreshold) {
 // min_steps keeps a converging run going (a recording must cover the steps its replays need);
 // past it, the run stops at convergence as usual, and max_steps still caps it.
 TEST(Convergence, MinStepsKeepsARunGoingButNotPastConvergence) {
-  SceneOptions scene_options;
-  scene_options.patch_levels = 1;
-  const Scene scene = prepare_scene(scene_options).scene;
+  const Scene scene = test::cornell_box(1);
   SolverOptions options;
   options.convergence = 0.99;
   const int converges_at = solve(scene, options).steps;
@@ -106,10 +99,7 @@ TEST(Convergence, MinStepsKeepsARunGoingButNotPastConvergence) {
 }
 
 TEST(Determinism, SameInputGivesBitIdenticalOutput) {
-  SceneOptions scene_options;
-  scene_options.face_target = 70;
-  scene_options.patch_levels = 1;
-  const Scene scene = prepare_scene(scene_options).scene;
+  const Scene scene = test::cornell_box(1, 70);
   const SolverResult a = solve(scene, {}), b = solve(scene, {});
   ASSERT_EQ(a.steps, b.steps);
   ASSERT_EQ(a.radiosity.size(), b.radiosity.size());
@@ -138,9 +128,7 @@ namespace {
 // Paper-faithful mode sends segments to receivers that exchange nothing; their form factor is 0,
 // so the solution is the same to the bit, only the work differs.
 TEST(PaperFaithful, SegmentsToEveryPatchChangeNoResult) {
-  SceneOptions scene_options;
-  scene_options.patch_levels = 1;
-  const Scene scene = prepare_scene(scene_options).scene;
+  const Scene scene = test::cornell_box(1);
   SolverOptions culled;
   culled.fixed_steps = 150;
   SolverOptions faithful = culled;

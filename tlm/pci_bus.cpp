@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "tlm/programmed_io_extension.h"
 #include "tlm/timing.h"
 
 namespace rc::tlmx {
@@ -41,6 +42,15 @@ sc_core::sc_time PciBus::transfer_time(std::uint64_t bytes) const {
   return cycles(total, m_config.clock_period);
 }
 
+sc_core::sc_time PciBus::programmed_io_time(std::uint64_t bytes, unsigned access_bytes, bool read,
+                                            const sc_core::sc_time& read_round_trip) const {
+  if (access_bytes == 0) SC_REPORT_ERROR(kMsgType, "programmed I/O needs access_bytes > 0");
+  const std::uint64_t accesses = ceil_div(bytes, access_bytes);
+  const sc_core::sc_time one = cycles(burst_cycles(access_bytes), m_config.clock_period) +
+                               (read ? read_round_trip : sc_core::SC_ZERO_TIME);
+  return sc_core::sc_time::from_value(one.value() * accesses);
+}
+
 // The target sees the window-relative address and, as its delay, the offset at which the
 // transaction starts on the bus; it returns that plus its own delay D_t. The initiator gets its
 // own address back.
@@ -70,8 +80,11 @@ void PciBus::b_transport(int port, tlm::tlm_generic_payload& trans, sc_core::sc_
   const std::uint64_t bytes = trans.get_data_length();
   const std::optional<Decoded> hit = m_map.decode(trans.get_address(), bytes);
   const sc_core::sc_time start = std::max(request, m_bus_free_at);
-  const sc_core::sc_time occupancy =
-      hit ? std::max(transfer_time(bytes), forward(trans, *hit, start)) : master_abort(trans);
+  const ProgrammedIoExtension* pio = trans.get_extension<ProgrammedIoExtension>();
+  const sc_core::sc_time bus_time =
+      pio != nullptr ? programmed_io_time(bytes, pio->access_bytes, trans.is_read(), pio->read_round_trip)
+                     : transfer_time(bytes);
+  const sc_core::sc_time occupancy = hit ? std::max(bus_time, forward(trans, *hit, start)) : master_abort(trans);
   m_bus_free_at = start + occupancy;
   PciInitiatorReport& c = counters(port);
   count(c, trans, occupancy, start - request);

@@ -14,6 +14,8 @@
 // them at the access; it adds its own delay D_t, wait states that overlap the bus data phases, so
 // the bus is occupied for
 //   occupancy = max(transfer_time(n), D_t)
+// A payload with a ProgrammedIoExtension (programmed_io_extension.h) is n single-word accesses:
+//   transfer_time = n * (burst_cycles(access_bytes) * P + (read ? read_round_trip : 0))
 // An unmapped address is a master abort: occupancy = master_abort_cycles * P and
 // TLM_ADDRESS_ERROR_RESPONSE.
 //
@@ -89,6 +91,9 @@ class PciBus : public sc_core::sc_module {
 
   // Bus time of an n-byte transaction, without target wait states or arbitration (formula above).
   sc_core::sc_time transfer_time(std::uint64_t bytes) const;
+  // Bus time of n bytes of programmed I/O (formula above).
+  sc_core::sc_time programmed_io_time(std::uint64_t bytes, unsigned access_bytes, bool read,
+                                      const sc_core::sc_time& read_round_trip) const;
 
   PciBusReport report() const;
   std::string summary() const;

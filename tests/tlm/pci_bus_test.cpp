@@ -7,6 +7,7 @@
 
 #include "tests/tlm/tlm_test_support.h"
 #include "tlm/pci_bus.h"
+#include "tlm/programmed_io_extension.h"
 #include "tlm/sram_bank.h"
 #include "tlm/timing.h"
 
@@ -153,6 +154,51 @@ TEST(PciBus, ArbitrationUsesLocalTimeAndCallOrder) {
   EXPECT_EQ(r.initiators.at(1).wait, sc_time(1269, SC_NS));
   EXPECT_EQ(r.initiators.at(1).busy, sc_time(540, SC_NS));
   EXPECT_EQ(r.bus_free_at, sc_time(2001 + 270, SC_NS));
+}
+
+// Programmed I/O: a 20-byte payload of 4-byte accesses is 5 single-data-phase transactions
+// (8 setup + 1 data cycles of 30 ns each); a read adds its round trip to every access. The data
+// really moves, in one call to the target.
+TEST(PciBus, ProgrammedIoIsOneTransactionPerWord) {
+  PciBus bus("bus");
+  SramBank bank("bank", small_bank());
+  std::array<std::uint32_t, 5> out{1, 2, 3, 4, 5}, in{};
+  sc_time write_done, read_done, read_start;
+  ScriptedInitiator host("host", [&](ScriptedInitiator& self) {
+    ProgrammedIoExtension pio;
+    pio.access_bytes = 4;
+    pio.read_round_trip = sc_time(700, SC_NS);
+    auto transfer = [&](tlm::tlm_command command, void* data, sc_time& delay) {
+      tlm::tlm_generic_payload trans;
+      trans.set_command(command);
+      trans.set_address(0x40);
+      trans.set_data_ptr(static_cast<unsigned char*>(data));
+      trans.set_data_length(20);
+      trans.set_streaming_width(20);
+      trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+      trans.set_extension(&pio);
+      self.out->b_transport(trans, delay);
+      trans.clear_extension(&pio);
+      EXPECT_TRUE(trans.is_response_ok());
+    };
+    sc_time delay = SC_ZERO_TIME;
+    transfer(tlm::TLM_WRITE_COMMAND, out.data(), delay);
+    write_done = delay;
+    read_start = delay;
+    transfer(tlm::TLM_READ_COMMAND, in.data(), delay);
+    read_done = delay;
+  });
+  host.out.bind(bus.in);
+  bus.out.bind(bank.in);
+  bus.map(0, bank.capacity(), 0, "bank");
+  sc_core::sc_start();
+
+  EXPECT_EQ(write_done, sc_time(5 * 9 * 30, SC_NS));                        // posted writes: bus time only
+  EXPECT_EQ(read_done - read_start, sc_time(5 * (9 * 30 + 700), SC_NS));    // non-posted: plus the round trips
+  EXPECT_EQ(bus.programmed_io_time(20, 4, false, sc_time(700, SC_NS)), sc_time(1350, SC_NS));
+  EXPECT_EQ(bus.programmed_io_time(6, 4, true, sc_time(700, SC_NS)), sc_time(2 * 970, SC_NS));  // ceil(6 / 4) = 2
+  EXPECT_EQ(in, out);
+  EXPECT_EQ(bus.report().total.transactions, 2u);  // two calls: the target sees each buffer once
 }
 
 }  // namespace

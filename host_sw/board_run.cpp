@@ -27,7 +27,7 @@ const sc_core::sc_time kHostQuantum(100, sc_core::SC_MS);
 BoardSetup make_board_setup(const BoardRunOptions& o) {
   const board::DeviceProfile device = board::find_device_profile(o.device);
   BoardSetup s;
-  s.host = find_host_profile(o.host);
+  s.host = o.host_profile ? *o.host_profile : find_host_profile(o.host);
   board::BoardChoices c;
   c.lanes = o.lanes;
   c.banks = o.banks;
@@ -108,14 +108,22 @@ nlohmann::ordered_json BoardSystem::report(double wall_seconds) const {
   ordered_json r;
   r["schema"] = "rc2000sim.board/1";
   r["simulated_seconds"] = total;
-  r["time"] = {{"host_compute_seconds", seconds(m_cpu.compute_time())},
+  r["time"] = {{"host_compute_seconds", seconds(m_cpu.compute_time() - m_cpu.second_cpu_compute())},
                {"driver_cpu_seconds", seconds(m_cpu.driver_time())},
                {"pci_transfer_seconds", seconds(d.pci)},
                {"waiting_seconds", seconds(d.waiting)},
                {"fpga_busy_seconds", busy},
-               {"overlap_seconds", seconds(d.overlap)},
-               {"note", "host_compute + driver_cpu + pci_transfer + waiting = simulated_seconds (the host thread's "
-                        "timeline); fpga_busy runs beside it, overlapping host compute by overlap_seconds"}};
+               {"overlap_seconds", seconds(d.overlap)}};
+  if (m_setup.driver.concurrent && m_setup.host.driver_model.overlap == DriverModel::Overlap::DualCpu) {
+    r["time"]["second_cpu_compute_seconds"] = seconds(m_cpu.second_cpu_compute());
+    r["time"]["second_cpu_wait_seconds"] = seconds(m_cpu.second_cpu_wait());
+    r["time"]["note"] = "host_compute + driver_cpu + pci_transfer + waiting + second_cpu_wait = simulated_seconds (the "
+                        "first processor's timeline); the second computes the form factors (second_cpu_compute) beside "
+                        "it; fpga_busy overlaps host compute by overlap_seconds";
+  } else {
+    r["time"]["note"] = "host_compute + driver_cpu + pci_transfer + waiting = simulated_seconds (the host thread's "
+                        "timeline); fpga_busy runs beside it, overlapping host compute by overlap_seconds";
+  }
   r["device"] = {{"profile", p.device},
                  {"lanes", p.lanes},
                  {"bits", p.bits},
@@ -158,6 +166,7 @@ nlohmann::ordered_json BoardSystem::report(double wall_seconds) const {
   r["pci"] = {{"bytes_to_board", d.bytes_to_board},
               {"bytes_to_host", d.bytes_to_host},
               {"dma_transfers", d.dma_transfers},
+              {"pio_transfers", d.pio_transfers},
               {"register_accesses", d.register_accesses},
               {"bus_transactions", pci.total.transactions},
               {"bus_busy_seconds", seconds(pci.total.busy)}};
@@ -200,7 +209,10 @@ nlohmann::ordered_json BoardSystem::report(double wall_seconds) const {
   for (int k = 0; k < kDriverWorkKinds; ++k)
     driver[to_string(DriverWork(k))] = {{"count", m_cpu.count(DriverWork(k))},
                                         {"seconds", seconds(m_cpu.time(DriverWork(k)))}};
-  r["host"] = {{"profile", m_setup.host.name}, {"work", work}, {"driver", driver}};
+  r["host"] = {{"profile", m_setup.host.name},
+               {"driver_model", m_setup.host.driver_model.name()},
+               {"work", work},
+               {"driver", driver}};
   if (wall_seconds >= 0) {
     r["wall_seconds"] = wall_seconds;
     r["wall_seconds_per_step"] = m_result.steps > 0 ? wall_seconds / m_result.steps : 0.0;

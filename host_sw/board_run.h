@@ -16,6 +16,7 @@
 #include <exception>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -40,6 +41,7 @@ struct BoardRunOptions {
   int bits = 15;                        // fractional bits (7..31)
   bool concurrent = false;              // paper sec 4.3
   std::string host = "athlon-mp-2600";  // configs/hosts/NAME.json, or a path
+  std::optional<HostProfile> host_profile;  // when set, this profile instead of `host` (calibration variants)
   std::string trace_path;               // Chrome/Perfetto trace.json of steps trace_first..trace_last
   int trace_first_step = 1, trace_last_step = 3;
   std::string vcd_path;                 // VCD of start/busy/done/irq

@@ -28,6 +28,8 @@ BoardVisibility::BoardVisibility(board::Rc2000& board, tlm::tlm_initiator_socket
     throw std::invalid_argument("a visibility oracle needs the fast wrapper model (the cycle-level one always computes)");
   }
   board_.wrapper().on_pass([this](const board::PassRecord& r) { on_pass(r); });
+  pio_extension_.access_bytes = word_bytes_;
+  pio_extension_.read_round_trip = cpu_.profile().driver_model.pio_read_round_trip;
 }
 
 std::size_t BoardVisibility::batch_size(std::size_t b) const {
@@ -83,9 +85,54 @@ void BoardVisibility::register_access(tlm::tlm_command command, std::uint64_t of
   ++stats_.register_accesses;
 }
 
+void BoardVisibility::transfer(tlmx::DmaDirection direction, void* host, std::uint64_t address, std::uint64_t bytes,
+                               const char* what, bool no_data) {
+  if (bytes == 0) return;
+  if (cpu_.profile().driver_model.transfer == DriverModel::Transfer::Pio) {
+    programmed_io(direction, host, address, bytes, what, no_data);
+  } else {
+    dma(direction, host, address, bytes, what, no_data);
+  }
+}
+
+// The CPU itself moves the words through the BAR window, one PCI transaction each (the bus times
+// the payload as that, tlm/programmed_io_extension.h); it is blocked meanwhile, and no driver entry
+// is needed (the window is mapped into the driver's address space).
+void BoardVisibility::programmed_io(tlmx::DmaDirection direction, void* host, std::uint64_t address,
+                                    std::uint64_t bytes, const char* what, bool no_data) {
+  tlm::tlm_generic_payload& trans = pio_trans_;
+  trans.set_command(direction == tlmx::DmaDirection::to_device ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND);
+  trans.set_address(address);
+  trans.set_data_ptr(static_cast<unsigned char*>(host));
+  trans.set_data_length(static_cast<unsigned>(bytes));
+  trans.set_streaming_width(static_cast<unsigned>(bytes));
+  trans.set_byte_enable_ptr(nullptr);
+  trans.set_dmi_allowed(false);
+  trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+  trans.set_extension(&pio_extension_);
+  if (no_data) trans.set_extension(&pio_no_data_);
+  const sc_time issued = cpu_.local();
+  sc_time delay = issued;
+  pci_->b_transport(trans, delay);
+  trans.clear_extension(&pio_extension_);
+  if (no_data) trans.clear_extension(&pio_no_data_);
+  if (!trans.is_response_ok()) {
+    throw std::runtime_error(std::string("programmed I/O of ") + what + " failed: " + trans.get_response_string());
+  }
+  const sc_time start = sc_core::sc_time_stamp() + issued;
+  cpu_.set_local(delay);
+  stats_.pci += delay - issued;
+  stats_.pio += delay - issued;
+  ++stats_.pio_transfers;
+  (direction == tlmx::DmaDirection::to_device ? stats_.pio_bytes_written : stats_.pio_bytes_read) += bytes;
+  (direction == tlmx::DmaDirection::to_device ? stats_.bytes_to_board : stats_.bytes_to_host) += bytes;
+  if (trace_ != nullptr && trace_->wants(cpu_.step())) {
+    trace_->complete("host", std::string("pio ") + what, start, cpu_.now(), {{"bytes", bytes}});
+  }
+}
+
 void BoardVisibility::dma(tlmx::DmaDirection direction, void* host, std::uint64_t address, std::uint64_t bytes,
                           const char* what, bool no_data) {
-  if (bytes == 0) return;
   cpu_.charge(DriverWork::Call, 1);
   // Temporally decoupled: issued at the host's local time, which moves to the completion. The bus
   // reserves itself at each burst's request time, so the times are those of a synced transfer.
@@ -114,23 +161,31 @@ void BoardVisibility::load_faces(const std::vector<Triangle>& faces) {
   }
   faces_.clear();
   faces_.reserve(faces.size());
-  for (const Triangle& t : faces) faces_.push_back(pipeline::make_face_record(t, bits));
+  for (const Triangle& t : faces) faces_.push_back(pipeline::make_face_record(t, bits));  // charged per upload
   if (options_.oracle != nullptr) options_.oracle->load_faces(faces);
   stats_.face_sets = faces_.empty() ? 0 : (faces_.size() + faces_per_set_ - 1) / faces_per_set_;
   resident_set_ = -1;
   if (stats_.face_sets == 1) upload_faces(0);  // resident for the whole run
 }
 
+// A set already in the face bank is sent again (DriverModel::FaceUpload::EveryPass) as a transfer
+// that carries no bytes: the bank holds exactly those words already, so only time and traffic count.
 void BoardVisibility::upload_faces(std::size_t set) {
   const std::size_t n = set_size(set);
-  buffer_.assign(n * 9 * word_bytes_, 0);
-  std::uint64_t words[9];
-  for (std::size_t f = 0; f < n; ++f) {
-    board::face_record_words(faces_[set_first(set) + f], words);
-    for (unsigned i = 0; i < 9; ++i) board::store_word(buffer_.data(), f * 9 + i, word_bytes_, words[i]);
+  charge_faces(n);
+  const bool resident = resident_set_ == static_cast<long>(set);
+  if (resident) {
+    buffer_.resize(n * 9 * word_bytes_);  // contents immaterial
+  } else {
+    buffer_.assign(n * 9 * word_bytes_, 0);
+    std::uint64_t words[9];
+    for (std::size_t f = 0; f < n; ++f) {
+      board::face_record_words(faces_[set_first(set) + f], words);
+      for (unsigned i = 0; i < 9; ++i) board::store_word(buffer_.data(), f * 9 + i, word_bytes_, words[i]);
+    }
   }
-  dma(tlmx::DmaDirection::to_device, buffer_.data(), board_.bank_pci_address(layout_.face_bank), buffer_.size(),
-      "faces");
+  transfer(tlmx::DmaDirection::to_device, buffer_.data(), board_.bank_pci_address(layout_.face_bank), buffer_.size(),
+           "faces", resident);
   resident_set_ = static_cast<long>(set);
   ++stats_.face_set_uploads;
 }
@@ -161,7 +216,7 @@ void BoardVisibility::order_segments(const SegmentBatch& batch) {
   }
   start_ = pipeline::quantize_point(batch.start, layout_.bits);
   source_face_ = batch.source_face >= 0 ? static_cast<std::uint32_t>(batch.source_face) : reg::kNoFace;
-  cpu_.charge(DriverWork::SegmentPack, rays_);
+  charge_end_points(rays_);
 }
 
 // Batches of rays, each against every face set; the set already in the face bank goes first.
@@ -195,6 +250,7 @@ void BoardVisibility::submit(const SegmentBatch& batch) {
                                 std::to_string(board_.params().bank_capacity_bytes) +
                                 " bytes); allow batching to split them");
   }
+  if (dual_cpu()) cpu_.fork_second_cpu();
   order_segments(batch);
   blocked_.assign(rays_, 0);
   if (options_.oracle != nullptr) ask_oracle(batch);
@@ -216,12 +272,16 @@ void BoardVisibility::submit_timing_only(std::size_t segments, int source_face) 
   }
   start_ = {0, 0, 0};
   source_face_ = source_face >= 0 ? static_cast<std::uint32_t>(source_face) : reg::kNoFace;
-  cpu_.charge(DriverWork::SegmentPack, rays_);
+  if (dual_cpu()) cpu_.fork_second_cpu();
+  charge_end_points(rays_);
   timing_only_ = true;
   run_step();
 }
 
-void BoardVisibility::collect_timing_only() { finish_step(); }
+void BoardVisibility::collect_timing_only() {
+  finish_step();
+  cpu_.join_second_cpu();
+}
 
 void BoardVisibility::run_step() {
   if (rays_ == 0 || faces_.empty()) {
@@ -243,6 +303,7 @@ void BoardVisibility::run_step() {
 
 void BoardVisibility::collect(std::vector<std::uint8_t>& blocked) {
   finish_step();
+  cpu_.join_second_cpu();
   blocked.assign(rays_, 0);
   for (std::size_t i = 0; i < rays_; ++i) blocked[order_[i]] = blocked_[i];
 }
@@ -278,9 +339,12 @@ void BoardVisibility::upload_rays(std::size_t batch) {
     board::blank_ray_images(layout_, split, images_);
     blank_images_rays_ = batch_size(batch);
   }
+  std::uint64_t bytes = 0;
+  for (const auto& image : images_) bytes += image.size();
+  charge_ray_words(bytes / word_bytes_);
   for (unsigned b = 0; b < images_.size(); ++b) {
-    dma(tlmx::DmaDirection::to_device, images_[b].data(), board_.bank_pci_address(b), images_[b].size(), "rays",
-        timing_only_);
+    transfer(tlmx::DmaDirection::to_device, images_[b].data(), board_.bank_pci_address(b), images_[b].size(), "rays",
+             timing_only_);
   }
 }
 
@@ -300,12 +364,13 @@ void BoardVisibility::upload_mask(std::size_t batch, std::size_t set) {
   }
   const std::uint64_t address = layout_.mask_bank ? board_.bank_pci_address(*layout_.mask_bank)
                                                   : board_.bank_pci_address(layout_.face_bank) + n * 9 * word_bytes_;
-  dma(tlmx::DmaDirection::to_device, buffer_.data(), address, buffer_.size(), "own-face table");
+  transfer(tlmx::DmaDirection::to_device, buffer_.data(), address, buffer_.size(), "own-face table");
 }
 
 void BoardVisibility::start_pass(const Pass& pass) {
   if (pass.first_of_batch) upload_rays(pass.batch);
-  if (resident_set_ != static_cast<long>(pass.set)) upload_faces(pass.set);
+  const bool faces_every_pass = cpu_.profile().driver_model.face_upload == DriverModel::FaceUpload::EveryPass;
+  if (resident_set_ != static_cast<long>(pass.set) || faces_every_pass) upload_faces(pass.set);
   upload_mask(pass.batch, pass.set);
   const auto begin = end_faces_.begin() + static_cast<long>(batch_first(pass.batch));
   const auto mask_start = std::lower_bound(begin, begin + static_cast<long>(batch_size(pass.batch)),
@@ -350,10 +415,50 @@ void BoardVisibility::read_results(std::size_t batch) {
   } else {
     buffer_.assign(split.result_words * word_bytes_, 0);
   }
-  dma(tlmx::DmaDirection::to_host, buffer_.data(), board_.bank_pci_address(layout_.result_bank), buffer_.size(),
-      "results", timing_only_);
+  transfer(tlmx::DmaDirection::to_host, buffer_.data(), board_.bank_pci_address(layout_.result_bank), buffer_.size(),
+           "results", timing_only_);
   if (!timing_only_) board::unpack_results(layout_, split, buffer_.data(), blocked_.data() + batch_first(batch));
-  cpu_.charge(DriverWork::ResultUnpack, batch_size(batch));
+  charge_results(batch_size(batch), split.result_words);
+}
+
+// ---- the driver's CPU work, in the profile's cost unit ---------------------------------------------
+
+bool BoardVisibility::dual_cpu() const {
+  return options_.concurrent && cpu_.profile().driver_model.overlap == DriverModel::Overlap::DualCpu;
+}
+
+bool BoardVisibility::per_word() const {
+  return cpu_.profile().driver_model.cost_unit == DriverModel::CostUnit::PerWord;
+}
+
+void BoardVisibility::charge_end_points(std::size_t rays) {
+  if (per_word()) {
+    cpu_.charge(DriverWork::CoordinateConvert, 3 * rays);
+  } else {
+    cpu_.charge(DriverWork::SegmentPack, rays);
+  }
+}
+
+void BoardVisibility::charge_ray_words(std::uint64_t words) {
+  if (per_word() && words != 0) cpu_.charge(DriverWork::WordStore, words);
+}
+
+void BoardVisibility::charge_faces(std::size_t faces) {
+  if (faces == 0) return;
+  if (per_word()) {
+    cpu_.charge(DriverWork::CoordinateConvert, 9 * faces);
+    cpu_.charge(DriverWork::WordStore, 9 * faces);
+  } else {
+    cpu_.charge(DriverWork::FacePack, faces);
+  }
+}
+
+void BoardVisibility::charge_results(std::size_t rays, std::uint64_t result_words) {
+  if (per_word()) {
+    cpu_.charge(DriverWork::WordLoad, result_words);
+  } else {
+    cpu_.charge(DriverWork::ResultUnpack, rays);
+  }
 }
 
 // Runs in the wrapper's thread when a pass completes.

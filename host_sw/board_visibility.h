@@ -30,6 +30,8 @@
 #include "host_sw/host_cpu_model.h"
 #include "host_sw/visibility.h"
 #include "pipeline/fixed_mt.h"
+#include "tlm/no_data_extension.h"
+#include "tlm/programmed_io_extension.h"
 
 namespace rc {
 
@@ -58,6 +60,9 @@ struct BoardDriverStats {
   std::uint64_t face_sets = 0;          // sets the scene needs
   std::uint64_t max_batches_per_step = 0;
   std::uint64_t dma_transfers = 0, register_accesses = 0;
+  std::uint64_t pio_transfers = 0;      // buffers moved by programmed I/O (each many PCI transactions)
+  std::uint64_t pio_bytes_written = 0, pio_bytes_read = 0;
+  sc_core::sc_time pio = sc_core::SC_ZERO_TIME;  // host thread blocked in programmed I/O (part of pci)
   std::uint64_t bytes_to_board = 0, bytes_to_host = 0;
   std::uint64_t tests = 0;              // ray slots streamed: rays x faces per pass
   sc_core::sc_time pci = sc_core::SC_ZERO_TIME;      // host thread blocked in DMA and register accesses
@@ -113,9 +118,24 @@ class BoardVisibility : public VisibilityBackend {
   void write_registers(std::uint64_t offset, std::initializer_list<std::uint32_t> values);
   std::uint32_t read_register(std::uint64_t offset);
   void register_access(tlm::tlm_command command, std::uint64_t offset, unsigned words);  // register_words_
-  // no_data: timed and counted like any transfer, bytes not moved (timing replay of blank buffers).
+  // Moves a buffer between host and board the way the host profile's driver model says: a DMA
+  // request (dma) or programmed I/O (pio). no_data: timed and counted like any transfer, bytes not
+  // moved (timing replay of blank buffers).
+  void transfer(tlmx::DmaDirection direction, void* host, std::uint64_t address, std::uint64_t bytes, const char* what,
+                bool no_data = false);
   void dma(tlmx::DmaDirection direction, void* host, std::uint64_t address, std::uint64_t bytes, const char* what,
-           bool no_data = false);
+           bool no_data);
+  void programmed_io(tlmx::DmaDirection direction, void* host, std::uint64_t address, std::uint64_t bytes,
+                     const char* what, bool no_data);
+  // The driver's CPU work for converting `rays` end points, storing `words` bank words of rays,
+  // converting and storing `faces` face records, and loading `result_words` result words of `rays`
+  // segments, in the profile's cost unit.
+  void charge_end_points(std::size_t rays);
+  void charge_ray_words(std::uint64_t words);
+  void charge_faces(std::size_t faces);
+  void charge_results(std::size_t rays, std::uint64_t result_words);
+  bool per_word() const;
+  bool dual_cpu() const;  // concurrent, with form factors on the second processor
   void host_event(const char* name, const sc_core::sc_time& from);
 
   std::size_t batch_first(std::size_t b) const { return b * rays_per_batch_; }
@@ -152,6 +172,9 @@ class BoardVisibility : public VisibilityBackend {
   board::RaySplitMemo split_{layout_};  // of the current batch in the ray banks
   board::PassRecord last_record_;
   tlm::tlm_generic_payload register_trans_;
+  tlm::tlm_generic_payload pio_trans_;  // programmed I/O: one payload, its extensions owned here
+  tlmx::ProgrammedIoExtension pio_extension_;
+  tlmx::NoDataExtension pio_no_data_;
   std::array<std::uint32_t, 8> register_words_{};  // the longest burst: RAY_COUNT..MASK_START
   std::vector<std::vector<std::uint8_t>> images_;
   static constexpr std::size_t kNoBlankImages = ~std::size_t{0};

@@ -14,22 +14,94 @@ std::string to_string(DriverWork work) {
     case DriverWork::Call: return "driver_call";
     case DriverWork::SegmentPack: return "segment_pack";
     case DriverWork::ResultUnpack: return "result_unpack";
+    case DriverWork::FacePack: return "face_pack";
+    case DriverWork::CoordinateConvert: return "coordinate_convert";
+    case DriverWork::WordStore: return "word_store";
+    case DriverWork::WordLoad: return "word_load";
     case DriverWork::Count: break;
   }
   return "unknown";
 }
 
-HostProfile load_host_profile(const std::string& path) {
+const char* to_string(DriverModel::CostUnit unit) {
+  return unit == DriverModel::CostUnit::PerSegment ? "per_segment" : "per_word";
+}
+const char* to_string(DriverModel::Transfer transfer) { return transfer == DriverModel::Transfer::Dma ? "dma" : "pio"; }
+const char* to_string(DriverModel::FaceUpload upload) {
+  return upload == DriverModel::FaceUpload::Once ? "once" : "every_pass";
+}
+const char* to_string(DriverModel::Overlap overlap) {
+  return overlap == DriverModel::Overlap::FormFactors ? "form_factors" : "dual_cpu";
+}
+
+std::string DriverModel::name() const {
+  return std::string(to_string(cost_unit)) + "/" + to_string(transfer) + "/" + to_string(face_upload) + "/" +
+         to_string(overlap);
+}
+
+bool DriverModel::operator==(const DriverModel& o) const {
+  return cost_unit == o.cost_unit && transfer == o.transfer && face_upload == o.face_upload && overlap == o.overlap &&
+         pio_read_round_trip == o.pio_read_round_trip;
+}
+
+namespace {
+
+// A named choice {"value": "dma", "source": "..."} that must be one of `names` (index = enum value).
+template <class Enum, std::size_t N>
+Enum choice(const board::ProfileReader& r, const std::string& field, const char* const (&names)[N]) {
+  const std::string value = r.text(field + ".value");
+  if (r.text(field + ".source").empty()) r.fail(field + ".source", "empty: say where the choice comes from");
+  for (std::size_t i = 0; i < N; ++i) {
+    if (value == names[i]) return static_cast<Enum>(i);
+  }
+  std::string allowed;
+  for (std::size_t i = 0; i < N; ++i) allowed += std::string(i ? ", " : "") + names[i];
+  r.fail(field + ".value", "'" + value + "' is not one of " + allowed);
+}
+
+constexpr const char* kCostUnits[] = {"per_segment", "per_word"};
+constexpr const char* kTransfers[] = {"dma", "pio"};
+constexpr const char* kFaceUploads[] = {"once", "every_pass"};
+constexpr const char* kOverlaps[] = {"form_factors", "dual_cpu"};
+
+DriverModel read_driver_model(const board::ProfileReader& r) {
+  DriverModel m;
+  m.cost_unit = choice<DriverModel::CostUnit>(r, "driver_model.cost_unit", kCostUnits);
+  m.transfer = choice<DriverModel::Transfer>(r, "driver_model.transfer", kTransfers);
+  m.face_upload = choice<DriverModel::FaceUpload>(r, "driver_model.face_upload", kFaceUploads);
+  m.overlap = choice<DriverModel::Overlap>(r, "driver_model.overlap", kOverlaps);
+  m.pio_read_round_trip =
+      sc_core::sc_time(r.number("driver_model.pio_read_round_trip_seconds", 0, 1e-3), sc_core::SC_SEC);
+  return m;
+}
+
+}  // namespace
+
+nlohmann::ordered_json with_driver_model(const nlohmann::ordered_json& profile, const DriverModel& model,
+                                         const std::string& source) {
+  nlohmann::ordered_json j = profile;
+  nlohmann::ordered_json& d = j["driver_model"];
+  d["cost_unit"] = {{"value", to_string(model.cost_unit)}, {"source", source}};
+  d["transfer"] = {{"value", to_string(model.transfer)}, {"source", source}};
+  d["face_upload"] = {{"value", to_string(model.face_upload)}, {"source", source}};
+  d["overlap"] = {{"value", to_string(model.overlap)}, {"source", source}};
+  return j;
+}
+
+HostProfile load_host_profile(const std::string& path) { return host_profile_from_json(board::read_json_file(path), path); }
+
+HostProfile host_profile_from_json(const nlohmann::ordered_json& json, const std::string& origin) {
   HostProfile p;
-  p.json = board::read_json_file(path);
-  p.file = path;
-  const board::ProfileReader r(p.json, path);
+  p.json = json;
+  p.file = origin;
+  const board::ProfileReader r(p.json, origin);
   p.name = r.text("name");
   p.clock_hz = r.number("clock_mhz", 1, 1e5) * 1e6;
   auto seconds = [&](const std::string& field) { return sc_core::sc_time(r.number(field, 0, 1.0), sc_core::SC_SEC); };
   for (int k = 0; k < kHostWorkKinds; ++k) p.work[k] = seconds("work_seconds." + to_string(HostWork(k)));
   for (int k = 0; k < kDriverWorkKinds; ++k) p.driver[k] = seconds("driver_seconds." + to_string(DriverWork(k)));
   p.interrupt_latency = seconds("driver_seconds.interrupt_latency");
+  p.driver_model = read_driver_model(r);
   return p;
 }
 
@@ -59,6 +131,14 @@ void HostCpuModel::charge(HostWork work, std::uint64_t count) {
   const sc_core::sc_time cost = sc_core::sc_time::from_value(profile_.work[k].value() * count);
   counts_[k] += count;
   times_[k] += cost;
+  if (forked_ && work == HostWork::FormFactor) {  // on the second processor, beside this one
+    const sc_core::sc_time from = second_cpu_end_;
+    second_cpu_end_ += cost;
+    second_cpu_compute_ += cost;
+    intervals_.emplace_back(from, second_cpu_end_);
+    if (trace_ != nullptr && trace_->wants(step())) trace_->complete("host cpu 1", to_string(work), from, second_cpu_end_);
+    return;
+  }
   advance(cost, [work] { return to_string(work); }, true);
   if (work == HostWork::Step) steps_done_ += static_cast<int>(count);
 }
@@ -72,6 +152,21 @@ void HostCpuModel::charge(DriverWork work, std::uint64_t count) {
 }
 
 void HostCpuModel::sync() { keeper_.sync(); }
+
+void HostCpuModel::fork_second_cpu() {
+  if (forked_) throw std::logic_error("the second processor is already working");
+  forked_ = true;
+  second_cpu_end_ = now();
+}
+
+void HostCpuModel::join_second_cpu() {
+  if (!forked_) return;
+  forked_ = false;
+  if (second_cpu_end_ > now()) {
+    second_cpu_wait_ += second_cpu_end_ - now();
+    set_local(second_cpu_end_ - sc_core::sc_time_stamp());
+  }
+}
 
 void HostCpuModel::set_local(const sc_core::sc_time& local) {
   if (local < keeper_.get_local_time()) throw std::logic_error("host local time cannot go back");

@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,7 +40,10 @@ struct TimingCase {
   bool software = false;                // the software-only implementation (host CPU tests every segment)
   BoardRunOptions board;                // the board implementation (its oracle is the replay)
   std::string host = "athlon-mp-2600";  // host profile of a software case (board cases: board.host)
+  std::optional<HostProfile> host_profile;  // when set, a software case's profile instead of `host`
 };
+
+unsigned default_study_processes();  // the machine's cores, at most 8
 
 struct TimingOutcome {
   std::string label;
@@ -49,7 +53,14 @@ struct TimingOutcome {
 };
 
 // Throws std::invalid_argument for a bad case (before elaboration) and rethrows a system's error.
-// May be called once per process.
-std::vector<TimingOutcome> run_timing_study(const std::vector<TimingCase>& cases);
+// May be called once per process, before anything else elaborates SystemC.
+//
+// With processes > 1 the cases are dealt to that many processes (this one and forked children,
+// each elaborating its own share; a SystemC kernel is single-threaded and elaborates once per
+// process). Cases share nothing, so every outcome is what it would be in one process: the
+// children send their reports back as JSON, which keeps every number exactly, and the result is
+// in case order whatever the deal (test TimingStudy.ProcessesChangeNoOutcome).
+std::vector<TimingOutcome> run_timing_study(const std::vector<TimingCase>& cases,
+                                            unsigned processes = default_study_processes());
 
 }  // namespace rc

@@ -19,7 +19,8 @@ enum class CostGroup : int {
   SoftwareTest,   // intersection_test: only the software column pays it
   Receiver,       // patch_scan, form_factor, energy_update, segment_setup: all scale with receivers
   Step,           // step
-  DriverSegment,  // segment_pack, result_unpack: per segment, board runs only
+  DriverData,     // the driver's per-datum CPU work, board runs only: segment_pack, result_unpack and
+                  // face_pack (per_segment), or coordinate_convert, word_store, word_load (per_word)
   DriverPass,     // driver_call and interrupt latency: per pass, board runs only
   Count
 };
@@ -45,14 +46,31 @@ struct CalibrationFit {
   double rms_relative_residual = 0;
 };
 
+// The least factor a group may take. Every calibration run has one pass per step, so per-pass and
+// per-step costs cannot be told apart; the software column pins the step, and the per-pass group
+// (a driver entry, an interrupt's latency) is held at or above its first-principles estimate,
+// which is the physical floor of a 2004 Windows driver round trip, instead of being fitted to zero.
+double minimum_scale(CostGroup group);
+
 // Minimises the relative residuals (every scene counts alike, whether it took 1 s or 1000 s),
-// with no negative cost. Throws std::invalid_argument without observations.
+// with no cost below minimum_scale. Throws std::invalid_argument without observations.
 CalibrationFit fit_calibration(const std::vector<CalibrationObservation>& observations);
 
+// Leave-one-out cross-validation: each observation predicted by the fit to all the others.
+struct CrossValidation {
+  std::vector<double> relative_errors;  // (prediction - measured) / measured, per observation
+  double mean_absolute = 0;             // mean of |relative error|
+  double rms = 0;
+  double worst = 0;                     // largest |relative error|
+};
+// Needs at least two observations (throws std::invalid_argument).
+CrossValidation cross_validate(const std::vector<CalibrationObservation>& observations);
+
 // The profile with every cost scaled by its group's factor, each value's source saying so, and
-// the fit (method, observations, residuals) recorded beside it.
+// the fit (method, observations, residuals, and the cross-validation if given) recorded beside it.
+// `base` is the profile the observations were simulated with, driver model included.
 nlohmann::ordered_json calibrated_profile(const HostProfile& base, const CalibrationFit& fit,
                                           const std::vector<CalibrationObservation>& observations,
-                                          const std::string& name);
+                                          const std::string& name, const CrossValidation* cv = nullptr);
 
 }  // namespace rc

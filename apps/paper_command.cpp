@@ -2,6 +2,7 @@
 // solved once (bit-exact 15-bit visibility, recorded); the four implementations and the bank
 // variants replay it through their SystemC systems in one simulation. Only the software and
 // single-pipeline columns were used for calibration; the rest are predictions.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -13,6 +14,7 @@
 #include "apps/paper_workload.h"
 #include "apps/plot.h"
 #include "apps/progress.h"
+#include "host_sw/calibration_variants.h"
 
 namespace rc {
 
@@ -23,9 +25,52 @@ struct PaperOptions {
   std::string host = "athlon-mp-2600-calibrated";
   std::string out_dir = "out/paper";
   std::string docs_dir;  // also write paper.md and the plots here (e.g. docs/results)
+  std::string variants = default_variants_path();  // every driver-model variant, for the spread
   std::string visibility = "fast";
   bool quiet = false;
 };
+
+// The withheld columns again under every driver-model variant whose cross-validated error is
+// within kVariantTolerance of the best (docs/calibration.md): two pipes with each variant, the
+// concurrent driver with each variant and each overlap.
+struct SpreadCase {
+  std::size_t scene = 0;
+  int implementation = 0;
+  std::string driver_model;
+  std::size_t outcome_index = 0;                // in the study's outcomes
+  std::size_t main_index = ~std::size_t{0};     // or the main column's outcome it equals
+  std::size_t index() const { return main_index != ~std::size_t{0} ? main_index : outcome_index; }
+};
+
+// A spread case that is the main column's own case (the default profile itself) is not simulated
+// twice: its outcome is the main one (main_index).
+std::vector<SpreadCase> spread_cases(const std::vector<PaperScene>& scenes, const std::vector<CalibratedVariant>& variants,
+                                     const HostProfile& host, std::vector<TimingCase>& cases) {
+  std::vector<SpreadCase> out;
+  for (std::size_t i = 0; i < scenes.size(); ++i) {
+    for (const CalibratedVariant& v : variants) {
+      if (!v.in_spread) continue;
+      for (const DriverModel& m : with_each_overlap(v.profile.driver_model)) {
+        const HostProfile profile = with_model(v.profile, m);
+        for (PaperImplementation impl : {PaperImplementation::TwoPipes, PaperImplementation::Concurrent}) {
+          if (impl == PaperImplementation::TwoPipes && m.overlap != DriverModel::Overlap::FormFactors) continue;
+          SpreadCase spread{i, static_cast<int>(impl), m.name()};
+          if (profile.json == host.json) {
+            spread.main_index = i * kPaperImplementations + static_cast<std::size_t>(impl);
+          } else {
+            TimingCase c = paper_timing_case(scenes[i], impl, host.name);
+            c.label += " " + m.name();
+            c.board.host_profile = profile;
+            spread.outcome_index = cases.size();
+            cases.push_back(c);
+          }
+          out.push_back(spread);
+        }
+      }
+    }
+  }
+  return out;
+}
 
 // Sec 4.1's six- and seven-bank variants against five banks, on the largest scene: at 15 bits a
 // word holds two coordinates, so five banks feed two full-rate lanes, and one or two more banks
@@ -51,8 +96,19 @@ double fpga_busy(const TimingOutcome& o) {
 
 struct PaperResults {
   std::vector<PaperScene>* scenes = nullptr;
-  std::vector<TimingOutcome> outcomes;  // kPaperImplementations per scene, then the bank variants
-  std::vector<board::PaperEstimate> estimates;
+  std::vector<TimingOutcome> outcomes;  // kPaperImplementations per scene, the bank variants, the spread
+  std::vector<SpreadCase> spread;
+  std::vector<board::PaperEstimate> paper_rule, model;  // sec 5.6, pairwise
+  // Seconds of every spread case of (scene, implementation).
+  std::vector<std::pair<std::string, double>> spread_of(std::size_t scene, int impl) const {
+    std::vector<std::pair<std::string, double>> out;
+    for (std::size_t k = 0; k < spread.size(); ++k) {
+      if (spread[k].scene == scene && spread[k].implementation == impl) {
+        out.emplace_back(spread[k].driver_model, outcomes[spread[k].index()].simulated_seconds);
+      }
+    }
+    return out;
+  }
   const TimingOutcome& at(std::size_t scene, int impl) const { return outcomes[scene * kPaperImplementations + impl]; }
   const TimingOutcome& bank_variant(std::size_t v) const {
     return outcomes[scenes->size() * kPaperImplementations + v];
@@ -83,24 +139,48 @@ nlohmann::ordered_json scene_records(const PaperResults& r) {
                                     {"speedup_vs_software", r.at(i, 0).simulated_seconds / o.simulated_seconds},
                                     {"steps_per_second", s.row.steps / o.simulated_seconds},
                                     {"convergence_steps_ours", s.convergence_steps}};
+      const auto spread = r.spread_of(i, impl);
+      if (!spread.empty()) {
+        double lo = spread[0].second, hi = lo;
+        nlohmann::ordered_json list = nlohmann::ordered_json::array();
+        for (const auto& [model, seconds] : spread) {
+          lo = std::min(lo, seconds);
+          hi = std::max(hi, seconds);
+          list.push_back({{"driver_model", model}, {"seconds", seconds}});
+        }
+        rec["spread_min_seconds"] = lo;
+        rec["spread_max_seconds"] = hi;
+        rec["spread"] = list;
+      }
       records.push_back(rec);
     }
   }
   return records;
 }
 
+nlohmann::ordered_json estimate_record(const board::PaperEstimate& e) {
+  return {{"estimate", e.estimate},
+          {"rule", board::to_string(e.rule)},
+          {"device", e.device},
+          {"lanes", e.lanes},
+          {"clock_mhz", e.clock_mhz},
+          {"intersections_per_s", e.intersections_per_s},
+          {"bytes_per_intersection", e.bytes_per_intersection},
+          {"bytes_per_cycle", e.bytes_per_cycle},
+          {"gb_per_s", e.gb_per_s},
+          {"software_rate", e.software_rate},
+          {"speedup_vs_software", e.speedup_vs_software},
+          {"note", e.note}};
+}
+
+// Pairs: the paper's rule, then the model's estimate of the same question, and why they differ.
 nlohmann::ordered_json estimate_records(const PaperResults& r) {
   nlohmann::ordered_json records = nlohmann::ordered_json::array();
-  for (const board::PaperEstimate& e : r.estimates) {
-    records.push_back({{"estimate", e.estimate},
-                       {"device", e.device},
-                       {"lanes", e.lanes},
-                       {"clock_mhz", e.clock_mhz},
-                       {"intersections_per_s", e.intersections_per_s},
-                       {"bytes_per_cycle", e.bytes_per_cycle},
-                       {"gb_per_s", e.gb_per_s},
-                       {"speedup_vs_software", e.speedup_vs_software},
-                       {"note", e.note}});
+  for (std::size_t i = 0; i < r.paper_rule.size(); ++i) {
+    records.push_back(estimate_record(r.paper_rule[i]));
+    nlohmann::ordered_json model = estimate_record(r.model[i]);
+    model["why_different"] = board::why_estimates_differ(r.paper_rule[i], r.model[i]);
+    records.push_back(model);
   }
   return records;
 }
@@ -137,39 +217,63 @@ void write_csv(const std::string& path, const nlohmann::ordered_json& scenes, co
   std::ofstream out(path);
   if (!out) throw std::runtime_error(path + ": cannot open for writing");
   auto field = [](const nlohmann::ordered_json& v) { return v.is_null() ? std::string() : v.is_string() ? v.get<std::string>() : v.dump(); };
-  out << "record,faces,patches,steps,implementation,seconds,paper_seconds,relative_residual,fpga_busy_seconds,"
-         "speedup_vs_software,device,lanes,clock_mhz,intersections_per_s,bytes_per_cycle,gb_per_s,estimate\n";
+  auto optional = [&](const nlohmann::ordered_json& j, const char* key) { return j.contains(key) ? field(j[key]) : std::string(); };
+  out << "record,faces,patches,steps,implementation,seconds,paper_seconds,relative_residual,spread_min_seconds,"
+         "spread_max_seconds,fpga_busy_seconds,speedup_vs_software,device,lanes,clock_mhz,intersections_per_s,"
+         "bytes_per_cycle,gb_per_s,estimate,rule\n";
   for (const auto& s : scenes) {
     out << "scene," << s["faces"] << ',' << s["patches"] << ',' << s["steps"] << ',' << field(s["implementation"]) << ','
         << s["seconds"] << ',' << field(s["paper_seconds"]) << ',' << field(s["relative_residual"]) << ','
-        << s["fpga_busy_seconds"] << ',' << s["speedup_vs_software"] << ",,,,,,,\n";
+        << optional(s, "spread_min_seconds") << ',' << optional(s, "spread_max_seconds") << ',' << s["fpga_busy_seconds"]
+        << ',' << s["speedup_vs_software"] << ",,,,,,,,\n";
   }
   for (const auto& e : estimates) {
-    out << "estimate,,,,,,,,," << e["speedup_vs_software"] << ',' << field(e["device"]) << ',' << e["lanes"] << ','
+    out << "estimate,,,,,,,,,,," << e["speedup_vs_software"] << ',' << field(e["device"]) << ',' << e["lanes"] << ','
         << e["clock_mhz"] << ',' << e["intersections_per_s"] << ',' << e["bytes_per_cycle"] << ',' << e["gb_per_s"] << ",\""
-        << field(e["estimate"]) << "\"\n";
+        << field(e["estimate"]) << "\"," << field(e["rule"]) << "\n";
   }
 }
 
+std::string with_spread(const PaperResults& r, std::size_t scene, int impl) {
+  const auto spread = r.spread_of(scene, impl);
+  char text[64];
+  if (spread.empty()) {
+    std::snprintf(text, sizeof text, "%7.1f", r.at(scene, impl).simulated_seconds);
+  } else {
+    double lo = spread[0].second, hi = lo;
+    for (const auto& [model, seconds] : spread) lo = std::min(lo, seconds), hi = std::max(hi, seconds);
+    std::snprintf(text, sizeof text, "%7.1f [%6.1f-%6.1f]", r.at(scene, impl).simulated_seconds, lo, hi);
+  }
+  return text;
+}
+
 void print_table(const PaperResults& r) {
-  std::printf("\nTable 2 (seconds; paper figures in brackets; * = calibration column)\n");
-  std::printf("%6s %7s %6s %6s | %17s | %17s | %9s | %10s | %7s\n", "faces", "patches", "steps", "ours", "software*",
+  std::printf("\nTable 2 (seconds; paper figures in brackets; * = calibration column; predictions with [the spread of\n"
+              "the driver-model variants within %.0f%% of the best cross-validated error])\n", 100 * kVariantTolerance);
+  std::printf("%6s %7s %6s %6s | %17s | %17s | %24s | %24s | %7s\n", "faces", "patches", "steps", "ours", "software*",
               "one pipe*", "two pipes", "concurrent", "speedup");
   for (std::size_t i = 0; i < r.scenes->size(); ++i) {
     const PaperScene& s = (*r.scenes)[i];
     char ours[16];
     std::snprintf(ours, sizeof ours, s.convergence_steps ? "%d" : ">%d", s.convergence_steps ? s.convergence_steps : s.recorded_steps);
-    std::printf("%6d %7d %6d %6s | %7.1f [%7.1f] | %7.1f [%7.1f] | %9.1f | %10.1f | %6.2fx\n", s.row.faces, s.row.patches,
+    std::printf("%6d %7d %6d %6s | %7.1f [%7.1f] | %7.1f [%7.1f] | %24s | %24s | %6.2fx\n", s.row.faces, s.row.patches,
                 s.row.steps, ours, r.at(i, 0).simulated_seconds, s.row.software_seconds, r.at(i, 1).simulated_seconds,
-                s.row.one_pipe_seconds, r.at(i, 2).simulated_seconds, r.at(i, 3).simulated_seconds,
+                s.row.one_pipe_seconds, with_spread(r, i, 2).c_str(), with_spread(r, i, 3).c_str(),
                 r.at(i, 0).simulated_seconds / r.at(i, 3).simulated_seconds);
   }
-  std::printf("\nSec 5.6 estimates (15-bit pipeline)\n");
-  for (const board::PaperEstimate& e : r.estimates) {
-    std::printf("  %-36s %-14s lanes %-3d %7.1f MHz %10.4g int/s %7.3f B/cycle %6.2f GB/s %7.2fx software  %s\n",
-                e.estimate.c_str(), e.device.c_str(), e.lanes, e.clock_mhz, e.intersections_per_s, e.bytes_per_cycle,
-                e.gb_per_s, e.speedup_vs_software, e.note.c_str());
+  std::printf("\nSec 5.6 estimates (15-bit pipeline): the paper's rule on its printed figures, and the model\n");
+  std::printf("  %-24s %-14s %-5s %5s %7s %11s %7s %8s %7s %9s\n", "estimate", "device", "rule", "lanes", "MHz", "int/s",
+              "B/int", "B/cycle", "GB/s", "speedup");
+  for (std::size_t i = 0; i < r.paper_rule.size(); ++i) {
+    for (const board::PaperEstimate* e : {&r.paper_rule[i], &r.model[i]}) {
+      std::printf("  %-24s %-14s %-5s %5d %7.1f %11.4g %7.3f %8.3f %7.2f %8.2fx  %s\n", e->estimate.c_str(),
+                  e->device.c_str(), board::to_string(e->rule), e->lanes, e->clock_mhz, e->intersections_per_s,
+                  e->bytes_per_intersection, e->bytes_per_cycle, e->gb_per_s, e->speedup_vs_software, e->note.c_str());
+    }
+    std::printf("    why they differ: %s\n", board::why_estimates_differ(r.paper_rule[i], r.model[i]).c_str());
   }
+  std::printf("  software rates: paper rule %.4g int/s (Table 2's peak), model %.4g int/s (calibrated test)\n",
+              r.paper_rule[0].software_rate, r.model[0].software_rate);
   std::printf("\nSec 4.1 bank variants (largest scene, 15 bits)\n");
   for (std::size_t v = 0; v < std::size(kBankVariants); ++v) {
     const TimingOutcome& o = r.bank_variant(v);
@@ -188,6 +292,7 @@ int run_paper(const PaperOptions& o) {
   ProgressLine progress(!o.quiet);
   const std::vector<PaperRow> rows = load_paper_table(o.table);
   const HostProfile host = find_host_profile(o.host);  // fails early with a clear message
+  const std::vector<CalibratedVariant> variants = load_calibrated_variants(o.variants);
   std::vector<PaperScene> scenes =
       prepare_paper_scenes(rows, o.visibility, 15, [&](const std::string& what) { progress.update("%-40s", what.c_str()); });
   std::vector<TimingCase> cases;
@@ -195,19 +300,23 @@ int run_paper(const PaperOptions& o) {
     for (int impl = 0; impl < kPaperImplementations; ++impl) cases.push_back(paper_timing_case(s, PaperImplementation(impl), o.host));
   }
   for (const BankVariant& v : kBankVariants) cases.push_back(bank_variant_case(scenes.back(), v, o.host));
+  PaperResults r;
+  r.spread = spread_cases(scenes, variants, host, cases);
   progress.update("simulating %zu configurations%-20s", cases.size(), "");
   const double functional_seconds = progress.seconds();
   PlotProcess plotter("paper.py");  // loads while the single-threaded study leaves a core idle
-  PaperResults r;
   r.scenes = &scenes;
   r.outcomes = run_timing_study(cases);
   const double study_seconds = progress.seconds() - functional_seconds;
-  r.estimates = board::paper_estimates(1.0 / host.work[static_cast<int>(HostWork::IntersectionTest)].to_seconds(), 15);
+  r.paper_rule = board::paper_rule_estimates(measured_peak_software_rate(rows));
+  r.model = board::model_estimates(1.0 / host.work[static_cast<int>(HostWork::IntersectionTest)].to_seconds(), 15);
   progress.finish();
 
   nlohmann::ordered_json json;
   json["schema"] = "rc2000sim.paper/1";
   json["host_profile"] = o.host;
+  json["driver_model"] = host.driver_model.name();
+  json["variants"] = o.variants;
   json["visibility"] = "bit-exact fixed point, 15 fractional bits, every segment against every face";
   json["scene_records"] = scene_records(r);
   json["estimate_records"] = estimate_records(r);
@@ -241,6 +350,8 @@ void add_paper_command(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand("paper", "Predict the paper's Table 2 and sec 5.6 with the calibrated model");
   cmd->add_option("--table", o->table, "Measured Table 2 columns")->check(CLI::ExistingFile)->capture_default_str();
   cmd->add_option("--host", o->host, "Host profile (rc2000sim calibrate writes the default)")->capture_default_str();
+  cmd->add_option("--variants", o->variants, "Calibrated driver-model variants (rc2000sim calibrate writes them)")
+      ->check(CLI::ExistingFile)->capture_default_str();
   cmd->add_option("--out", o->out_dir, "Output folder for paper.csv, paper.json and plots")->capture_default_str();
   cmd->add_option("--docs", o->docs_dir, "Also write paper.md and its plots here (e.g. docs/results)");
   cmd->add_option("--visibility", o->visibility, "Bit-exact backend that answers visibility once per scene: fixed or fast")

@@ -34,6 +34,14 @@ std::vector<PaperRow> load_paper_table(const std::string& path) {
   return rows;
 }
 
+double measured_peak_software_rate(const std::vector<PaperRow>& rows) {
+  double peak = 0;
+  for (const PaperRow& r : rows) {
+    peak = std::max(peak, double(r.steps) * r.patches * r.faces / r.software_seconds);
+  }
+  return peak;
+}
+
 namespace {
 
 // k with base * 4^k == value, or -1.

@@ -21,6 +21,9 @@ struct PaperRow {
 };
 
 std::vector<PaperRow> load_paper_table(const std::string& path);
+// The measured peak software intersection rate of sec 5.6(a), from Table 2's printed figures:
+// the largest steps x patches x faces (every segment against every face) over software seconds.
+double measured_peak_software_rate(const std::vector<PaperRow>& rows);
 std::string default_paper_table_path();
 
 // The scene options that give exactly `faces` faces and `patches` patches (70 x 4^k faces,

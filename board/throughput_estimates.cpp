@@ -1,11 +1,17 @@
 #include "board/throughput_estimates.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 
 #include "board/bank_layout.h"
+#include "board/board_params.h"
 #include "board/design_fit.h"
+#include "board/pass_timing.h"
 
 namespace rc::board {
+
+const char* to_string(EstimateRule rule) { return rule == EstimateRule::Paper ? "paper" : "model"; }
 
 double bytes_per_intersection(int bits) {
   const BankLayout layout = make_bank_layout(1, 5, bits, 32, 4u << 20);
@@ -14,53 +20,152 @@ double bytes_per_intersection(int bits) {
 
 namespace {
 
-PaperEstimate at_rate(std::string estimate, std::string device, int lanes, double clock_mhz, double rate, int bits,
-                      double software_rate) {
+// The devices of sec 5.6(b), in the paper's order.
+constexpr const char* kEstimateDevices[] = {"virtex4-sx55", "spartan3-5000"};
+
+PaperEstimate at_rate(std::string estimate, EstimateRule rule, std::string device, int lanes, double clock_mhz,
+                      double rate, double bytes_per_intersection, double software_rate) {
   PaperEstimate e;
   e.estimate = std::move(estimate);
+  e.rule = rule;
   e.device = std::move(device);
   e.lanes = lanes;
   e.clock_mhz = clock_mhz;
   e.intersections_per_s = rate;
-  e.bytes_per_cycle = clock_mhz > 0 ? rate / (clock_mhz * 1e6) * bytes_per_intersection(bits) : 0;
-  e.gb_per_s = rate * bytes_per_intersection(bits) / 1e9;
+  e.bytes_per_intersection = bytes_per_intersection;
+  e.bytes_per_cycle = clock_mhz > 0 ? rate / (clock_mhz * 1e6) * bytes_per_intersection : 0;
+  e.gb_per_s = rate * bytes_per_intersection / 1e9;
+  e.software_rate = software_rate;
   e.speedup_vs_software = rate / software_rate;
   return e;
 }
 
-}  // namespace
+std::string format(const char* pattern, double a, double b = 0, double c = 0, double d = 0) {
+  char text[256];
+  std::snprintf(text, sizeof text, pattern, a, b, c, d);
+  return text;
+}
 
-std::vector<PaperEstimate> paper_estimates(double software_rate, int bits) {
-  const pipeline::ResourceModel model = pipeline::ResourceModel::load_default();
-  std::vector<PaperEstimate> out;
-
-  // (a) Limited by the RC2000's memory bandwidth: every bank streaming a word per memory clock.
+// Sec 5.6(a): every bank streaming one word per memory clock.
+PaperEstimate bandwidth_limit(EstimateRule rule, double software_rate) {
   const DeviceProfile rc2000 = find_device_profile("xc2v6000");
   const double bandwidth = rc2000.bank_count * (rc2000.bank_word_bits / 8.0) * rc2000.bank_clock_mhz * 1e6;
-  PaperEstimate limit = at_rate("RC2000 bandwidth limit", rc2000.name, 0, rc2000.bank_clock_mhz,
-                                bandwidth / bytes_per_intersection(bits), bits, software_rate);
-  limit.note = std::to_string(rc2000.bank_count) + " banks x " + std::to_string(rc2000.bank_word_bits / 8) +
-               " bytes x " + std::to_string(rc2000.bank_clock_mhz) + " MHz";
-  out.push_back(limit);
+  const double bytes = bytes_per_intersection(15);
+  PaperEstimate e = at_rate("RC2000 bandwidth limit", rule, rc2000.name, 0, rc2000.bank_clock_mhz, bandwidth / bytes,
+                            bytes, software_rate);
+  e.note = format("%g banks x %g bytes x %g MHz = %.4g GB/s", rc2000.bank_count, rc2000.bank_word_bits / 8.0,
+                  rc2000.bank_clock_mhz, bandwidth / 1e9) +
+           format(" over %g bytes per intersection", bytes);
+  return e;
+}
 
-  // The measured board's peak: two lanes at their clock.
-  const DesignFit two = fit_design(rc2000, model, 2, bits);
-  out.push_back(at_rate("peak of the measured 2-lane design", rc2000.name, 2, two.clock_mhz, 2 * two.clock_mhz * 1e6, bits,
-                        software_rate));
+// A long pass (one face after another, results read and written) on `lanes` lanes of `device`
+// at `bits`, with as many banks as full-rate lanes need: intersections per device cycle and the
+// bank bytes each moves, from the pass-timing formula.
+struct StreamRate {
+  double rays_per_cycle = 0, bytes_per_ray = 0;
+  std::string limit;
+};
 
-  // (b) Limited by device resources: as many lanes as fit, at the design clock.
-  for (const char* name : {"virtex4-sx55", "spartan3-5000", "xc2v6000"}) {
+StreamRate long_pass_rate(const DeviceProfile& device, int lanes, int bits) {
+  const BankLayout probe = make_bank_layout(static_cast<unsigned>(lanes), 64, bits, device.bank_word_bits, device.bank_capacity_bytes);
+  const unsigned groups = static_cast<unsigned>(probe.groups.size());
+  BoardChoices choices;
+  choices.lanes = static_cast<unsigned>(lanes);
+  choices.banks = 3 * groups + 2;
+  choices.bits = bits;
+  const BoardParams params = make_board_params(device, choices);
+  const BankLayout layout =
+      make_bank_layout(params.lanes, params.banks, bits, params.word_bits, params.bank_capacity_bytes);
+  const std::uint64_t rays = std::min<std::uint64_t>(layout.max_rays_per_batch, std::uint64_t{1} << 20);
+  const RaySplit split = split_rays(layout, rays);
+  StreamRate r;
+  const std::uint64_t cycles = stream_cycles(layout, params.timing, split, false, &r.limit);
+  double words = 0;
+  for (std::size_t g = 0; g < layout.groups.size(); ++g) {
+    words += double(split.packets[g]) * (3 + layout.groups[g].result_accesses());
+  }
+  r.rays_per_cycle = double(rays) / double(cycles);
+  r.bytes_per_ray = words * (layout.word_bits / 8.0) / double(rays);
+  return r;
+}
+
+}  // namespace
+
+std::vector<PaperEstimate> paper_rule_estimates(double software_peak_rate) {
+  const pipeline::ResourceModel model = pipeline::ResourceModel::load_default();
+  const pipeline::PipelineResources table1 = model.pipeline(15, true);  // 1976 slices, 30 multipliers, 176.9 MHz
+  const double bytes = bytes_per_intersection(15);
+  std::vector<PaperEstimate> out{bandwidth_limit(EstimateRule::Paper, software_peak_rate)};
+
+  // Sec 5.7: "2 parallel pipelines at 52 MHz".
+  PaperEstimate measured = at_rate("measured 2-lane design", EstimateRule::Paper, "xc2v6000", 2, 52.0, 2 * 52.0e6, bytes,
+                                   software_peak_rate);
+  measured.note = "sec 5.7: 2 parallel pipelines at 52 MHz";
+  out.push_back(measured);
+
+  for (const char* name : kEstimateDevices) {
     const DeviceProfile device = find_device_profile(name);
-    const int lanes = max_lanes(device, model, bits);
-    const DesignFit fit = fit_design(device, model, std::max(lanes, 1), bits);
-    PaperEstimate e = at_rate("lanes that fit", device.name, lanes, fit.clock_mhz, lanes * fit.clock_mhz * 1e6, bits,
-                              software_rate);
-    e.note = std::to_string(fit.hard_lanes) + " with block multipliers, " + std::to_string(fit.soft_lanes) +
-             " with slice multipliers; " + std::to_string(fit.slices) + "/" + std::to_string(device.slices) + " slices, " +
-             std::to_string(fit.block_multipliers) + "/" + std::to_string(device.block_multipliers) + " multipliers";
+    const int by_slices = device.slices / table1.slices;
+    const int by_multipliers = device.block_multipliers / table1.block_multipliers;
+    const int lanes = std::min(by_slices, by_multipliers);
+    PaperEstimate e = at_rate("lanes that fit", EstimateRule::Paper, device.name, lanes, table1.clock_mhz,
+                              lanes * table1.clock_mhz * 1e6, bytes, software_peak_rate);
+    e.note = format("min(%g slices / %g, %g multipliers / %g)", device.slices, table1.slices, device.block_multipliers,
+                    table1.block_multipliers) +
+             format(" = min(%g, %g); wrapper not counted", by_slices, by_multipliers);
     out.push_back(e);
   }
   return out;
 }
 
-}  // namespace rc
+std::vector<PaperEstimate> model_estimates(double software_rate, int bits) {
+  const pipeline::ResourceModel model = pipeline::ResourceModel::load_default();
+  std::vector<PaperEstimate> out{bandwidth_limit(EstimateRule::Model, software_rate)};
+
+  const DeviceProfile rc2000 = find_device_profile("xc2v6000");
+  const DesignFit two = fit_design(rc2000, model, 2, bits);
+  const StreamRate two_rate = long_pass_rate(rc2000, 2, bits);
+  PaperEstimate measured = at_rate("measured 2-lane design", EstimateRule::Model, rc2000.name, 2, two.clock_mhz,
+                                   two_rate.rays_per_cycle * two.clock_mhz * 1e6, two_rate.bytes_per_ray, software_rate);
+  measured.note = format("%.3f rays per cycle (bound: ", two_rate.rays_per_cycle) + two_rate.limit + ")";
+  out.push_back(measured);
+
+  for (const char* name : kEstimateDevices) {
+    const DeviceProfile device = find_device_profile(name);
+    const int lanes = max_lanes(device, model, bits);
+    const DesignFit fit = fit_design(device, model, std::max(lanes, 1), bits);
+    const StreamRate rate = lanes > 0 ? long_pass_rate(device, lanes, bits) : StreamRate{};
+    PaperEstimate e = at_rate("lanes that fit", EstimateRule::Model, device.name, lanes, fit.clock_mhz,
+                              rate.rays_per_cycle * fit.clock_mhz * 1e6, rate.bytes_per_ray, software_rate);
+    e.note = format("%g with block multipliers, %g with slice multipliers, wrapper counted; ", fit.hard_lanes,
+                    fit.soft_lanes) +
+             format("%.3f rays per cycle (bound: ", rate.rays_per_cycle) + rate.limit + ")";
+    out.push_back(e);
+  }
+  return out;
+}
+
+std::string why_estimates_differ(const PaperEstimate& paper, const PaperEstimate& model) {
+  if (paper.estimate == "RC2000 bandwidth limit") {
+    return "same arithmetic; the speedups differ only by the software rate (paper: Table 2's peak, model: the "
+           "calibrated intersection test)";
+  }
+  if (paper.estimate == "measured 2-lane design") {
+    return "the paper rounds the clock to 52 MHz and counts one result per cycle per lane; the model runs at 52.5 MHz "
+           "and its result bank (read-modify-write of words two lanes share) holds the lanes to " +
+           format("%.0f%%", 100 * model.intersections_per_s / (2 * model.clock_mhz * 1e6)) +
+           ", moving " + format("%g", model.bytes_per_intersection) + " bytes per intersection, not 6.125";
+  }
+  std::string why = "the paper counts only Table 1's pipeline (1976 slices, 30 multipliers per lane); the model adds "
+                    "the Handel-C wrapper (fixed and per-lane slices, sec 5.4-5.5)";
+  if (model.lanes > paper.lanes) why += " and builds lanes beyond the block multipliers from slice multipliers (sec 5.2)";
+  const double per_lane = model.lanes > 0 ? model.intersections_per_s / (model.lanes * model.clock_mhz * 1e6) : 0;
+  if (per_lane < 0.999) {
+    why += "; one result bank for all lanes, read and written per word, caps the stream at " +
+           format("%.2f", model.intersections_per_s / (model.clock_mhz * 1e6)) + " intersections per cycle";
+  }
+  return why;
+}
+
+}  // namespace rc::board

@@ -316,7 +316,8 @@ int run_paper(const PaperOptions& o) {
   json["schema"] = "rc2000sim.paper/1";
   json["host_profile"] = o.host;
   json["driver_model"] = host.driver_model.name();
-  json["variants"] = o.variants;
+  const std::string source_dir = std::string(RC_SOURCE_DIR) + "/";
+  json["variants"] = o.variants.rfind(source_dir, 0) == 0 ? o.variants.substr(source_dir.size()) : o.variants;
   json["visibility"] = "bit-exact fixed point, 15 fractional bits, every segment against every face";
   json["scene_records"] = scene_records(r);
   json["estimate_records"] = estimate_records(r);

@@ -9,6 +9,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.patches import Patch  # noqa: E402
 
 IMPLEMENTATIONS = ["software", "one_pipe", "two_pipes", "concurrent"]
 COLOURS = {"software": "tab:grey", "one_pipe": "tab:blue", "two_pipes": "tab:orange", "concurrent": "tab:green"}
@@ -32,7 +33,14 @@ def table2(rows, out):
                     if r["paper_seconds"]:
                         paper_x.append(xs[-1])
                         paper.append(float(r["paper_seconds"]))
-        ax.bar(xs, model, width, color=COLOURS[impl], label=f"{impl} (model)")
+        bars = ax.bar(xs, model, width, color=COLOURS[impl], label=f"{impl} (model)")
+        lows = [float(r["spread_min_seconds"]) for r in rows
+                if r["implementation"] == impl and r["spread_min_seconds"]]
+        if lows:
+            highs = [float(r["spread_max_seconds"]) for r in rows
+                     if r["implementation"] == impl and r["spread_max_seconds"]]
+            ax.errorbar(xs, model, yerr=[[m - lo for m, lo in zip(model, lows)], [hi - m for m, hi in zip(model, highs)]],
+                        fmt="none", ecolor="k", elinewidth=0.8, capsize=2)
         if paper:
             ax.plot(paper_x, paper, "k_", markersize=14, mew=2)
     ax.plot([], [], "k_", markersize=14, mew=2, label="paper (calibration columns)")
@@ -49,21 +57,24 @@ def table2(rows, out):
 
 
 def estimates(rows, out):
-    labels = [f'{r["estimate"]}\n{r["device"]}' + (f' ({r["lanes"]} lanes)' if r["lanes"] != "0" else "") for r in rows]
+    labels = [f'{r["estimate"]}, {r["device"]}' + (f' ({r["lanes"]} lanes)' if r["lanes"] != "0" else "")
+              + f' [{r["rule"]}]' for r in rows]
     rates = [float(r["intersections_per_s"]) for r in rows]
     speedups = [float(r["speedup_vs_software"]) for r in rows]
-    software = rates[0] / speedups[0]
-    fig, ax = plt.subplots(figsize=(9, 4.2))
-    ax.barh(range(len(rows)), rates, color="tab:blue")
-    ax.axvline(software, color="k", ls="--", label="calibrated software rate")
+    colours = ["tab:grey" if r["rule"] == "paper" else "tab:blue" for r in rows]
+    fig, ax = plt.subplots(figsize=(9, 4.8))
+    ax.barh(range(len(rows)), rates, color=colours)
     for i, (rate, s) in enumerate(zip(rates, speedups)):
         ax.text(rate, i, f" {s:.1f}x", va="center", fontsize=8)
+    handles = [Patch(color="tab:grey", label="the paper's rule (its printed figures)"),
+               Patch(color="tab:blue", label="model (wrapper, slice lanes, result bank)")]
     ax.set_yticks(range(len(rows)))
-    ax.set_yticklabels(labels, fontsize=8)
+    ax.set_yticklabels(labels, fontsize=7)
+    ax.invert_yaxis()
     ax.set_xscale("log")
-    ax.set_xlabel("intersections per second")
-    ax.set_title("Sec 5.6: intersection rates the model predicts")
-    ax.legend(fontsize=8)
+    ax.set_xlabel("intersections per second (label: speedup over software)")
+    ax.set_title("Sec 5.6: intersection rates, the paper's rule and the model")
+    ax.legend(handles=handles, fontsize=8, loc="lower right")
     fig.tight_layout()
     fig.savefig(os.path.join(out, "estimates.png"), dpi=110)
 

@@ -103,7 +103,9 @@ std::vector<PaperScene> prepare_paper_scenes(const std::vector<PaperRow>& rows, 
         recorded.fixed_steps = 0;
         recorded.min_steps = p.row.steps;
         recorded.max_steps = p.recorded_steps;
-        p.functional = record_functional_run(p.scene, recorded, backend, bits, 1);
+        // The largest scene is the critical path: its backend may use every core, which the
+        // others leave idle once they are done (0 = every core).
+        p.functional = record_functional_run(p.scene, recorded, backend, bits, k == 0 ? 0 : 1);
         p.convergence_steps = p.functional.convergence_step;
       } catch (...) {
         errors[order[k]] = std::current_exception();

@@ -11,10 +11,10 @@
 #include "apps/cli_options.h"
 #include "apps/plot.h"
 #include "apps/progress.h"
-#include "host_sw/comparing_visibility.h"
-#include "host_sw/float_visibility.h"
-#include "host_sw/solution_error.h"
-#include "host_sw/visibility_factory.h"
+#include "radiosity/comparing_visibility.h"
+#include "radiosity/float_visibility.h"
+#include "studies/solution_error.h"
+#include "radiosity/visibility_factory.h"
 
 namespace rc {
 

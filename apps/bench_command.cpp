@@ -14,10 +14,10 @@
 #include "apps/cli_options.h"
 #include "apps/plot.h"
 #include "apps/progress.h"
-#include "host_sw/float_visibility.h"
-#include "host_sw/render.h"
-#include "host_sw/solution_error.h"
-#include "host_sw/timing_study.h"
+#include "radiosity/float_visibility.h"
+#include "radiosity/render.h"
+#include "studies/solution_error.h"
+#include "studies/timing_study.h"
 
 namespace rc {
 

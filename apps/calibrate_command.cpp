@@ -8,8 +8,8 @@
 #include "apps/cli_options.h"
 #include "apps/paper_workload.h"
 #include "apps/progress.h"
-#include "host_sw/calibration.h"
-#include "host_sw/calibration_variants.h"
+#include "studies/calibration.h"
+#include "studies/calibration_variants.h"
 
 namespace rc {
 
@@ -87,7 +87,7 @@ int run_calibrate(const CalibrateOptions& o) {
   const std::vector<PaperRow> rows = load_paper_table(o.table);
   const HostProfile base = find_host_profile(o.base);
   std::vector<HostProfile> variants;
-  for (const DriverModel& m : serial_driver_variants(base.driver_model)) variants.push_back(with_model(base, m));
+  for (const DriverModel& m : serial_driver_variants(base.driver_model)) variants.push_back(with_driver_model(base, m));
   const std::vector<PaperScene> scenes =
       prepare_paper_scenes(rows, o.visibility, 15, [&](const std::string& what) { progress.update("%s", what.c_str()); });
   const std::vector<TimingCase> cases = calibration_cases(scenes, base, variants);

@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "host_sw/radiosity.h"
+#include "radiosity/radiosity.h"
 #include "scenes/prepare.h"
 
 namespace rc {

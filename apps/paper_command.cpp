@@ -14,7 +14,7 @@
 #include "apps/paper_workload.h"
 #include "apps/plot.h"
 #include "apps/progress.h"
-#include "host_sw/calibration_variants.h"
+#include "studies/calibration_variants.h"
 
 namespace rc {
 
@@ -51,7 +51,7 @@ std::vector<SpreadCase> spread_cases(const std::vector<PaperScene>& scenes, cons
     for (const CalibratedVariant& v : variants) {
       if (!v.in_spread) continue;
       for (const DriverModel& m : with_each_overlap(v.profile.driver_model)) {
-        const HostProfile profile = with_model(v.profile, m);
+        const HostProfile profile = with_driver_model(v.profile, m);
         for (PaperImplementation impl : {PaperImplementation::TwoPipes, PaperImplementation::Concurrent}) {
           if (impl == PaperImplementation::TwoPipes && m.overlap != DriverModel::Overlap::FormFactors) continue;
           SpreadCase spread{i, static_cast<int>(impl), m.name()};

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "host_sw/timing_study.h"
+#include "studies/timing_study.h"
 #include "scenes/prepare.h"
 
 namespace rc {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "host_sw/radiosity.h"
+#include "radiosity/radiosity.h"
 #include "scenes/scene.h"
 
 namespace rc {

@@ -7,8 +7,8 @@
 #include "apps/cli_options.h"
 #include "apps/progress.h"
 #include "apps/report.h"
-#include "host_sw/png_writer.h"
-#include "host_sw/visibility_factory.h"
+#include "radiosity/png_writer.h"
+#include "radiosity/visibility_factory.h"
 
 namespace rc {
 

@@ -4,9 +4,9 @@
 
 #include <string>
 
-#include "host_sw/board_run.h"
-#include "host_sw/radiosity.h"
-#include "host_sw/render.h"
+#include "platform/board_run.h"
+#include "radiosity/radiosity.h"
+#include "radiosity/render.h"
 #include "scenes/prepare.h"
 
 namespace rc {

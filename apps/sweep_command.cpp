@@ -16,7 +16,7 @@
 #include "apps/paper_workload.h"
 #include "apps/plot.h"
 #include "apps/progress.h"
-#include "host_sw/config_sweep.h"
+#include "studies/config_sweep.h"
 
 namespace rc {
 
@@ -212,7 +212,7 @@ nlohmann::ordered_json sweep_json(const SweepOptions& o, const Scene& scene, con
   j["modelled_bank_capacity_bytes"] = banks;
   j["bank_capacity_note"] =
       "0: the profile's banks. Otherwise banks of this size, which change no pass, transfer or time for this "
-      "scene (no step batches with either size; host_sw/config_sweep.cpp), to keep the model's memory small";
+      "scene (no step batches with either size; studies/config_sweep.cpp), to keep the model's memory small";
   nlohmann::ordered_json records = nlohmann::ordered_json::array();
   for (const SweepRow& r : rows) records.push_back(sweep_row_json(r));
   j["rows"] = records;

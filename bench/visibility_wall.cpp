@@ -19,9 +19,9 @@
 #include <string>
 #include <vector>
 
-#include "host_sw/fast_visibility.h"
-#include "host_sw/fixed_visibility.h"
-#include "host_sw/radiosity.h"
+#include "radiosity/fast_visibility.h"
+#include "radiosity/fixed_visibility.h"
+#include "radiosity/radiosity.h"
 #include "scenes/prepare.h"
 
 namespace {

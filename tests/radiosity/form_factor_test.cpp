@@ -3,7 +3,7 @@
 
 #include <glm/gtc/constants.hpp>
 
-#include "host_sw/form_factor.h"
+#include "radiosity/form_factor.h"
 #include "scenes/subdivide.h"
 
 namespace rc {

@@ -2,12 +2,12 @@
 // need and reuses a repeated shooter's answer (visibility_factory.h). Neither may change a bit.
 #include <gtest/gtest.h>
 
-#include "host_sw/fixed_visibility.h"
-#include "host_sw/needed_only_visibility.h"
-#include "host_sw/radiosity.h"
-#include "host_sw/shooter_memo_visibility.h"
-#include "host_sw/visibility_factory.h"
-#include "common/simple_scenes.h"
+#include "radiosity/fixed_visibility.h"
+#include "radiosity/needed_only_visibility.h"
+#include "radiosity/radiosity.h"
+#include "radiosity/shooter_memo_visibility.h"
+#include "radiosity/visibility_factory.h"
+#include "tests/common/simple_scenes.h"
 
 namespace rc {
 namespace {

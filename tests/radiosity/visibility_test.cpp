@@ -1,8 +1,8 @@
 #include <gtest/gtest.h>
 
-#include "host_sw/float_visibility.h"
-#include "host_sw/radiosity.h"
-#include "common/simple_scenes.h"
+#include "radiosity/float_visibility.h"
+#include "radiosity/radiosity.h"
+#include "tests/common/simple_scenes.h"
 
 namespace rc {
 namespace {

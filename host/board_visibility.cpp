@@ -1,0 +1,481 @@
+#include "host/board_visibility.h"
+
+#include <algorithm>
+#include <numeric>
+#include <stdexcept>
+
+#include "board/register_map.h"
+#include "board/word_format.h"
+#include "host/trace_writer.h"
+
+namespace rc {
+
+namespace reg = board::reg;
+using sc_core::sc_time;
+
+BoardVisibility::BoardVisibility(board::Rc2000& board, tlm::tlm_initiator_socket<>& pci, HostCpuModel& cpu,
+                                 BoardVisibilityOptions options, TraceWriter* trace)
+    : board_(board),
+      pci_(pci),
+      cpu_(cpu),
+      options_(options),
+      trace_(trace),
+      layout_(board.layout()),
+      word_bytes_(board.layout().word_bits / 8),
+      rays_per_batch_(board.layout().max_rays_per_batch),
+      faces_per_set_(board.layout().max_faces_per_set) {
+  if (options_.oracle != nullptr && board.params().model != board::WrapperModel::fast) {
+    throw std::invalid_argument("a visibility oracle needs the fast wrapper model (the cycle-level one always computes)");
+  }
+  board_.wrapper().on_pass([this](const board::PassRecord& r) { on_pass(r); });
+  pio_extension_.access_bytes = word_bytes_;
+  pio_extension_.read_round_trip = cpu_.profile().driver_model.pio_read_round_trip;
+}
+
+std::size_t BoardVisibility::batch_size(std::size_t b) const {
+  return std::min(rays_, batch_first(b) + rays_per_batch_) - batch_first(b);
+}
+
+std::size_t BoardVisibility::set_size(std::size_t s) const {
+  return std::min(faces_.size(), set_first(s) + faces_per_set_) - set_first(s);
+}
+
+// ---- bus access -----------------------------------------------------------------------------------
+
+void BoardVisibility::host_event(const char* name, const sc_time& from) {
+  if (trace_ != nullptr && trace_->wants(cpu_.step())) trace_->complete("host", name, from, cpu_.now());
+}
+
+// Register accesses are temporally decoupled like the DMAs: issued at the host's local time, which
+// moves to their completion. The bus hands the registers the access time (ControlRegs), so START
+// and the acknowledge take effect when a synced host's would.
+void BoardVisibility::write_registers(std::uint64_t offset, std::initializer_list<std::uint32_t> values) {
+  if (values.size() > register_words_.size()) throw std::logic_error("register burst longer than the register file");
+  std::copy(values.begin(), values.end(), register_words_.begin());
+  register_access(tlm::TLM_WRITE_COMMAND, offset, static_cast<unsigned>(values.size()));
+}
+
+std::uint32_t BoardVisibility::read_register(std::uint64_t offset) {
+  register_access(tlm::TLM_READ_COMMAND, offset, 1);
+  return register_words_[0];
+}
+
+// One payload for every access: nothing waits between setting it up and its return, so no other
+// access can interleave (and a payload's construction allocates its extension array).
+void BoardVisibility::register_access(tlm::tlm_command command, std::uint64_t offset, unsigned words) {
+  tlm::tlm_generic_payload& trans = register_trans_;
+  const unsigned length = words * 4;
+  trans.set_command(command);
+  trans.set_address(board::Rc2000::kBar0 + offset);
+  trans.set_data_ptr(reinterpret_cast<unsigned char*>(register_words_.data()));
+  trans.set_data_length(length);
+  trans.set_streaming_width(length);
+  trans.set_byte_enable_ptr(nullptr);
+  trans.set_dmi_allowed(false);
+  trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+  const sc_time issued = cpu_.local();
+  sc_time delay = issued;
+  pci_->b_transport(trans, delay);
+  if (!trans.is_response_ok()) {
+    throw std::runtime_error(std::string("register ") + (command == tlm::TLM_WRITE_COMMAND ? "write" : "read") +
+                             " failed: " + trans.get_response_string());
+  }
+  cpu_.set_local(delay);
+  stats_.pci += delay - issued;
+  ++stats_.register_accesses;
+}
+
+void BoardVisibility::transfer(tlmx::DmaDirection direction, void* host, std::uint64_t address, std::uint64_t bytes,
+                               const char* what, bool no_data) {
+  if (bytes == 0) return;
+  if (cpu_.profile().driver_model.transfer == DriverModel::Transfer::Pio) {
+    programmed_io(direction, host, address, bytes, what, no_data);
+  } else {
+    dma(direction, host, address, bytes, what, no_data);
+  }
+}
+
+// The CPU itself moves the words through the BAR window, one PCI transaction each (the bus times
+// the payload as that, tlm/programmed_io_extension.h); it is blocked meanwhile, and no driver entry
+// is needed (the window is mapped into the driver's address space).
+void BoardVisibility::programmed_io(tlmx::DmaDirection direction, void* host, std::uint64_t address,
+                                    std::uint64_t bytes, const char* what, bool no_data) {
+  tlm::tlm_generic_payload& trans = pio_trans_;
+  trans.set_command(direction == tlmx::DmaDirection::to_device ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND);
+  trans.set_address(address);
+  trans.set_data_ptr(static_cast<unsigned char*>(host));
+  trans.set_data_length(static_cast<unsigned>(bytes));
+  trans.set_streaming_width(static_cast<unsigned>(bytes));
+  trans.set_byte_enable_ptr(nullptr);
+  trans.set_dmi_allowed(false);
+  trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+  trans.set_extension(&pio_extension_);
+  if (no_data) trans.set_extension(&pio_no_data_);
+  const sc_time issued = cpu_.local();
+  sc_time delay = issued;
+  pci_->b_transport(trans, delay);
+  trans.clear_extension(&pio_extension_);
+  if (no_data) trans.clear_extension(&pio_no_data_);
+  if (!trans.is_response_ok()) {
+    throw std::runtime_error(std::string("programmed I/O of ") + what + " failed: " + trans.get_response_string());
+  }
+  const sc_time start = sc_core::sc_time_stamp() + issued;
+  cpu_.set_local(delay);
+  stats_.pci += delay - issued;
+  stats_.pio += delay - issued;
+  ++stats_.pio_transfers;
+  (direction == tlmx::DmaDirection::to_device ? stats_.pio_bytes_written : stats_.pio_bytes_read) += bytes;
+  (direction == tlmx::DmaDirection::to_device ? stats_.bytes_to_board : stats_.bytes_to_host) += bytes;
+  if (trace_ != nullptr && trace_->wants(cpu_.step())) {
+    trace_->complete("host", std::string("pio ") + what, start, cpu_.now(), {{"bytes", bytes}});
+  }
+}
+
+void BoardVisibility::dma(tlmx::DmaDirection direction, void* host, std::uint64_t address, std::uint64_t bytes,
+                          const char* what, bool no_data) {
+  cpu_.charge(DriverWork::Call, 1);
+  // Temporally decoupled: issued at the host's local time, which moves to the completion. The bus
+  // reserves itself at each burst's request time, so the times are those of a synced transfer.
+  sc_time local = cpu_.local();
+  const tlmx::DmaResult r = board_.dma.transfer({direction, host, address, bytes, no_data}, local);
+  cpu_.set_local(local);
+  if (!r.ok()) throw std::runtime_error(std::string("DMA of ") + what + " failed");
+  stats_.pci += r.duration();
+  ++stats_.dma_transfers;
+  (direction == tlmx::DmaDirection::to_device ? stats_.bytes_to_board : stats_.bytes_to_host) += bytes;
+  if (trace_ != nullptr && trace_->wants(cpu_.step())) {
+    trace_->complete("dma", what, r.start, r.end, {{"bytes", bytes}});
+    trace_->complete("host", std::string("dma ") + what, r.start, r.end);
+  }
+}
+
+// ---- faces ------------------------------------------------------------------------------------------
+
+void BoardVisibility::load_faces(const std::vector<Triangle>& faces) {
+  const int bits = layout_.bits;
+  if (faces.size() > faces_per_set_ && !options_.allow_batching) {
+    throw std::invalid_argument("the scene has " + std::to_string(faces.size()) + " faces but one face set holds " +
+                                std::to_string(faces_per_set_) + " (face bank " +
+                                std::to_string(board_.params().bank_capacity_bytes) +
+                                " bytes); allow batching to split them into sets");
+  }
+  faces_.clear();
+  faces_.reserve(faces.size());
+  for (const Triangle& t : faces) faces_.push_back(pipeline::make_face_record(t, bits));  // charged per upload
+  if (options_.oracle != nullptr) options_.oracle->load_faces(faces);
+  stats_.face_sets = faces_.empty() ? 0 : (faces_.size() + faces_per_set_ - 1) / faces_per_set_;
+  resident_set_ = -1;
+  if (stats_.face_sets == 1) upload_faces(0);  // resident for the whole run
+}
+
+// A set already in the face bank is sent again (DriverModel::FaceUpload::EveryPass) as a transfer
+// that carries no bytes: the bank holds exactly those words already, so only time and traffic count.
+void BoardVisibility::upload_faces(std::size_t set) {
+  const std::size_t n = set_size(set);
+  charge_faces(n);
+  const bool resident = resident_set_ == static_cast<long>(set);
+  if (resident) {
+    buffer_.resize(n * 9 * word_bytes_);  // contents immaterial
+  } else {
+    buffer_.assign(n * 9 * word_bytes_, 0);
+    std::uint64_t words[9];
+    for (std::size_t f = 0; f < n; ++f) {
+      board::face_record_words(faces_[set_first(set) + f], words);
+      for (unsigned i = 0; i < 9; ++i) board::store_word(buffer_.data(), f * 9 + i, word_bytes_, words[i]);
+    }
+  }
+  transfer(tlmx::DmaDirection::to_device, buffer_.data(), board_.bank_pci_address(layout_.face_bank), buffer_.size(),
+           "faces", resident);
+  resident_set_ = static_cast<long>(set);
+  ++stats_.face_set_uploads;
+}
+
+// ---- one step -----------------------------------------------------------------------------------------
+
+// Rays grouped by end face in face order (the solver already sends them so; otherwise a stable
+// counting sort), quantised into the hardware's format.
+void BoardVisibility::order_segments(const SegmentBatch& batch) {
+  rays_ = batch.size();
+  identity_order_ = std::is_sorted(batch.end_faces.begin(), batch.end_faces.end());
+  order_.resize(rays_);
+  std::iota(order_.begin(), order_.end(), std::size_t{0});
+  if (!identity_order_)
+    std::stable_sort(order_.begin(), order_.end(),
+                     [&](std::size_t a, std::size_t b) { return batch.end_faces[a] < batch.end_faces[b]; });
+  end_faces_.resize(rays_);
+  x_.resize(rays_);
+  y_.resize(rays_);
+  z_.resize(rays_);
+  for (std::size_t i = 0; i < rays_; ++i) {
+    const std::size_t s = order_[i];
+    const pipeline::FixedVec3 e = pipeline::quantize_point(batch.ends[s], layout_.bits);
+    end_faces_[i] = batch.end_faces[s];
+    x_[i] = e.x;
+    y_[i] = e.y;
+    z_[i] = e.z;
+  }
+  start_ = pipeline::quantize_point(batch.start, layout_.bits);
+  source_face_ = batch.source_face >= 0 ? static_cast<std::uint32_t>(batch.source_face) : reg::kNoFace;
+  charge_end_points(rays_);
+}
+
+// Batches of rays, each against every face set; the set already in the face bank goes first.
+void BoardVisibility::plan_passes() {
+  passes_.clear();
+  next_pass_ = 0;
+  const std::size_t batches = (rays_ + rays_per_batch_ - 1) / rays_per_batch_;
+  const std::size_t sets = stats_.face_sets;
+  long resident = resident_set_;
+  for (std::size_t b = 0; b < batches; ++b) {
+    std::vector<std::size_t> order;
+    if (resident >= 0) order.push_back(static_cast<std::size_t>(resident));
+    for (std::size_t s = 0; s < sets; ++s)
+      if (static_cast<long>(s) != resident) order.push_back(s);
+    for (std::size_t i = 0; i < order.size(); ++i) passes_.push_back({b, order[i], i == 0, i + 1 == order.size()});
+    if (!order.empty()) resident = static_cast<long>(order.back());  // what the next batch finds in the bank
+  }
+  stats_.ray_batches += batches;
+  stats_.max_batches_per_step = std::max<std::uint64_t>(stats_.max_batches_per_step, batches);
+}
+
+void BoardVisibility::submit(const SegmentBatch& batch) {
+  timing_only_ = false;
+  if (batch.end_faces.size() != batch.size()) {
+    throw std::invalid_argument("segment batch has " + std::to_string(batch.size()) + " end points but " +
+                                std::to_string(batch.end_faces.size()) + " end faces");
+  }
+  if (batch.size() > rays_per_batch_ && !options_.allow_batching) {
+    throw std::invalid_argument("a step has " + std::to_string(batch.size()) + " segments but one batch holds " +
+                                std::to_string(rays_per_batch_) + " (ray and result banks of " +
+                                std::to_string(board_.params().bank_capacity_bytes) +
+                                " bytes); allow batching to split them");
+  }
+  if (dual_cpu()) cpu_.fork_second_cpu();
+  order_segments(batch);
+  blocked_.assign(rays_, 0);
+  if (options_.oracle != nullptr) ask_oracle(batch);
+  run_step();
+}
+
+// Timing replay: a step of `segments` segments with blank data. The rays are "grouped" trivially,
+// the buffers moved have their real sizes, and the lanes copy an all-clear answer.
+void BoardVisibility::submit_timing_only(std::size_t segments, int source_face) {
+  if (board_.params().model != board::WrapperModel::fast) {
+    throw std::invalid_argument("timing replay needs the fast wrapper model");
+  }
+  if (!timing_only_ || rays_ != segments) {  // a replay's steps mostly have the same size: set up once
+    rays_ = segments;
+    order_.resize(rays_);
+    std::iota(order_.begin(), order_.end(), std::size_t{0});
+    end_faces_.assign(rays_, 0);
+    blocked_.assign(rays_, 0);
+  }
+  start_ = {0, 0, 0};
+  source_face_ = source_face >= 0 ? static_cast<std::uint32_t>(source_face) : reg::kNoFace;
+  if (dual_cpu()) cpu_.fork_second_cpu();
+  charge_end_points(rays_);
+  timing_only_ = true;
+  run_step();
+}
+
+void BoardVisibility::collect_timing_only() {
+  finish_step();
+  cpu_.join_second_cpu();
+}
+
+void BoardVisibility::run_step() {
+  if (rays_ == 0 || faces_.empty()) {
+    passes_.clear();
+    next_pass_ = 0;
+    return;
+  }
+  plan_passes();
+  if (options_.concurrent) {
+    start_pass(passes_[0]);  // the rest in collect(), after the host's form factors
+    return;
+  }
+  for (const Pass& p : passes_) {
+    start_pass(p);
+    finish_pass(p);
+  }
+  next_pass_ = passes_.size();
+}
+
+void BoardVisibility::collect(std::vector<std::uint8_t>& blocked) {
+  finish_step();
+  cpu_.join_second_cpu();
+  blocked.assign(rays_, 0);
+  for (std::size_t i = 0; i < rays_; ++i) blocked[order_[i]] = blocked_[i];
+}
+
+void BoardVisibility::finish_step() {
+  if (next_pass_ < passes_.size()) {
+    finish_pass(passes_[next_pass_]);  // started by submit()
+    for (++next_pass_; next_pass_ < passes_.size(); ++next_pass_) {
+      start_pass(passes_[next_pass_]);
+      finish_pass(passes_[next_pass_]);
+    }
+  }
+}
+
+// The oracle answers in segment order; the banks hold the rays in end-face order.
+void BoardVisibility::ask_oracle(const SegmentBatch& batch) {
+  std::vector<std::uint8_t> answer;
+  options_.oracle->submit(batch);
+  options_.oracle->collect(answer);
+  oracle_answer_.resize(rays_);
+  for (std::size_t i = 0; i < rays_; ++i) oracle_answer_[i] = answer[order_[i]];
+}
+
+// ---- one pass ----------------------------------------------------------------------------------------
+
+void BoardVisibility::upload_rays(std::size_t batch) {
+  const std::size_t first = batch_first(batch);
+  const board::RaySplit& split = split_(batch_size(batch));
+  if (!timing_only_) {
+    board::pack_rays(layout_, split, x_.data() + first, y_.data() + first, z_.data() + first, images_);
+    blank_images_rays_ = kNoBlankImages;
+  } else if (blank_images_rays_ != batch_size(batch)) {  // only their sizes matter: made once per size
+    board::blank_ray_images(layout_, split, images_);
+    blank_images_rays_ = batch_size(batch);
+  }
+  std::uint64_t bytes = 0;
+  for (const auto& image : images_) bytes += image.size();
+  charge_ray_words(bytes / word_bytes_);
+  for (unsigned b = 0; b < images_.size(); ++b) {
+    transfer(tlmx::DmaDirection::to_device, images_[b].data(), board_.bank_pci_address(b), images_[b].size(), "rays",
+             timing_only_);
+  }
+}
+
+// One word per face of the set: how many of the batch's rays end on it. MASK_START (returned via
+// the registers) counts the batch's rays ending on earlier faces.
+void BoardVisibility::upload_mask(std::size_t batch, std::size_t set) {
+  const auto begin = end_faces_.begin() + static_cast<long>(batch_first(batch));
+  const auto end = begin + static_cast<long>(batch_size(batch));
+  const int f0 = static_cast<int>(set_first(set));
+  const std::size_t n = set_size(set);
+  buffer_.assign(n * word_bytes_, 0);
+  // One run of equal end faces at a time: O(distinct faces x log rays), not O(faces x log rays).
+  for (auto it = std::lower_bound(begin, end, f0); it != end && *it < f0 + static_cast<int>(n);) {
+    const auto next = std::upper_bound(it, end, *it);
+    board::store_word(buffer_.data(), static_cast<std::size_t>(*it - f0), word_bytes_, static_cast<std::uint64_t>(next - it));
+    it = next;
+  }
+  const std::uint64_t address = layout_.mask_bank ? board_.bank_pci_address(*layout_.mask_bank)
+                                                  : board_.bank_pci_address(layout_.face_bank) + n * 9 * word_bytes_;
+  transfer(tlmx::DmaDirection::to_device, buffer_.data(), address, buffer_.size(), "own-face table");
+}
+
+void BoardVisibility::start_pass(const Pass& pass) {
+  if (pass.first_of_batch) upload_rays(pass.batch);
+  const bool faces_every_pass = cpu_.profile().driver_model.face_upload == DriverModel::FaceUpload::EveryPass;
+  if (resident_set_ != static_cast<long>(pass.set) || faces_every_pass) upload_faces(pass.set);
+  upload_mask(pass.batch, pass.set);
+  const auto begin = end_faces_.begin() + static_cast<long>(batch_first(pass.batch));
+  const auto mask_start = std::lower_bound(begin, begin + static_cast<long>(batch_size(pass.batch)),
+                                           static_cast<int>(set_first(pass.set))) - begin;
+  cpu_.charge(DriverWork::Call, 1);
+  const sc_time from = cpu_.now();
+  write_registers(reg::kRayCount,
+                  {static_cast<std::uint32_t>(batch_size(pass.batch)), static_cast<std::uint32_t>(set_size(pass.set)),
+                   static_cast<std::uint32_t>(set_first(pass.set)), source_face_, static_cast<std::uint32_t>(start_.x),
+                   static_cast<std::uint32_t>(start_.y), static_cast<std::uint32_t>(start_.z),
+                   static_cast<std::uint32_t>(mask_start)});
+  board_.wrapper().set_oracle(options_.oracle != nullptr ? oracle_answer_.data() + batch_first(pass.batch) : nullptr);
+  board_.wrapper().set_timing_only(timing_only_);
+  cpu_.clear_intervals();  // host compute from here on may overlap the pass
+  write_registers(reg::kControl, {reg::kStart | (pass.first_of_batch ? reg::kClear : 0u)});
+  host_event("start pass", from);
+}
+
+void BoardVisibility::finish_pass(const Pass& pass) {
+  cpu_.charge(DriverWork::Call, 1);
+  cpu_.sync();
+  const sc_time from = sc_core::sc_time_stamp();
+  board_.irq.wait_raised();
+  stats_.waiting += sc_core::sc_time_stamp() - from;
+  host_event("wait for interrupt", from);
+  if (trace_ != nullptr && trace_->wants(cpu_.step())) trace_->instant("irq", "seen by host", sc_core::sc_time_stamp());
+  const std::uint32_t status = read_register(reg::kStatus);
+  write_registers(reg::kStatus, {reg::kDone | reg::kError});  // acknowledge: lowers the interrupt
+  if (status & reg::kError) {
+    throw std::runtime_error("the board reported error " + std::to_string(read_register(reg::kErrorCode)) +
+                             " (register_map.h ErrorCode) for a pass of " + std::to_string(batch_size(pass.batch)) +
+                             " rays and " + std::to_string(set_size(pass.set)) + " faces");
+  }
+  stats_.overlap += cpu_.overlap(last_record_.start, last_record_.end);
+  if (pass.last_of_batch) read_results(pass.batch);
+}
+
+void BoardVisibility::read_results(std::size_t batch) {
+  const board::RaySplit& split = split_(batch_size(batch));
+  if (timing_only_) {
+    buffer_.resize(split.result_words * word_bytes_);  // moved without data: contents immaterial
+  } else {
+    buffer_.assign(split.result_words * word_bytes_, 0);
+  }
+  transfer(tlmx::DmaDirection::to_host, buffer_.data(), board_.bank_pci_address(layout_.result_bank), buffer_.size(),
+           "results", timing_only_);
+  if (!timing_only_) board::unpack_results(layout_, split, buffer_.data(), blocked_.data() + batch_first(batch));
+  charge_results(batch_size(batch), split.result_words);
+}
+
+// ---- the driver's CPU work, in the profile's cost unit ---------------------------------------------
+
+bool BoardVisibility::dual_cpu() const {
+  return options_.concurrent && cpu_.profile().driver_model.overlap == DriverModel::Overlap::DualCpu;
+}
+
+bool BoardVisibility::per_word() const {
+  return cpu_.profile().driver_model.cost_unit == DriverModel::CostUnit::PerWord;
+}
+
+void BoardVisibility::charge_end_points(std::size_t rays) {
+  if (per_word()) {
+    cpu_.charge(DriverWork::CoordinateConvert, 3 * rays);
+  } else {
+    cpu_.charge(DriverWork::SegmentPack, rays);
+  }
+}
+
+void BoardVisibility::charge_ray_words(std::uint64_t words) {
+  if (per_word() && words != 0) cpu_.charge(DriverWork::WordStore, words);
+}
+
+void BoardVisibility::charge_faces(std::size_t faces) {
+  if (faces == 0) return;
+  if (per_word()) {
+    cpu_.charge(DriverWork::CoordinateConvert, 9 * faces);
+    cpu_.charge(DriverWork::WordStore, 9 * faces);
+  } else {
+    cpu_.charge(DriverWork::FacePack, faces);
+  }
+}
+
+void BoardVisibility::charge_results(std::size_t rays, std::uint64_t result_words) {
+  if (per_word()) {
+    cpu_.charge(DriverWork::WordLoad, result_words);
+  } else {
+    cpu_.charge(DriverWork::ResultUnpack, rays);
+  }
+}
+
+// Runs in the wrapper's thread when a pass completes.
+void BoardVisibility::on_pass(const board::PassRecord& r) {
+  last_record_ = r;
+  ++stats_.passes;
+  stats_.tests += r.rays * r.faces;
+  stats_.fpga_busy += r.end - r.start;
+  PassLimitTally& limit = stats_.limits[r.limit];
+  ++limit.passes;
+  limit.fpga_busy += r.end - r.start;
+  if (trace_ == nullptr || !trace_->wants(cpu_.step())) return;
+  for (std::size_t l = 0; l < r.lane_rays.size(); ++l) {
+    trace_->complete("lane " + std::to_string(l), "pass", r.start, r.end,
+                     {{"rays", r.lane_rays[l]}, {"faces", r.faces}, {"cycles", r.cycles}, {"limit", r.limit}});
+  }
+  trace_->instant("irq", "raised by board", r.end);
+}
+
+}  // namespace rc

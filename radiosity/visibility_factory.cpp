@@ -1,0 +1,25 @@
+#include "radiosity/visibility_factory.h"
+
+#include <stdexcept>
+
+#include "radiosity/fast_visibility.h"
+#include "radiosity/fixed_visibility.h"
+#include "radiosity/float_visibility.h"
+#include "radiosity/needed_only_visibility.h"
+#include "radiosity/shooter_memo_visibility.h"
+
+namespace rc {
+
+std::unique_ptr<VisibilityBackend> make_software_visibility(const std::string& name, int bits, int threads) {
+  if (name == "float") return std::make_unique<FloatVisibility>();
+  if (name == "fixed") return std::make_unique<FixedPointVisibility>(bits);
+  if (name == "fast") return std::make_unique<FastFixedVisibility>(bits, threads);
+  throw std::invalid_argument("unknown visibility backend '" + name + "' (expected float, fixed or fast)");
+}
+
+std::unique_ptr<VisibilityBackend> make_functional_answer(const std::string& name, int bits, int threads) {
+  return std::make_unique<ShooterMemoVisibility>(
+      std::make_unique<NeededOnlyVisibility>(make_software_visibility(name, bits, threads)));
+}
+
+}  // namespace rc

@@ -1,0 +1,421 @@
+#include "studies/config_sweep.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <set>
+#include <stdexcept>
+#include <tuple>
+
+#include "board/bank_layout.h"
+#include "board/design_fit.h"
+
+namespace rc {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::string trim(const std::string& s) {
+  const auto first = s.find_first_not_of(" \t");
+  if (first == std::string::npos) return "";
+  return s.substr(first, s.find_last_not_of(" \t") - first + 1);
+}
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> items;
+  std::size_t from = 0;
+  while (true) {
+    const std::size_t to = text.find(separator, from);
+    items.push_back(trim(text.substr(from, to == std::string::npos ? std::string::npos : to - from)));
+    if (to == std::string::npos) return items;
+    from = to + 1;
+  }
+}
+
+// A whole item of decimal digits; no sign (a '-' separates a range), no trailing characters.
+bool parse_number(const std::string& s, long& value) {
+  if (s.empty() || s.size() > 9 || s.find_first_not_of("0123456789") != std::string::npos) return false;
+  value = std::stol(s);
+  return true;
+}
+
+}  // namespace
+
+// ---- option lists -----------------------------------------------------------------------------------
+
+std::vector<int> parse_int_list(const std::string& text, const std::string& option, int min, int max) {
+  const std::string range = std::to_string(min) + ".." + std::to_string(max);
+  if (trim(text).empty()) throw std::invalid_argument(option + ": empty list (expected e.g. 1-4,8 within " + range + ")");
+  std::set<int> values;
+  for (const std::string& item : split(text, ',')) {
+    const std::size_t dash = item.find('-');
+    long low = 0, high = 0;
+    const bool ok = dash == std::string::npos
+                        ? parse_number(item, low) && (high = low, true)
+                        : parse_number(trim(item.substr(0, dash)), low) && parse_number(trim(item.substr(dash + 1)), high);
+    if (!ok) {
+      throw std::invalid_argument(option + ": '" + item + "' is not a number or a range LOW-HIGH (e.g. 1-4,8 within " +
+                                  range + ")");
+    }
+    if (low > high) throw std::invalid_argument(option + ": '" + item + "' is a reversed range (write LOW-HIGH)");
+    if (low < min || high > max) {
+      throw std::invalid_argument(option + ": '" + item + "' is outside " + range);
+    }
+    for (long v = low; v <= high; ++v) values.insert(static_cast<int>(v));
+  }
+  return {values.begin(), values.end()};
+}
+
+std::vector<std::string> parse_name_list(const std::string& text, const std::string& option) {
+  if (trim(text).empty()) throw std::invalid_argument(option + ": empty list");
+  std::vector<std::string> names;
+  for (const std::string& name : split(text, ',')) {
+    if (name.empty()) throw std::invalid_argument(option + ": empty name in '" + text + "'");
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  }
+  return names;
+}
+
+std::vector<bool> parse_concurrency(const std::string& text) {
+  if (text == "off") return {false};
+  if (text == "on") return {true};
+  if (text == "both") return {false, true};
+  throw std::invalid_argument("--concurrent: expected on, off or both, got '" + text + "'");
+}
+
+StepsChoice parse_steps(const std::string& text) {
+  StepsChoice c;
+  if (text == "paper") return c;
+  if (text == "converge") {
+    c.kind = StepsChoice::Kind::converge;
+    return c;
+  }
+  long steps = 0;
+  if (!parse_number(text, steps) || steps < 1) {
+    throw std::invalid_argument("--steps: expected paper, converge or a positive step count, got '" + text + "'");
+  }
+  c.kind = StepsChoice::Kind::fixed;
+  c.steps = static_cast<int>(steps);
+  return c;
+}
+
+// ---- configurations ---------------------------------------------------------------------------------
+
+std::string SweepConfig::label() const {
+  return device + " " + std::to_string(bits) + "-bit " + (concurrent ? "concurrent " : "serial ") +
+         std::to_string(lanes) + (lanes == 1 ? " lane " : " lanes ") + std::to_string(banks) + " banks";
+}
+
+std::vector<SweepConfig> enumerate_configs(const SweepAxes& a) {
+  if (a.devices.empty() || a.bits.empty() || a.concurrent.empty() || a.lanes.empty() || a.banks.empty()) {
+    throw std::invalid_argument("a sweep needs at least one device, width, driver, lane count and bank count");
+  }
+  const double count = static_cast<double>(a.devices.size()) * a.bits.size() * a.concurrent.size() * a.lanes.size() *
+                       a.banks.size();
+  if (count > kMaxSweepConfigs) {
+    throw std::invalid_argument("the sweep spans " + std::to_string(static_cast<long long>(count)) +
+                                " configurations (at most " + std::to_string(kMaxSweepConfigs) + "); narrow the lists");
+  }
+  std::vector<SweepConfig> configs;
+  for (const std::string& device : a.devices)
+    for (int bits : a.bits)
+      for (bool concurrent : a.concurrent)
+        for (int lanes : a.lanes)
+          for (int banks : a.banks)
+            configs.push_back({device, bits, concurrent, static_cast<unsigned>(lanes), static_cast<unsigned>(banks)});
+  return configs;
+}
+
+std::string to_string(Validity v) {
+  switch (v) {
+    case Validity::ok: return "ok";
+    case Validity::does_not_fit: return "does_not_fit";
+    case Validity::too_few_banks: return "too_few_banks";
+    case Validity::other: return "other";
+  }
+  return "other";
+}
+
+ConfigChecker::ConfigChecker(const std::vector<std::string>& devices, const std::string& host)
+    : resources_(pipeline::ResourceModel::load_default()), host_(host) {
+  (void)find_host_profile(host);  // an unknown host fails here, not as every configuration's reason
+  for (const std::string& d : devices) devices_.emplace(d, board::find_device_profile(d));
+}
+
+const board::DeviceProfile& ConfigChecker::device(const std::string& name) const {
+  const auto it = devices_.find(name);
+  if (it == devices_.end()) throw std::invalid_argument("device '" + name + "' was not loaded by the checker");
+  return it->second;
+}
+
+// The two checks of make_board_setup, in its order, so that each rejection gets its kind; then
+// make_board_setup itself, so that "ok" means what a timing case will accept.
+ConfigCheck ConfigChecker::check(const SweepConfig& c) const {
+  ConfigCheck out;
+  const board::DeviceProfile& d = device(c.device);
+  try {
+    const board::DesignFit fit = board::fit_design(d, resources_, static_cast<int>(c.lanes), c.bits);
+    if (!fit.fits) {
+      out.validity = Validity::does_not_fit;
+      out.reason = fit.describe();
+      return out;
+    }
+    out.clock_mhz = fit.clock_mhz;
+    try {
+      (void)board::make_bank_layout(c.lanes, c.banks, c.bits, d.bank_word_bits, d.bank_capacity_bytes);
+    } catch (const std::invalid_argument& e) {
+      out.validity = Validity::too_few_banks;
+      out.reason = e.what();
+      return out;
+    }
+    out.options.device = c.device;
+    out.options.lanes = c.lanes;
+    out.options.banks = c.banks;
+    out.options.bits = c.bits;
+    out.options.concurrent = c.concurrent;
+    out.options.host = host_;
+    (void)make_board_setup(out.options);
+  } catch (const std::invalid_argument& e) {
+    out.validity = Validity::other;
+    out.reason = e.what();
+  }
+  return out;
+}
+
+// Bank capacity enters the timing only through batching: it bounds the rays of a batch, the faces of
+// a set, and each ray group's packets, which can move rays between groups (split_rays). A bank of
+// W >= 3 R words never caps a group's packets for R rays or fewer (a group's stream needs at most
+// 3 R cycles, and a group of k banks holds W k / 3 packets), holds their R result words, and with
+// W >= 10 F words holds F face records and their own-face table. When the profile's banks satisfy
+// both and a smaller power of two does too, passes, splits, transfers and times are identical with
+// the smaller banks; only the host memory the model allocates (every bank's bytes) shrinks.
+std::uint64_t ConfigChecker::compact_bank_capacity(const SweepConfig& c, std::uint64_t max_rays,
+                                                   std::uint64_t faces) const {
+  const board::DeviceProfile& d = device(c.device);
+  const std::uint64_t word_bytes = d.bank_word_bits / 8;
+  const std::uint64_t words = std::max<std::uint64_t>({3 * max_rays, 10 * faces, 1});
+  if (words * word_bytes > d.bank_capacity_bytes) return 0;  // the profile's banks batch: keep them
+  std::uint64_t bytes = 4096;
+  while (bytes < words * word_bytes) bytes *= 2;
+  return bytes < d.bank_capacity_bytes ? bytes : 0;
+}
+
+// ---- results ----------------------------------------------------------------------------------------
+
+SweepRow invalid_row(const SweepConfig& config, const ConfigCheck& check, int steps) {
+  SweepRow r;
+  r.config = config;
+  r.validity = check.validity;
+  r.reason = check.reason;
+  r.steps = steps;
+  r.clock_mhz = check.clock_mhz > 0 ? check.clock_mhz : kNaN;
+  for (double* x : {&r.nominal_rays_per_cycle, &r.simulated_seconds, &r.fpga_busy_seconds, &r.host_compute_seconds,
+                    &r.driver_cpu_seconds, &r.pci_transfer_seconds, &r.waiting_seconds, &r.pci_utilisation,
+                    &r.max_bank_utilisation, &r.mean_lane_utilisation, &r.intersections_per_second_while_busy,
+                    &r.fpga_limit_share, &r.speedup_vs_one_lane, &r.speedup_vs_software})
+    *x = kNaN;
+  return r;
+}
+
+namespace {
+
+double ratio(double a, double b) { return b > 0 ? a / b : kNaN; }
+
+void busiest_bank(const nlohmann::ordered_json& banks, double fpga_busy, SweepRow& r) {
+  double most = -1;
+  for (const auto& b : banks) {
+    const double busy = b.at("busy_seconds").get<double>();
+    if (busy <= most) continue;  // the first of equal banks wins
+    most = busy;
+    r.busiest_bank = b.at("bank").get<int>();
+    r.busiest_bank_role = b.at("role").get<std::string>();
+  }
+  r.max_bank_utilisation = most >= 0 ? ratio(most, fpga_busy) : kNaN;
+}
+
+void dominant_limit(const nlohmann::ordered_json& limits, SweepRow& r) {
+  double most = -1, total = 0;
+  for (const auto& l : limits) {
+    const double busy = l.at("fpga_busy_seconds").get<double>();
+    total += busy;
+    if (busy <= most) continue;
+    most = busy;
+    r.fpga_limit = l.at("limit").get<std::string>();
+  }
+  r.fpga_limit_share = most >= 0 ? ratio(most, total) : kNaN;
+}
+
+}  // namespace
+
+SweepRow row_from_report(const SweepConfig& config, const nlohmann::ordered_json& report, int steps) {
+  SweepRow r;
+  r.config = config;
+  r.steps = steps;
+  const auto& t = report.at("time");
+  r.clock_mhz = report.at("device").at("clock_hz").get<double>() / 1e6;
+  r.nominal_rays_per_cycle = report.at("layout").at("nominal_rays_per_cycle").get<double>();
+  r.simulated_seconds = report.at("simulated_seconds").get<double>();
+  r.fpga_busy_seconds = t.at("fpga_busy_seconds").get<double>();
+  r.host_compute_seconds = t.at("host_compute_seconds").get<double>();
+  r.driver_cpu_seconds = t.at("driver_cpu_seconds").get<double>();
+  r.pci_transfer_seconds = t.at("pci_transfer_seconds").get<double>();
+  r.waiting_seconds = t.at("waiting_seconds").get<double>();
+  r.pci_utilisation = ratio(report.at("pci").at("bus_busy_seconds").get<double>(), r.simulated_seconds);
+  busiest_bank(report.at("banks"), r.fpga_busy_seconds, r);
+  double lanes = 0;
+  for (const auto& l : report.at("lanes")) lanes += l.at("utilisation").get<double>();
+  r.mean_lane_utilisation = report.at("lanes").empty() ? kNaN : lanes / report.at("lanes").size();
+  r.intersections_per_second_while_busy = report.at("intersections").at("per_second_while_fpga_busy").get<double>();
+  dominant_limit(report.at("stream_limits"), r);
+  r.bottleneck = bottleneck(r);
+  r.speedup_vs_one_lane = r.speedup_vs_software = kNaN;
+  return r;
+}
+
+std::string fpga_limit_kind(const std::string& limit) {
+  if (limit == "lanes") return "fpga_lanes";
+  if (limit.rfind("bank ", 0) == 0 && limit.find("(results)") != std::string::npos) return "fpga_result_bank";
+  if (limit.rfind("bank ", 0) == 0 && limit.find("(rays") != std::string::npos) return "fpga_ray_bank";
+  return "fpga_other";
+}
+
+std::string bottleneck(const SweepRow& r) {
+  // In this order the first of equal parts wins: the FPGA, then the host's own parts.
+  const std::pair<const char*, double> parts[] = {{"fpga", r.waiting_seconds},
+                                                  {"host_compute", r.host_compute_seconds},
+                                                  {"host_driver", r.driver_cpu_seconds},
+                                                  {"pci", r.pci_transfer_seconds}};
+  const auto* top = &parts[0];
+  for (const auto& p : parts)
+    if (p.second > top->second) top = &p;
+  return top == &parts[0] ? fpga_limit_kind(r.fpga_limit) : top->first;
+}
+
+void fill_speedups(std::vector<SweepRow>& rows, const std::map<int, double>& software_seconds) {
+  using Key = std::tuple<std::string, int, bool, unsigned>;
+  std::map<Key, double> one_lane;
+  for (const SweepRow& r : rows)
+    if (r.validity == Validity::ok && r.config.lanes == 1)
+      one_lane[{r.config.device, r.config.bits, r.config.concurrent, r.config.banks}] = r.simulated_seconds;
+  for (SweepRow& r : rows) {
+    if (r.validity != Validity::ok) continue;
+    const auto base = one_lane.find({r.config.device, r.config.bits, r.config.concurrent, r.config.banks});
+    r.speedup_vs_one_lane = base != one_lane.end() ? ratio(base->second, r.simulated_seconds) : kNaN;
+    const auto sw = software_seconds.find(r.config.bits);
+    r.speedup_vs_software = sw != software_seconds.end() ? ratio(sw->second, r.simulated_seconds) : kNaN;
+  }
+}
+
+// ---- output -----------------------------------------------------------------------------------------
+
+namespace {
+
+const char* const kColumns[] = {"device",
+                                "lanes",
+                                "banks",
+                                "bits",
+                                "concurrent",
+                                "status",
+                                "invalid_kind",
+                                "reason",
+                                "steps",
+                                "clock_mhz",
+                                "nominal_rays_per_cycle",
+                                "simulated_seconds",
+                                "fpga_busy_seconds",
+                                "host_compute_seconds",
+                                "driver_cpu_seconds",
+                                "pci_transfer_seconds",
+                                "waiting_seconds",
+                                "pci_utilisation",
+                                "max_bank_utilisation",
+                                "busiest_bank",
+                                "busiest_bank_role",
+                                "mean_lane_utilisation",
+                                "intersections_per_second_while_busy",
+                                "fpga_limit",
+                                "fpga_limit_share",
+                                "bottleneck",
+                                "speedup_vs_one_lane",
+                                "speedup_vs_software"};
+
+std::string csv_text(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char ch : s) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+  return q + "\"";
+}
+
+std::string csv_number(double x) {
+  if (std::isnan(x)) return "";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", x);
+  return buf;
+}
+
+nlohmann::ordered_json json_number(double x) { return std::isnan(x) ? nlohmann::ordered_json() : nlohmann::ordered_json(x); }
+
+// Every column's value as a JSON value (strings, integers, numbers or null), in column order.
+std::vector<nlohmann::ordered_json> row_values(const SweepRow& r) {
+  const bool ok = r.validity == Validity::ok;
+  const nlohmann::ordered_json none;
+  return {r.config.device,
+          r.config.lanes,
+          r.config.banks,
+          r.config.bits,
+          r.config.concurrent ? 1 : 0,
+          ok ? "ok" : "invalid",
+          ok ? std::string() : to_string(r.validity),
+          r.reason,
+          r.steps,
+          json_number(r.clock_mhz),
+          json_number(r.nominal_rays_per_cycle),
+          json_number(r.simulated_seconds),
+          json_number(r.fpga_busy_seconds),
+          json_number(r.host_compute_seconds),
+          json_number(r.driver_cpu_seconds),
+          json_number(r.pci_transfer_seconds),
+          json_number(r.waiting_seconds),
+          json_number(r.pci_utilisation),
+          json_number(r.max_bank_utilisation),
+          ok && r.busiest_bank >= 0 ? nlohmann::ordered_json(r.busiest_bank) : none,
+          r.busiest_bank_role,
+          json_number(r.mean_lane_utilisation),
+          json_number(r.intersections_per_second_while_busy),
+          r.fpga_limit,
+          json_number(r.fpga_limit_share),
+          r.bottleneck,
+          json_number(r.speedup_vs_one_lane),
+          json_number(r.speedup_vs_software)};
+}
+
+std::string csv_field(const nlohmann::ordered_json& v) {
+  if (v.is_null()) return "";
+  if (v.is_string()) return csv_text(v.get<std::string>());
+  if (v.is_number_float()) return csv_number(v.get<double>());
+  return v.dump();
+}
+
+}  // namespace
+
+void write_sweep_csv(std::ostream& out, const std::vector<SweepRow>& rows) {
+  for (std::size_t i = 0; i < std::size(kColumns); ++i) out << (i ? "," : "") << kColumns[i];
+  out << "\n";
+  for (const SweepRow& r : rows) {
+    const std::vector<nlohmann::ordered_json> values = row_values(r);
+    for (std::size_t i = 0; i < values.size(); ++i) out << (i ? "," : "") << csv_field(values[i]);
+    out << "\n";
+  }
+}
+
+nlohmann::ordered_json sweep_row_json(const SweepRow& r) {
+  const std::vector<nlohmann::ordered_json> values = row_values(r);
+  nlohmann::ordered_json j;
+  for (std::size_t i = 0; i < values.size(); ++i) j[kColumns[i]] = values[i];
+  j["concurrent"] = r.config.concurrent;  // a JSON boolean; the CSV writes 1 or 0
+  return j;
+}
+
+}  // namespace rc

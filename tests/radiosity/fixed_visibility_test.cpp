@@ -1,0 +1,138 @@
+// FixedPointVisibility: the CPU backend with the pipeline's arithmetic answers exactly what a
+// brute-force loop of segment_hits answers under the own-face rule, and counts its tests.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <stdexcept>
+
+#include "radiosity/fixed_visibility.h"
+#include "pipeline/fixed_mt.h"
+
+namespace rc {
+namespace {
+
+double uniform(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1p-53; }
+
+// Small random triangles scattered through the unit cube, and a batch from a point on face 0
+// to points on the other faces (centroids, as the solver sends patch centres).
+struct Scene {
+  std::vector<Triangle> faces;
+  SegmentBatch batch;
+};
+
+Scene random_scene(std::size_t faces, std::size_t segments, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  Scene s;
+  while (s.faces.size() < faces) {
+    const Vec3 c{0.1 + 0.8 * uniform(rng), 0.1 + 0.8 * uniform(rng), 0.1 + 0.8 * uniform(rng)};
+    const auto corner = [&] {
+      return c + 0.2 * Vec3{uniform(rng) - 0.5, uniform(rng) - 0.5, uniform(rng) - 0.5};
+    };
+    s.faces.push_back({corner(), corner(), corner()});
+  }
+  s.batch.source_face = 0;
+  s.batch.start = s.faces[0].centroid();
+  for (std::size_t i = 0; i < segments; ++i) {
+    const int face = 1 + static_cast<int>(rng() % (faces - 1));
+    s.batch.ends.push_back(s.faces[static_cast<std::size_t>(face)].centroid());
+    s.batch.end_faces.push_back(face);
+  }
+  return s;
+}
+
+std::vector<std::uint8_t> brute_force(const Scene& s, int bits) {
+  const pipeline::FixedVec3 start = pipeline::quantize_point(s.batch.start, bits);
+  std::vector<std::uint8_t> blocked(s.batch.size(), 0);
+  for (std::size_t i = 0; i < s.batch.size(); ++i) {
+    const pipeline::FixedVec3 end = pipeline::quantize_point(s.batch.ends[i], bits);
+    for (std::size_t f = 0; f < s.faces.size(); ++f) {
+      if (is_own_face(s.batch, i, static_cast<int>(f))) continue;
+      blocked[i] |= pipeline::segment_hits(pipeline::make_face_record(s.faces[f], bits), start, end, bits);
+    }
+  }
+  return blocked;
+}
+
+TEST(PipelineFixedVisibility, MatchesBruteForceSegmentHitsAtEveryPathWidth) {
+  const Scene s = random_scene(40, 300, 1);
+  for (int bits : {7, 15, 16, 31}) {
+    FixedPointVisibility v(bits);
+    v.load_faces(s.faces);
+    v.submit(s.batch);
+    std::vector<std::uint8_t> blocked;
+    v.collect(blocked);
+    const std::vector<std::uint8_t> expected = brute_force(s, bits);
+    EXPECT_EQ(blocked, expected) << bits << " bits";
+    std::size_t count = 0;
+    for (auto b : expected) count += b;
+    EXPECT_GT(count, 10u) << "scene too sparse to test anything";
+    EXPECT_LT(count, s.batch.size());
+  }
+}
+
+// One blocker between a source and a receiver: blocked, unless the blocker is one of the
+// segment's own faces.
+TEST(PipelineFixedVisibility, OwnFacesNeverBlock) {
+  const std::vector<Triangle> faces = {
+      {{0.1, 0.1, 0.1}, {0.9, 0.1, 0.1}, {0.1, 0.9, 0.1}},  // 0: source, z = 0.1
+      {{0.1, 0.1, 0.5}, {0.9, 0.1, 0.5}, {0.1, 0.9, 0.5}},  // 1: blocker, z = 0.5
+      {{0.1, 0.1, 0.9}, {0.9, 0.1, 0.9}, {0.1, 0.9, 0.9}},  // 2: receiver, z = 0.9
+  };
+  FixedPointVisibility v(15);
+  v.load_faces(faces);
+  SegmentBatch batch;
+  batch.source_face = 0;
+  batch.start = {0.3, 0.3, 0.1};
+  batch.ends = {{0.3, 0.3, 0.9}, {0.3, 0.3, 0.9}, {0.3, 0.3, 0.9}};
+  batch.end_faces = {2, 1, 0};  // the same segment, labelled with different end faces
+  v.submit(batch);
+  std::vector<std::uint8_t> blocked;
+  v.collect(blocked);
+  EXPECT_EQ(blocked, (std::vector<std::uint8_t>{1, 0, 1}));
+  batch.source_face = 1;  // now the blocker is everyone's source face
+  v.submit(batch);
+  v.collect(blocked);
+  EXPECT_EQ(blocked, (std::vector<std::uint8_t>{0, 0, 0}));
+}
+
+TEST(PipelineFixedVisibility, CountsEveryTestedPairExceptOwnFaces) {
+  const Scene s = random_scene(25, 120, 2);
+  FixedPointVisibility v(23);
+  v.load_faces(s.faces);
+  v.submit(s.batch);
+  std::uint64_t expected = 0;
+  for (std::size_t i = 0; i < s.batch.size(); ++i)
+    for (std::size_t f = 0; f < s.faces.size(); ++f) expected += !is_own_face(s.batch, i, static_cast<int>(f));
+  EXPECT_EQ(v.tests_performed(), expected);
+  v.submit(s.batch);  // the count accumulates over batches
+  EXPECT_EQ(v.tests_performed(), 2 * expected);
+}
+
+TEST(PipelineFixedVisibility, ValidatesWidthAndBatch) {
+  EXPECT_THROW(FixedPointVisibility(6), std::invalid_argument);
+  EXPECT_THROW(FixedPointVisibility(32), std::invalid_argument);
+  FixedPointVisibility v(31);
+  EXPECT_EQ(v.frac_bits(), 31);
+  EXPECT_EQ(v.name(), "fixed");
+  v.load_faces({{{0.1, 0.1, 0.5}, {0.9, 0.1, 0.5}, {0.1, 0.9, 0.5}}});
+  SegmentBatch batch;
+  batch.start = {0.3, 0.3, 0.1};
+  batch.ends = {{0.3, 0.3, 0.9}};
+  EXPECT_THROW(v.submit(batch), std::invalid_argument);  // end_faces missing
+  batch.end_faces = {-1};
+  batch.ends[0].z = 1.0;  // outside the normalised scene
+  EXPECT_THROW(v.submit(batch), std::out_of_range);
+  batch.ends[0].z = 0.9;
+  v.submit(batch);
+  std::vector<std::uint8_t> blocked;
+  v.collect(blocked);
+  EXPECT_EQ(blocked, std::vector<std::uint8_t>{1});
+  batch.ends.clear();
+  batch.end_faces.clear();
+  v.submit(batch);  // an empty batch is fine
+  v.collect(blocked);
+  EXPECT_TRUE(blocked.empty());
+}
+
+}  // namespace
+}  // namespace rc

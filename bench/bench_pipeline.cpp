@@ -26,9 +26,9 @@ const Workload& workload() {
   static const Workload w = [] {
     std::mt19937_64 rng(2024);
     const auto u = [&] { return static_cast<double>(rng() >> 11) * 0x1p-53; };
-    Workload w{{{0.2, 0.3, 0.5}, {0.8, 0.35, 0.45}, {0.4, 0.9, 0.55}}, {0.5, 0.5, 0.05}, {}};
-    for (std::size_t i = 0; i < kRays; ++i) w.ends.push_back({u(), u(), 0.5 + 0.49 * u()});
-    return w;
+    Workload made{{{0.2, 0.3, 0.5}, {0.8, 0.35, 0.45}, {0.4, 0.9, 0.55}}, {0.5, 0.5, 0.05}, {}};
+    for (std::size_t i = 0; i < kRays; ++i) made.ends.push_back({u(), u(), 0.5 + 0.49 * u()});
+    return made;
   }();
   return w;
 }

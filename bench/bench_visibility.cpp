@@ -66,13 +66,13 @@ const Workload& workload() {
     options.face_levels = 2;
     options.patch_levels = 1;
     const rc::Scene scene = rc::prepare_scene(options).scene;
-    Workload w;
+    Workload made;
     rc::FastFixedVisibility fast(15, 1);
-    Recorder recorder(fast, w);
+    Recorder recorder(fast, made);
     rc::SolverOptions solver;
     solver.fixed_steps = kSteps;
     rc::ProgressiveRadiosity(scene, recorder, solver).run();
-    return w;
+    return made;
   }();
   return w;
 }

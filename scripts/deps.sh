@@ -20,8 +20,11 @@ rc_install_missing() {
 }
 
 rc_build() {
+  # CI (CI=true) builds with warnings as errors; a developer's build only shows them.
+  local werror=OFF
+  [ -n "${CI:-}" ] && werror=ON
   if [ ! -f "$RC_BUILD/build.ninja" ]; then
-    cmake -S "$RC_ROOT" -B "$RC_BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release >&2
+    cmake -S "$RC_ROOT" -B "$RC_BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRC_WERROR="$werror" >&2
   fi
   cmake --build "$RC_BUILD" -j "$(nproc)" >&2
 }

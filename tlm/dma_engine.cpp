@@ -114,10 +114,10 @@ void DmaEngine::count(const DmaRequest& request, const DmaResult& result) {
 
 std::string DmaEngine::summary() const {
   const DmaReport& r = m_report;
-  std::ostringstream out;
-  out << name() << ": " << r.transfers << " transfers in " << r.bursts << " bursts, " << r.bytes_to_device
+  std::ostringstream text;
+  text << name() << ": " << r.transfers << " transfers in " << r.bursts << " bursts, " << r.bytes_to_device
       << " B to device, " << r.bytes_to_host << " B to host, busy " << r.busy << ", errors " << r.errors;
-  return out.str();
+  return text.str();
 }
 
 void DmaEngine::end_of_simulation() {

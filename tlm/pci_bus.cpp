@@ -151,17 +151,17 @@ PciBusReport PciBus::report() const {
 
 std::string PciBus::summary() const {
   const PciBusReport r = report();
-  std::ostringstream out;
-  out << name() << ": " << r.total.transactions << " transactions, " << r.total.bytes_written << " B written, "
+  std::ostringstream text;
+  text << name() << ": " << r.total.transactions << " transactions, " << r.total.bytes_written << " B written, "
       << r.total.bytes_read << " B read, busy " << r.total.busy << ", arbitration wait " << r.total.wait
       << ", master aborts " << r.total.address_errors;
   for (std::size_t i = 0; i < r.initiators.size(); ++i) {
     const PciInitiatorReport& c = r.initiators[i];
-    out << "\n  in[" << i << "]: " << c.transactions << " transactions, " << c.bytes_written << " B written, "
+    text << "\n  in[" << i << "]: " << c.transactions << " transactions, " << c.bytes_written << " B written, "
         << c.bytes_read << " B read, busy " << c.busy << ", wait " << c.wait << ", master aborts "
         << c.address_errors;
   }
-  return out.str();
+  return text.str();
 }
 
 void PciBus::end_of_simulation() {

@@ -95,10 +95,10 @@ void Router::end_of_elaboration() {
 }
 
 std::string Router::summary() const {
-  std::ostringstream out;
-  out << name() << ": " << m_report.transactions << " transactions routed, " << m_report.address_errors
+  std::ostringstream text;
+  text << name() << ": " << m_report.transactions << " transactions routed, " << m_report.address_errors
       << " address errors";
-  return out.str();
+  return text.str();
 }
 
 void Router::end_of_simulation() {

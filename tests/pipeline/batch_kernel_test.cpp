@@ -83,13 +83,13 @@ TEST(PipelineBatch, FixedKernelOrsIntoBlockedAndHonoursTheSkipMask) {
   }
   const std::vector<std::uint8_t> before = blocked;
   for (KernelIsa isa : supported_kernel_isas()) {
-    for (int bits : {15, 31}) {
+    for (int kernel_bits : {15, 31}) {
       std::vector<std::uint8_t> b = before;
-      occlude_face(isa, face, start, x.data(), y.data(), z.data(), x.size(), bits, b.data(), skip.data());
+      occlude_face(isa, face, start, x.data(), y.data(), z.data(), x.size(), kernel_bits, b.data(), skip.data());
       for (std::size_t i = 0; i < b.size(); ++i) {
-        const bool hit = segment_hits(face, start, {x[i], y[i], z[i]}, bits);
+        const bool hit = segment_hits(face, start, {x[i], y[i], z[i]}, kernel_bits);
         const bool want = skip[i] ? before[i] != 0 : (before[i] != 0 || hit);
-        ASSERT_EQ(b[i] != 0, want) << i << " " << name(isa) << " " << bits;
+        ASSERT_EQ(b[i] != 0, want) << i << " " << name(isa) << " " << kernel_bits;
       }
     }
   }

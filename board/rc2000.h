@@ -21,6 +21,7 @@
 #include <systemc>
 
 #include "board/bank_layout.h"
+#include "board/board_interface.h"
 #include "board/board_params.h"
 #include "board/control_regs.h"
 #include "board/wrapper_base.h"
@@ -48,6 +49,10 @@ class Rc2000 : public sc_core::sc_module {
   const BankLayout& layout() const { return m_layout; }
   std::uint64_t bank_stride() const { return m_stride; }
   std::uint64_t bank_pci_address(unsigned bank) const { return kBar1 + bank * m_stride; }
+  // The board as a driver sees it through PCI (board_interface.h).
+  BoardInterface interface() const {
+    return {kBar0, kBar1, m_stride, m_params.bank_capacity_bytes, m_layout, m_params.model};
+  }
 
   tlmx::PciBus pci;
   tlmx::DmaEngine dma;

@@ -13,21 +13,19 @@ namespace rc {
 namespace reg = board::reg;
 using sc_core::sc_time;
 
-BoardVisibility::BoardVisibility(board::Rc2000& board, tlm::tlm_initiator_socket<>& pci, HostCpuModel& cpu,
-                                 BoardVisibilityOptions options, TraceWriter* trace)
-    : board_(board),
-      pci_(pci),
+BoardVisibility::BoardVisibility(BoardPorts ports, HostCpuModel& cpu, BoardVisibilityOptions options, TraceWriter* trace)
+    : ports_(std::move(ports)),
+      pci_(ports_.pci),
       cpu_(cpu),
       options_(options),
       trace_(trace),
-      layout_(board.layout()),
-      word_bytes_(board.layout().word_bits / 8),
-      rays_per_batch_(board.layout().max_rays_per_batch),
-      faces_per_set_(board.layout().max_faces_per_set) {
-  if (options_.oracle != nullptr && board.params().model != board::WrapperModel::fast) {
+      layout_(ports_.board.layout),
+      word_bytes_(ports_.board.layout.word_bits / 8),
+      rays_per_batch_(ports_.board.layout.max_rays_per_batch),
+      faces_per_set_(ports_.board.layout.max_faces_per_set) {
+  if (options_.oracle != nullptr && ports_.board.model != board::WrapperModel::fast) {
     throw std::invalid_argument("a visibility oracle needs the fast wrapper model (the cycle-level one always computes)");
   }
-  board_.wrapper().on_pass([this](const board::PassRecord& r) { on_pass(r); });
   pio_extension_.access_bytes = word_bytes_;
   pio_extension_.read_round_trip = cpu_.profile().driver_model.pio_read_round_trip;
 }
@@ -66,7 +64,7 @@ void BoardVisibility::register_access(tlm::tlm_command command, std::uint64_t of
   tlm::tlm_generic_payload& trans = register_trans_;
   const unsigned length = words * 4;
   trans.set_command(command);
-  trans.set_address(board::Rc2000::kBar0 + offset);
+  trans.set_address(ports_.board.register_base + offset);
   trans.set_data_ptr(reinterpret_cast<unsigned char*>(register_words_.data()));
   trans.set_data_length(length);
   trans.set_streaming_width(length);
@@ -137,7 +135,7 @@ void BoardVisibility::dma(tlmx::DmaDirection direction, void* host, std::uint64_
   // Temporally decoupled: issued at the host's local time, which moves to the completion. The bus
   // reserves itself at each burst's request time, so the times are those of a synced transfer.
   sc_time local = cpu_.local();
-  const tlmx::DmaResult r = board_.dma.transfer({direction, host, address, bytes, no_data}, local);
+  const tlmx::DmaResult r = ports_.dma.transfer({direction, host, address, bytes, no_data}, local);
   cpu_.set_local(local);
   if (!r.ok()) throw std::runtime_error(std::string("DMA of ") + what + " failed");
   stats_.pci += r.duration();
@@ -156,7 +154,7 @@ void BoardVisibility::load_faces(const std::vector<Triangle>& faces) {
   if (faces.size() > faces_per_set_ && !options_.allow_batching) {
     throw std::invalid_argument("the scene has " + std::to_string(faces.size()) + " faces but one face set holds " +
                                 std::to_string(faces_per_set_) + " (face bank " +
-                                std::to_string(board_.params().bank_capacity_bytes) +
+                                std::to_string(ports_.board.bank_capacity_bytes) +
                                 " bytes); allow batching to split them into sets");
   }
   faces_.clear();
@@ -184,7 +182,7 @@ void BoardVisibility::upload_faces(std::size_t set) {
       for (unsigned i = 0; i < 9; ++i) board::store_word(buffer_.data(), f * 9 + i, word_bytes_, words[i]);
     }
   }
-  transfer(tlmx::DmaDirection::to_device, buffer_.data(), board_.bank_pci_address(layout_.face_bank), buffer_.size(),
+  transfer(tlmx::DmaDirection::to_device, buffer_.data(), ports_.board.bank_address(layout_.face_bank), buffer_.size(),
            "faces", resident);
   resident_set_ = static_cast<long>(set);
   ++stats_.face_set_uploads;
@@ -247,7 +245,7 @@ void BoardVisibility::submit(const SegmentBatch& batch) {
   if (batch.size() > rays_per_batch_ && !options_.allow_batching) {
     throw std::invalid_argument("a step has " + std::to_string(batch.size()) + " segments but one batch holds " +
                                 std::to_string(rays_per_batch_) + " (ray and result banks of " +
-                                std::to_string(board_.params().bank_capacity_bytes) +
+                                std::to_string(ports_.board.bank_capacity_bytes) +
                                 " bytes); allow batching to split them");
   }
   if (dual_cpu()) cpu_.fork_second_cpu();
@@ -260,7 +258,7 @@ void BoardVisibility::submit(const SegmentBatch& batch) {
 // Timing replay: a step of `segments` segments with blank data. The rays are "grouped" trivially,
 // the buffers moved have their real sizes, and the lanes copy an all-clear answer.
 void BoardVisibility::submit_timing_only(std::size_t segments, int source_face) {
-  if (board_.params().model != board::WrapperModel::fast) {
+  if (ports_.board.model != board::WrapperModel::fast) {
     throw std::invalid_argument("timing replay needs the fast wrapper model");
   }
   if (!timing_only_ || rays_ != segments) {  // a replay's steps mostly have the same size: set up once
@@ -343,7 +341,7 @@ void BoardVisibility::upload_rays(std::size_t batch) {
   for (const auto& image : images_) bytes += image.size();
   charge_ray_words(bytes / word_bytes_);
   for (unsigned b = 0; b < images_.size(); ++b) {
-    transfer(tlmx::DmaDirection::to_device, images_[b].data(), board_.bank_pci_address(b), images_[b].size(), "rays",
+    transfer(tlmx::DmaDirection::to_device, images_[b].data(), ports_.board.bank_address(b), images_[b].size(), "rays",
              timing_only_);
   }
 }
@@ -362,8 +360,8 @@ void BoardVisibility::upload_mask(std::size_t batch, std::size_t set) {
     board::store_word(buffer_.data(), static_cast<std::size_t>(*it - f0), word_bytes_, static_cast<std::uint64_t>(next - it));
     it = next;
   }
-  const std::uint64_t address = layout_.mask_bank ? board_.bank_pci_address(*layout_.mask_bank)
-                                                  : board_.bank_pci_address(layout_.face_bank) + n * 9 * word_bytes_;
+  const std::uint64_t address = layout_.mask_bank ? ports_.board.bank_address(*layout_.mask_bank)
+                                                  : ports_.board.bank_address(layout_.face_bank) + n * 9 * word_bytes_;
   transfer(tlmx::DmaDirection::to_device, buffer_.data(), address, buffer_.size(), "own-face table");
 }
 
@@ -382,8 +380,10 @@ void BoardVisibility::start_pass(const Pass& pass) {
                    static_cast<std::uint32_t>(set_first(pass.set)), source_face_, static_cast<std::uint32_t>(start_.x),
                    static_cast<std::uint32_t>(start_.y), static_cast<std::uint32_t>(start_.z),
                    static_cast<std::uint32_t>(mask_start)});
-  board_.wrapper().set_oracle(options_.oracle != nullptr ? oracle_answer_.data() + batch_first(pass.batch) : nullptr);
-  board_.wrapper().set_timing_only(timing_only_);
+  if (ports_.sideband.before_start) {
+    ports_.sideband.before_start(options_.oracle != nullptr ? oracle_answer_.data() + batch_first(pass.batch) : nullptr,
+                                 timing_only_);
+  }
   cpu_.clear_intervals();  // host compute from here on may overlap the pass
   write_registers(reg::kControl, {reg::kStart | (pass.first_of_batch ? reg::kClear : 0u)});
   host_event("start pass", from);
@@ -393,7 +393,7 @@ void BoardVisibility::finish_pass(const Pass& pass) {
   cpu_.charge(DriverWork::Call, 1);
   cpu_.sync();
   const sc_time from = sc_core::sc_time_stamp();
-  board_.irq.wait_raised();
+  ports_.irq.wait_raised();
   stats_.waiting += sc_core::sc_time_stamp() - from;
   host_event("wait for interrupt", from);
   if (trace_ != nullptr && trace_->wants(cpu_.step())) trace_->instant("irq", "seen by host", sc_core::sc_time_stamp());
@@ -415,7 +415,7 @@ void BoardVisibility::read_results(std::size_t batch) {
   } else {
     buffer_.assign(split.result_words * word_bytes_, 0);
   }
-  transfer(tlmx::DmaDirection::to_host, buffer_.data(), board_.bank_pci_address(layout_.result_bank), buffer_.size(),
+  transfer(tlmx::DmaDirection::to_host, buffer_.data(), ports_.board.bank_address(layout_.result_bank), buffer_.size(),
            "results", timing_only_);
   if (!timing_only_) board::unpack_results(layout_, split, buffer_.data(), blocked_.data() + batch_first(batch));
   charge_results(batch_size(batch), split.result_words);
@@ -462,7 +462,7 @@ void BoardVisibility::charge_results(std::size_t rays, std::uint64_t result_word
 }
 
 // Runs in the wrapper's thread when a pass completes.
-void BoardVisibility::on_pass(const board::PassRecord& r) {
+void BoardVisibility::pass_finished(const board::PassRecord& r) {
   last_record_ = r;
   ++stats_.passes;
   stats_.tests += r.rays * r.faces;

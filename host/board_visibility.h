@@ -18,6 +18,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <initializer_list>
 #include <map>
 #include <string>
@@ -26,7 +27,10 @@
 #include <systemc>
 #include <tlm>
 
-#include "board/rc2000.h"
+#include "board/board_interface.h"
+#include "board/wrapper_base.h"
+#include "tlm/dma_engine.h"
+#include "tlm/irq_line.h"
 #include "host/host_cpu_model.h"
 #include "radiosity/visibility.h"
 #include "pipeline/fixed_mt.h"
@@ -72,11 +76,30 @@ struct BoardDriverStats {
   std::map<std::string, PassLimitTally> limits;        // by PassRecord::limit (ordered: deterministic reports)
 };
 
+// What the driver needs from the wrapper beside PCI, wired by the platform (platform/board_run.h):
+// before each START, which answer the lanes copy (null: they compute) and whether the pass moves
+// data or only takes its time (timing replay).
+struct WrapperSideband {
+  std::function<void(const std::uint8_t* oracle_answer, bool timing_only)> before_start;
+};
+
+// The driver sees the board only through its ports: the host's PCI initiator socket, the board
+// bridge's DMA channel, the interrupt line, and the board's self-description (BoardInterface).
+struct BoardPorts {
+  tlm::tlm_initiator_socket<>& pci;  // bound to the board's PCI bus
+  tlmx::DmaEngine& dma;              // the board bridge's DMA channel (host memory <-> BAR1)
+  tlmx::IrqLine& irq;                // the board's interrupt, as the host sees it
+  board::BoardInterface board;       // BARs, bank layout, word formats, wrapper model
+  WrapperSideband sideband;
+};
+
 class BoardVisibility : public VisibilityBackend {
  public:
-  // `pci`: the host's initiator socket, bound to board.pci.in.
-  BoardVisibility(board::Rc2000& board, tlm::tlm_initiator_socket<>& pci, HostCpuModel& cpu,
-                  BoardVisibilityOptions options = {}, TraceWriter* trace = nullptr);
+  BoardVisibility(BoardPorts ports, HostCpuModel& cpu, BoardVisibilityOptions options = {},
+                  TraceWriter* trace = nullptr);
+
+  // The platform calls this when the wrapper finishes a pass (the wrapper's on_pass hook).
+  void pass_finished(const board::PassRecord& record);
 
   std::string name() const override { return "board"; }
   void load_faces(const std::vector<Triangle>& faces) override;
@@ -112,7 +135,6 @@ class BoardVisibility : public VisibilityBackend {
   void upload_faces(std::size_t set);
   void upload_mask(std::size_t batch, std::size_t set);
   void read_results(std::size_t batch);
-  void on_pass(const board::PassRecord& record);
 
   // Bus access from the host thread; each syncs the host's local time first.
   void write_registers(std::uint64_t offset, std::initializer_list<std::uint32_t> values);
@@ -143,7 +165,7 @@ class BoardVisibility : public VisibilityBackend {
   std::size_t set_first(std::size_t s) const { return s * faces_per_set_; }
   std::size_t set_size(std::size_t s) const;
 
-  board::Rc2000& board_;
+  BoardPorts ports_;
   tlm::tlm_initiator_socket<>& pci_;
   HostCpuModel& cpu_;
   BoardVisibilityOptions options_;

@@ -67,7 +67,15 @@ BoardSystem::BoardSystem(const sc_core::sc_module_name& name, const Scene& scene
     tlm_utils::tlm_quantumkeeper::set_global_quantum(kHostQuantum);
   if (setup.trace_last_step >= setup.trace_first_step) m_cpu.set_trace(&m_trace);
   const bool tracing = setup.trace_last_step >= setup.trace_first_step;
-  m_visibility = std::make_unique<BoardVisibility>(board, host_out, m_cpu, setup.driver, tracing ? &m_trace : nullptr);
+  // The driver sees the board only through its ports; what it needs from the wrapper (which answer
+  // the lanes copy, timing-only passes, the end of each pass) is wired here.
+  BoardPorts ports{host_out, board.dma, board.irq, board.interface(), {}};
+  ports.sideband.before_start = [this](const std::uint8_t* oracle_answer, bool timing_only) {
+    board.wrapper().set_oracle(oracle_answer);
+    board.wrapper().set_timing_only(timing_only);
+  };
+  m_visibility = std::make_unique<BoardVisibility>(ports, m_cpu, setup.driver, tracing ? &m_trace : nullptr);
+  board.wrapper().on_pass([this](const board::PassRecord& r) { m_visibility->pass_finished(r); });
   SC_HAS_PROCESS(BoardSystem);
   SC_THREAD(run);
 }

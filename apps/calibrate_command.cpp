@@ -6,10 +6,11 @@
 #include <memory>
 
 #include "apps/cli_options.h"
-#include "apps/paper_workload.h"
+#include "studies/paper_workload.h"
 #include "apps/progress.h"
 #include "studies/calibration.h"
 #include "studies/calibration_variants.h"
+#include "studies/paper_calibration.h"
 
 namespace rc {
 
@@ -24,27 +25,6 @@ struct CalibrateOptions {
   std::string visibility = "fast";
   bool quiet = false;
 };
-
-// Per scene the software run (the driver model does not touch it), then every variant's
-// single-pipeline run of every scene.
-std::vector<TimingCase> calibration_cases(const std::vector<PaperScene>& scenes, const HostProfile& base,
-                                          const std::vector<HostProfile>& variants) {
-  std::vector<TimingCase> cases;
-  for (const PaperScene& s : scenes) {
-    TimingCase c = paper_timing_case(s, PaperImplementation::Software, base.name);
-    c.host_profile = base;
-    cases.push_back(c);
-  }
-  for (const HostProfile& v : variants) {
-    for (const PaperScene& s : scenes) {
-      TimingCase c = paper_timing_case(s, PaperImplementation::OnePipe, base.name);
-      c.label += " " + v.driver_model.name();
-      c.board.host_profile = v;
-      cases.push_back(c);
-    }
-  }
-  return cases;
-}
 
 void print_variants(const std::vector<VariantCalibration>& variants, std::size_t best) {
   std::printf("\nDriver-model variants (docs/calibration.md): fit to all 16 runs, and leave-one-out cross-validation\n");
@@ -86,28 +66,13 @@ int run_calibrate(const CalibrateOptions& o) {
   ProgressLine progress(!o.quiet);
   const std::vector<PaperRow> rows = load_paper_table(o.table);
   const HostProfile base = find_host_profile(o.base);
-  std::vector<HostProfile> variants;
-  for (const DriverModel& m : serial_driver_variants(base.driver_model)) variants.push_back(with_driver_model(base, m));
   const std::vector<PaperScene> scenes =
       prepare_paper_scenes(rows, o.visibility, 15, [&](const std::string& what) { progress.update("%s", what.c_str()); });
-  const std::vector<TimingCase> cases = calibration_cases(scenes, base, variants);
-  progress.update("simulating %zu runs", cases.size());
-  const std::vector<TimingOutcome> outcomes = run_timing_study(cases);
+  progress.update("simulating the variants' runs");
+  const PaperCalibration calibration = calibrate_on_paper(scenes, base);
   progress.finish();
-
-  const std::size_t n = scenes.size();
-  std::vector<VariantCalibration> fitted;
-  for (std::size_t v = 0; v < variants.size(); ++v) {
-    std::vector<CalibrationObservation> observations;
-    for (std::size_t i = 0; i < n; ++i) {
-      observations.push_back(observation_from_report(rows[i].label() + " software", rows[i].software_seconds,
-                                                     outcomes[i].report, base));
-      observations.push_back(observation_from_report(rows[i].label() + " one_pipe", rows[i].one_pipe_seconds,
-                                                     outcomes[n + v * n + i].report, variants[v]));
-    }
-    fitted.push_back(calibrate_variant(variants[v], std::move(observations)));
-  }
-  const std::size_t best = best_by_cross_validation(fitted);
+  const std::vector<VariantCalibration>& fitted = calibration.variants;
+  const std::size_t best = calibration.chosen;
   const VariantCalibration& chosen = fitted[best];
   write_json(o.out, calibrated_profile(chosen.used, chosen.fit, chosen.observations, o.name, &chosen.cv));
   write_json(o.variants_out, variants_document(fitted, base.name));

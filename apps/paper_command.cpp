@@ -11,10 +11,11 @@
 
 #include "apps/cli_options.h"
 #include "board/throughput_estimates.h"
-#include "apps/paper_workload.h"
+#include "studies/paper_workload.h"
 #include "apps/plot.h"
 #include "apps/progress.h"
 #include "studies/calibration_variants.h"
+#include "studies/paper_prediction.h"
 
 namespace rc {
 
@@ -30,96 +31,11 @@ struct PaperOptions {
   bool quiet = false;
 };
 
-// The withheld columns again under every driver-model variant whose cross-validated error is
-// within kVariantTolerance of the best (docs/calibration.md): two pipes with each variant, the
-// concurrent driver with each variant and each overlap.
-struct SpreadCase {
-  std::size_t scene = 0;
-  int implementation = 0;
-  std::string driver_model;
-  std::size_t outcome_index = 0;                // in the study's outcomes
-  std::size_t main_index = ~std::size_t{0};     // or the main column's outcome it equals
-  std::size_t index() const { return main_index != ~std::size_t{0} ? main_index : outcome_index; }
-};
-
-// A spread case that is the main column's own case (the default profile itself) is not simulated
-// twice: its outcome is the main one (main_index).
-std::vector<SpreadCase> spread_cases(const std::vector<PaperScene>& scenes, const std::vector<CalibratedVariant>& variants,
-                                     const HostProfile& host, std::vector<TimingCase>& cases) {
-  std::vector<SpreadCase> out;
-  for (std::size_t i = 0; i < scenes.size(); ++i) {
-    for (const CalibratedVariant& v : variants) {
-      if (!v.in_spread) continue;
-      for (const DriverModel& m : with_each_overlap(v.profile.driver_model)) {
-        const HostProfile profile = with_driver_model(v.profile, m);
-        for (PaperImplementation impl : {PaperImplementation::TwoPipes, PaperImplementation::Concurrent}) {
-          if (impl == PaperImplementation::TwoPipes && m.overlap != DriverModel::Overlap::FormFactors) continue;
-          SpreadCase spread{i, static_cast<int>(impl), m.name()};
-          if (profile.json == host.json) {
-            spread.main_index = i * kPaperImplementations + static_cast<std::size_t>(impl);
-          } else {
-            TimingCase c = paper_timing_case(scenes[i], impl, host.name);
-            c.label += " " + m.name();
-            c.board.host_profile = profile;
-            spread.outcome_index = cases.size();
-            cases.push_back(c);
-          }
-          out.push_back(spread);
-        }
-      }
-    }
-  }
-  return out;
-}
-
-// Sec 4.1's six- and seven-bank variants against five banks, on the largest scene: at 15 bits a
-// word holds two coordinates, so five banks feed two full-rate lanes, and one or two more banks
-// feed two more lanes at 1/3 or 2/3 rate.
-struct BankVariant {
-  unsigned banks, lanes;
-};
-const BankVariant kBankVariants[] = {{5, 2}, {6, 4}, {7, 4}};
-
-TimingCase bank_variant_case(const PaperScene& s, const BankVariant& v, const std::string& host) {
-  TimingCase c = paper_timing_case(s, PaperImplementation::TwoPipes, host);
-  c.label = s.row.label() + " " + std::to_string(v.banks) + " banks " + std::to_string(v.lanes) + " lanes";
-  c.board.banks = v.banks;
-  c.board.lanes = v.lanes;
-  return c;
-}
-
-double fpga_busy(const TimingOutcome& o) {
-  return o.report.contains("time") && o.report["time"].contains("fpga_busy_seconds")
-             ? o.report["time"]["fpga_busy_seconds"].get<double>()
-             : 0.0;
-}
-
-struct PaperResults {
-  std::vector<PaperScene>* scenes = nullptr;
-  std::vector<TimingOutcome> outcomes;  // kPaperImplementations per scene, the bank variants, the spread
-  std::vector<SpreadCase> spread;
-  std::vector<board::PaperEstimate> paper_rule, model;  // sec 5.6, pairwise
-  // Seconds of every spread case of (scene, implementation).
-  std::vector<std::pair<std::string, double>> spread_of(std::size_t scene, int impl) const {
-    std::vector<std::pair<std::string, double>> out;
-    for (std::size_t k = 0; k < spread.size(); ++k) {
-      if (spread[k].scene == scene && spread[k].implementation == impl) {
-        out.emplace_back(spread[k].driver_model, outcomes[spread[k].index()].simulated_seconds);
-      }
-    }
-    return out;
-  }
-  const TimingOutcome& at(std::size_t scene, int impl) const { return outcomes[scene * kPaperImplementations + impl]; }
-  const TimingOutcome& bank_variant(std::size_t v) const {
-    return outcomes[scenes->size() * kPaperImplementations + v];
-  }
-};
-
 double paper_seconds(const PaperRow& row, int impl) {
   return impl == 0 ? row.software_seconds : impl == 1 ? row.one_pipe_seconds : NAN;
 }
 
-nlohmann::ordered_json scene_records(const PaperResults& r) {
+nlohmann::ordered_json scene_records(const PaperPrediction& r) {
   nlohmann::ordered_json records = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < r.scenes->size(); ++i) {
     const PaperScene& s = (*r.scenes)[i];
@@ -174,7 +90,7 @@ nlohmann::ordered_json estimate_record(const board::PaperEstimate& e) {
 }
 
 // Pairs: the paper's rule, then the model's estimate of the same question, and why they differ.
-nlohmann::ordered_json estimate_records(const PaperResults& r) {
+nlohmann::ordered_json estimate_records(const PaperPrediction& r) {
   nlohmann::ordered_json records = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < r.paper_rule.size(); ++i) {
     records.push_back(estimate_record(r.paper_rule[i]));
@@ -185,7 +101,7 @@ nlohmann::ordered_json estimate_records(const PaperResults& r) {
   return records;
 }
 
-nlohmann::ordered_json bank_variant_records(const PaperResults& r) {
+nlohmann::ordered_json bank_variant_records(const PaperPrediction& r) {
   nlohmann::ordered_json records = nlohmann::ordered_json::array();
   const TimingOutcome& base = r.bank_variant(0);
   for (std::size_t v = 0; v < std::size(kBankVariants); ++v) {
@@ -200,7 +116,7 @@ nlohmann::ordered_json bank_variant_records(const PaperResults& r) {
   return records;
 }
 
-nlohmann::ordered_json summary(const PaperResults& r) {
+nlohmann::ordered_json summary(const PaperPrediction& r) {
   double speedup_sum = 0, steps_per_s = 0;
   const std::size_t n = r.scenes->size();
   for (std::size_t i = 0; i < n; ++i) {
@@ -234,7 +150,7 @@ void write_csv(const std::string& path, const nlohmann::ordered_json& scenes, co
   }
 }
 
-std::string with_spread(const PaperResults& r, std::size_t scene, int impl) {
+std::string with_spread(const PaperPrediction& r, std::size_t scene, int impl) {
   const auto spread = r.spread_of(scene, impl);
   char text[64];
   if (spread.empty()) {
@@ -247,7 +163,7 @@ std::string with_spread(const PaperResults& r, std::size_t scene, int impl) {
   return text;
 }
 
-void print_table(const PaperResults& r) {
+void print_table(const PaperPrediction& r) {
   std::printf("\nTable 2 (seconds; paper figures in brackets; * = calibration column; predictions with [the spread of\n"
               "the driver-model variants within %.0f%% of the best cross-validated error])\n", 100 * kVariantTolerance);
   std::printf("%6s %7s %6s %6s | %17s | %17s | %24s | %24s | %7s\n", "faces", "patches", "steps", "ours", "software*",
@@ -295,21 +211,11 @@ int run_paper(const PaperOptions& o) {
   const std::vector<CalibratedVariant> variants = load_calibrated_variants(o.variants);
   std::vector<PaperScene> scenes =
       prepare_paper_scenes(rows, o.visibility, 15, [&](const std::string& what) { progress.update("%-40s", what.c_str()); });
-  std::vector<TimingCase> cases;
-  for (const PaperScene& s : scenes) {
-    for (int impl = 0; impl < kPaperImplementations; ++impl) cases.push_back(paper_timing_case(s, PaperImplementation(impl), o.host));
-  }
-  for (const BankVariant& v : kBankVariants) cases.push_back(bank_variant_case(scenes.back(), v, o.host));
-  PaperResults r;
-  r.spread = spread_cases(scenes, variants, host, cases);
-  progress.update("simulating %zu configurations%-20s", cases.size(), "");
+  progress.update("simulating the configurations%-20s", "");
   const double functional_seconds = progress.seconds();
-  PlotProcess plotter("paper.py");  // loads while the single-threaded study leaves a core idle
-  r.scenes = &scenes;
-  r.outcomes = run_timing_study(cases);
+  PlotProcess plotter("paper.py");  // the interpreter loads while the study runs
+  const PaperPrediction r = predict_paper(scenes, rows, o.host, host, variants);
   const double study_seconds = progress.seconds() - functional_seconds;
-  r.paper_rule = board::paper_rule_estimates(measured_peak_software_rate(rows));
-  r.model = board::model_estimates(1.0 / host.work[static_cast<int>(HostWork::IntersectionTest)].to_seconds(), 15);
   progress.finish();
 
   nlohmann::ordered_json json;
@@ -338,7 +244,7 @@ int run_paper(const PaperOptions& o) {
   }
   plotter.finish();
   std::printf("  wall: functional visibility and solver %.2f s, SystemC timing of %zu systems %.2f s (%.0f%%), total %.2f s\n",
-              functional_seconds, cases.size(), study_seconds, 100.0 * study_seconds / progress.seconds(), progress.seconds());
+              functional_seconds, r.outcomes.size(), study_seconds, 100.0 * study_seconds / progress.seconds(), progress.seconds());
   std::printf("  wrote %s/paper.json, paper.csv%s\n", o.out_dir.c_str(),
               o.docs_dir.empty() ? "" : (", " + o.docs_dir + "/paper.md").c_str());
   return 0;

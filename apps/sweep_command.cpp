@@ -13,7 +13,7 @@
 #include <memory>
 
 #include "apps/cli_options.h"
-#include "apps/paper_workload.h"
+#include "studies/paper_workload.h"
 #include "apps/plot.h"
 #include "apps/progress.h"
 #include "studies/config_sweep.h"

@@ -1,4 +1,4 @@
-#include "apps/paper_workload.h"
+#include "studies/paper_workload.h"
 
 #include <algorithm>
 #include <atomic>
@@ -11,11 +11,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "board/profile_reader.h"
+
 namespace rc {
 
 std::string PaperRow::label() const { return std::to_string(faces) + "/" + std::to_string(patches); }
 
-std::string default_paper_table_path() { return std::string(RC_SOURCE_DIR) + "/configs/paper-table2.json"; }
+std::string default_paper_table_path() { return board::default_config_dir() + "/paper-table2.json"; }
 
 std::vector<PaperRow> load_paper_table(const std::string& path) {
   std::ifstream in(path);

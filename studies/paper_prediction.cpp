@@ -1,0 +1,80 @@
+#include "studies/paper_prediction.h"
+
+namespace rc {
+
+namespace {
+
+// A spread case that is the main column's own case (the default profile itself) is not simulated
+// twice: its outcome is the main one (main_index).
+std::vector<SpreadCase> spread_cases(const std::vector<PaperScene>& scenes, const std::vector<CalibratedVariant>& variants,
+                                     const HostProfile& host, std::vector<TimingCase>& cases) {
+  std::vector<SpreadCase> out;
+  for (std::size_t i = 0; i < scenes.size(); ++i) {
+    for (const CalibratedVariant& v : variants) {
+      if (!v.in_spread) continue;
+      for (const DriverModel& m : with_each_overlap(v.profile.driver_model)) {
+        const HostProfile profile = with_driver_model(v.profile, m);
+        for (PaperImplementation impl : {PaperImplementation::TwoPipes, PaperImplementation::Concurrent}) {
+          if (impl == PaperImplementation::TwoPipes && m.overlap != DriverModel::Overlap::FormFactors) continue;
+          SpreadCase spread{i, static_cast<int>(impl), m.name()};
+          if (profile.json == host.json) {
+            spread.main_index = i * kPaperImplementations + static_cast<std::size_t>(impl);
+          } else {
+            TimingCase c = paper_timing_case(scenes[i], impl, host.name);
+            c.label += " " + m.name();
+            c.board.host_profile = profile;
+            spread.outcome_index = cases.size();
+            cases.push_back(c);
+          }
+          out.push_back(spread);
+        }
+      }
+    }
+  }
+  return out;
+}
+
+TimingCase bank_variant_case(const PaperScene& s, const BankVariant& v, const std::string& host) {
+  TimingCase c = paper_timing_case(s, PaperImplementation::TwoPipes, host);
+  c.label = s.row.label() + " " + std::to_string(v.banks) + " banks " + std::to_string(v.lanes) + " lanes";
+  c.board.banks = v.banks;
+  c.board.lanes = v.lanes;
+  return c;
+}
+
+}  // namespace
+
+double fpga_busy(const TimingOutcome& o) {
+  return o.report.contains("time") && o.report["time"].contains("fpga_busy_seconds")
+             ? o.report["time"]["fpga_busy_seconds"].get<double>()
+             : 0.0;
+}
+
+std::vector<std::pair<std::string, double>> PaperPrediction::spread_of(std::size_t scene, int impl) const {
+  std::vector<std::pair<std::string, double>> out;
+  for (const SpreadCase& s : spread) {
+    if (s.scene == scene && s.implementation == impl) out.emplace_back(s.driver_model, outcomes[s.index()].simulated_seconds);
+  }
+  return out;
+}
+
+PaperPrediction predict_paper(const std::vector<PaperScene>& scenes, const std::vector<PaperRow>& rows,
+                              const std::string& host_name, const HostProfile& host,
+                              const std::vector<CalibratedVariant>& variants) {
+  std::vector<TimingCase> cases;
+  for (const PaperScene& s : scenes) {
+    for (int impl = 0; impl < kPaperImplementations; ++impl) {
+      cases.push_back(paper_timing_case(s, PaperImplementation(impl), host_name));
+    }
+  }
+  for (const BankVariant& v : kBankVariants) cases.push_back(bank_variant_case(scenes.back(), v, host_name));
+  PaperPrediction r;
+  r.scenes = &scenes;
+  r.spread = spread_cases(scenes, variants, host, cases);
+  r.outcomes = run_timing_study(cases);
+  r.paper_rule = board::paper_rule_estimates(measured_peak_software_rate(rows));
+  r.model = board::model_estimates(1.0 / host.work[static_cast<int>(HostWork::IntersectionTest)].to_seconds(), 15);
+  return r;
+}
+
+}  // namespace rc

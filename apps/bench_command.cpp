@@ -129,7 +129,7 @@ void write_csv(const std::string& path, const std::vector<PointRun>& runs, const
     out << r.point.varied << ',' << r.point.bits << ',' << r.point.convergence << ',' << r.point.patch_levels << ','
         << to_string(r.point.form_factor) << ',' << r.scene.patches.size() << ',' << r.run.result.steps << ','
         << r.wall_seconds << ',' << timing[i].simulated_seconds << ','
-        << timing[i].report["time"]["fpga_busy_seconds"].get<double>() << ',' << r.error.relative_rmse() << ','
+        << timing[i].report.time.fpga_busy << ',' << r.error.relative_rmse() << ','
         << r.error.relative_max() << ',' << r.image_difference << "\n";
   }
 }

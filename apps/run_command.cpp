@@ -1,5 +1,7 @@
 #include "apps/run_command.h"
 
+#include <array>
+#include <optional>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -19,8 +21,8 @@ struct RunOutcome {
   SolverResult solver;
   std::string visibility_name;
   std::uint64_t visibility_tests = 0;
-  nlohmann::ordered_json host_work;
-  nlohmann::ordered_json board;  // empty for software runs
+  std::array<std::uint64_t, kHostWorkKinds> work_counts{};  // software runs
+  std::optional<RunReport> board;                           // board runs
 };
 
 RunOutcome run_software(const RunOptions& o, const Scene& scene, ProgressLine& progress) {
@@ -34,7 +36,7 @@ RunOutcome run_software(const RunOptions& o, const Scene& scene, ProgressLine& p
   out.solver = solver.run();
   out.visibility_name = visibility->name() + (o.visibility != "float" ? " " + std::to_string(o.bits) + "-bit" : "");
   out.visibility_tests = visibility->tests_performed();
-  for (int k = 0; k < kHostWorkKinds; ++k) out.host_work[to_string(HostWork(k))] = work.count(HostWork(k));
+  for (int k = 0; k < kHostWorkKinds; ++k) out.work_counts[k] = work.count(HostWork(k));
   return out;
 }
 
@@ -71,27 +73,23 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   out.solver = std::move(r.solver);
   out.visibility_name = "board " + board.device + ", " + std::to_string(board.lanes) + " lane(s), " +
                         std::to_string(o.bits) + "-bit" + (board.concurrent ? ", concurrent" : ", serial");
-  out.visibility_tests = r.report["intersections"]["tests"].get<std::uint64_t>();
-  out.host_work = r.report["host"]["work"];
+  out.visibility_tests = r.report.intersections.tests;
   out.board = std::move(r.report);
   return out;
 }
 
-void print_board_summary(const nlohmann::ordered_json& b) {
-  const auto& t = b["time"];
-  std::printf("  simulated    %.6f s = host compute %.6f + driver %.6f + PCI %.6f + waiting %.6f\n",
-              b["simulated_seconds"].get<double>(), t["host_compute_seconds"].get<double>(),
-              t["driver_cpu_seconds"].get<double>(), t["pci_transfer_seconds"].get<double>(),
-              t["waiting_seconds"].get<double>());
+void print_board_summary(const RunReport& b) {
+  const RunTime& t = b.time;
+  std::printf("  simulated    %.6f s = host compute %.6f + driver %.6f + PCI %.6f + waiting %.6f\n", b.simulated_seconds,
+              t.host_compute, t.driver_cpu, t.pci_transfer, t.waiting);
   std::printf("  FPGA         busy %.6f s (overlapping host compute %.6f s), %.4g intersections/s while busy\n",
-              t["fpga_busy_seconds"].get<double>(), t["overlap_seconds"].get<double>(),
-              b["intersections"]["per_second_while_fpga_busy"].get<double>());
-  std::printf("  board        %s at %.3f MHz, %u banks, %llu passes, %.4g MB over PCI\n",
-              b["device"]["profile"].get<std::string>().c_str(), b["device"]["clock_hz"].get<double>() / 1e6,
-              b["device"]["banks"].get<unsigned>(), b["batching"]["passes"].get<unsigned long long>(),
-              (b["pci"]["bytes_to_board"].get<double>() + b["pci"]["bytes_to_host"].get<double>()) / 1e6);
-  for (const auto& lane : b["lanes"]) {
-    std::printf("  lane %-7u utilisation %.1f%%\n", lane["lane"].get<unsigned>(), 100.0 * lane["utilisation"].get<double>());
+              t.fpga_busy, t.overlap, b.intersections.per_second_while_fpga_busy);
+  std::printf("  board        %s at %.3f MHz, %u banks, %llu passes, %.4g MB over PCI\n", b.board.device.profile.c_str(),
+              b.board.device.clock_hz / 1e6, b.board.device.banks,
+              static_cast<unsigned long long>(b.board.batching.passes),
+              (static_cast<double>(b.board.pci.bytes_to_board) + static_cast<double>(b.board.pci.bytes_to_host)) / 1e6);
+  for (const LaneReport& lane : b.board.lanes) {
+    std::printf("  lane %-7u utilisation %.1f%%\n", lane.lane, 100.0 * lane.utilisation);
   }
 }
 
@@ -106,7 +104,7 @@ void print_summary(const RunOptions& o, const Scene& scene, const RunOutcome& ou
               static_cast<unsigned long long>(out.visibility_tests));
   std::printf("  energy       emitted %.6g = absorbed %.6g + escaping %.6g + unshot %.6g\n", r.energy.emitted,
               r.energy.absorbed, r.energy.escaping, r.energy.unshot);
-  if (!out.board.empty()) print_board_summary(out.board);
+  if (out.board) print_board_summary(*out.board);
   std::printf("  wall time    %.2f s\n", wall);
   std::printf("  outputs      %s/report.json, patches.csv, image.png%s\n", o.out_dir.c_str(),
               o.board.trace_path.empty() ? "" : (", " + o.board.trace_path).c_str());
@@ -120,7 +118,7 @@ nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& pre
   report["faces"] = scene.faces.size();
   report["patches"] = scene.patches.size();
   report["steps"] = out.solver.steps;
-  if (!out.board.empty()) report["simulated_seconds"] = out.board["simulated_seconds"];
+  if (out.board) report["simulated_seconds"] = out.board->simulated_seconds;
   report["scene"] = scene_json(scene, o.scene.file.empty() ? "embedded:cornell-box" : o.scene.file, prepared.warnings);
   report["settings"] = {{"impl", o.impl},
                         {"convergence", o.solver.convergence},
@@ -132,9 +130,15 @@ nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& pre
                         {"face_levels", o.scene.face_levels},
                         {"patch_levels", o.scene.patch_levels}};
   report["solver"] = solver_json(out.solver);
-  report["host_work"] = out.host_work;
+  if (out.board) {
+    report["host_work"] = work_json(out.board->work);
+  } else {
+    nlohmann::ordered_json counts;
+    for (int k = 0; k < kHostWorkKinds; ++k) counts[to_string(HostWork(k))] = out.work_counts[k];
+    report["host_work"] = counts;
+  }
   report["visibility_tests"] = out.visibility_tests;
-  if (!out.board.empty()) report["board"] = out.board;
+  if (out.board) report["board"] = to_json(*out.board);
   report["wall_seconds"] = wall;
   return report;
 }

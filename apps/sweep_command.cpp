@@ -115,8 +115,8 @@ TimingCase board_case(const Scene& scene, const SweepOptions& o, const Planned& 
 // Compact banks promise identical passes; a batched or split step would break that promise.
 void check_compact_banks(const Planned& p, const TimingOutcome& out) {
   if (p.bank_capacity == 0) return;
-  const auto& b = out.report.at("batching");
-  if (b.at("max_batches_per_step").get<std::uint64_t>() > 1 || b.at("face_sets").get<std::uint64_t>() > 1) {
+  const BatchingReport& b = out.report.board.batching;
+  if (b.max_batches_per_step > 1 || b.face_sets > 1) {
     throw std::logic_error("compact banks batched " + p.config.label() + "; rerun with --full-banks");
   }
 }

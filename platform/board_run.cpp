@@ -104,8 +104,49 @@ void BoardSystem::rethrow_if_failed() const {
   if (m_error) std::rethrow_exception(m_error);
 }
 
-nlohmann::ordered_json BoardSystem::report(double wall_seconds) const {
-  using nlohmann::ordered_json;
+namespace {
+
+std::array<WorkTally, kHostWorkKinds> host_work(const HostCpuModel& cpu) {
+  std::array<WorkTally, kHostWorkKinds> work{};
+  for (int k = 0; k < kHostWorkKinds; ++k) work[k] = {cpu.count(HostWork(k)), seconds(cpu.time(HostWork(k)))};
+  return work;
+}
+
+DeviceReport device_report(const board::BoardParams& p) {
+  DeviceReport d;
+  d.profile = p.device;
+  d.lanes = p.lanes;
+  d.bits = p.bits;
+  d.clock_hz = 1.0 / seconds(p.timing.device_period);
+  d.banks = p.banks;
+  d.bank_capacity_bytes = p.bank_capacity_bytes;
+  d.bank_word_bits = p.word_bits;
+  d.bank_clock_hz = 1.0 / seconds(p.timing.bank_period);
+  d.pci_width_bits = p.pci.width_bits;
+  d.pci_clock_hz = 1.0 / seconds(p.pci.clock_period);
+  d.pipeline_latency_cycles = p.timing.pipeline_latency;
+  d.wrapper_model = p.model == board::WrapperModel::fast ? "fast" : "cycle";
+  d.design = {p.fit.hard_lanes, p.fit.soft_lanes, p.fit.slices, p.fit.slices_available, p.fit.block_multipliers,
+              p.fit.block_multipliers_available, p.fit.pipeline_clock_mhz, p.fit.modelled};
+  return d;
+}
+
+LayoutReport layout_report(const board::BankLayout& L) {
+  LayoutReport l;
+  l.coordinates_per_word = L.coords_per_word;
+  l.field_bits = L.field_bits;
+  l.face_bank = L.face_bank;
+  l.result_bank = L.result_bank;
+  l.own_face_table = L.mask_bank ? "bank " + std::to_string(*L.mask_bank) : std::string("face bank");
+  for (const board::RayGroup& g : L.groups) l.ray_groups.push_back({g.banks, g.lanes, g.first_lane, g.k() / 3.0});
+  l.spare_banks = L.spare_banks;
+  l.nominal_rays_per_cycle = L.nominal_rays_per_cycle();
+  return l;
+}
+
+}  // namespace
+
+RunReport BoardSystem::report(double wall_seconds) const {
   const board::BoardParams& p = board.params();
   const board::BankLayout& L = board.layout();
   const BoardDriverStats& d = m_visibility->stats();
@@ -113,117 +154,52 @@ nlohmann::ordered_json BoardSystem::report(double wall_seconds) const {
   const double total = seconds(m_end);
   const double busy = seconds(d.fpga_busy);
 
-  ordered_json r;
-  r["schema"] = "rc2000sim.board/1";
-  r["simulated_seconds"] = total;
-  r["time"] = {{"host_compute_seconds", seconds(m_cpu.compute_time() - m_cpu.second_cpu_compute())},
-               {"driver_cpu_seconds", seconds(m_cpu.driver_time())},
-               {"pci_transfer_seconds", seconds(d.pci)},
-               {"waiting_seconds", seconds(d.waiting)},
-               {"fpga_busy_seconds", busy},
-               {"overlap_seconds", seconds(d.overlap)}};
-  if (m_setup.driver.concurrent && m_setup.host.driver_model.overlap == DriverModel::Overlap::DualCpu) {
-    r["time"]["second_cpu_compute_seconds"] = seconds(m_cpu.second_cpu_compute());
-    r["time"]["second_cpu_wait_seconds"] = seconds(m_cpu.second_cpu_wait());
-    r["time"]["note"] = "host_compute + driver_cpu + pci_transfer + waiting + second_cpu_wait = simulated_seconds (the "
-                        "first processor's timeline); the second computes the form factors (second_cpu_compute) beside "
-                        "it; fpga_busy overlaps host compute by overlap_seconds";
-  } else {
-    r["time"]["note"] = "host_compute + driver_cpu + pci_transfer + waiting = simulated_seconds (the host thread's "
-                        "timeline); fpga_busy runs beside it, overlapping host compute by overlap_seconds";
+  RunReport r;
+  r.board_run = true;
+  r.simulated_seconds = total;
+  r.time.host_compute = seconds(m_cpu.compute_time() - m_cpu.second_cpu_compute());
+  r.time.driver_cpu = seconds(m_cpu.driver_time());
+  r.time.pci_transfer = seconds(d.pci);
+  r.time.waiting = seconds(d.waiting);
+  r.time.fpga_busy = busy;
+  r.time.overlap = seconds(d.overlap);
+  r.time.second_cpu = m_setup.driver.concurrent && m_setup.host.driver_model.overlap == DriverModel::Overlap::DualCpu;
+  if (r.time.second_cpu) {
+    r.time.second_cpu_compute = seconds(m_cpu.second_cpu_compute());
+    r.time.second_cpu_wait = seconds(m_cpu.second_cpu_wait());
   }
-  r["device"] = {{"profile", p.device},
-                 {"lanes", p.lanes},
-                 {"bits", p.bits},
-                 {"clock_hz", 1.0 / seconds(p.timing.device_period)},
-                 {"banks", p.banks},
-                 {"bank_capacity_bytes", p.bank_capacity_bytes},
-                 {"bank_word_bits", p.word_bits},
-                 {"bank_clock_hz", 1.0 / seconds(p.timing.bank_period)},
-                 {"pci_width_bits", p.pci.width_bits},
-                 {"pci_clock_hz", 1.0 / seconds(p.pci.clock_period)},
-                 {"pipeline_latency_cycles", p.timing.pipeline_latency},
-                 {"wrapper_model", p.model == board::WrapperModel::fast ? "fast" : "cycle"},
-                 {"design", {{"block_multiplier_lanes", p.fit.hard_lanes},
-                             {"slice_multiplier_lanes", p.fit.soft_lanes},
-                             {"slices", p.fit.slices},
-                             {"slices_available", p.fit.slices_available},
-                             {"block_multipliers", p.fit.block_multipliers},
-                             {"block_multipliers_available", p.fit.block_multipliers_available},
-                             {"pipeline_clock_mhz", p.fit.pipeline_clock_mhz},
-                             {"resources_modelled", p.fit.modelled}}}};
-  ordered_json groups = ordered_json::array();
-  for (const board::RayGroup& g : L.groups)
-    groups.push_back({{"banks", g.banks}, {"lanes", g.lanes}, {"first_lane", g.first_lane},
-                      {"rate_per_lane", g.k() / 3.0}});
-  r["layout"] = {{"coordinates_per_word", L.coords_per_word},
-                 {"field_bits", L.field_bits},
-                 {"face_bank", L.face_bank},
-                 {"result_bank", L.result_bank},
-                 {"own_face_table", L.mask_bank ? "bank " + std::to_string(*L.mask_bank) : std::string("face bank")},
-                 {"ray_groups", groups},
-                 {"spare_banks", L.spare_banks},
-                 {"nominal_rays_per_cycle", L.nominal_rays_per_cycle()}};
-  r["capacity"] = {{"max_rays_per_batch", L.max_rays_per_batch}, {"max_faces_per_set", L.max_faces_per_set}};
-  r["batching"] = {{"passes", d.passes},
-                   {"ray_batches", d.ray_batches},
-                   {"max_batches_per_step", d.max_batches_per_step},
-                   {"face_sets", d.face_sets},
-                   {"face_set_uploads", d.face_set_uploads}};
+  BoardDetail& b = r.board;
+  b.device = device_report(p);
+  b.layout = layout_report(L);
+  b.max_rays_per_batch = L.max_rays_per_batch;
+  b.max_faces_per_set = L.max_faces_per_set;
+  b.batching = {d.passes, d.ray_batches, d.max_batches_per_step, d.face_sets, d.face_set_uploads};
   const tlmx::PciBusReport pci = board.pci.report();
-  r["pci"] = {{"bytes_to_board", d.bytes_to_board},
-              {"bytes_to_host", d.bytes_to_host},
-              {"dma_transfers", d.dma_transfers},
-              {"pio_transfers", d.pio_transfers},
-              {"register_accesses", d.register_accesses},
-              {"bus_transactions", pci.total.transactions},
-              {"bus_busy_seconds", seconds(pci.total.busy)}};
-  ordered_json banks = ordered_json::array();
-  for (unsigned b = 0; b < p.banks; ++b) {
-    const tlmx::SramBankReport br = board.bank(b).report();
+  b.pci = {d.bytes_to_board, d.bytes_to_host, d.dma_transfers, d.pio_transfers, d.register_accesses,
+           pci.total.transactions, seconds(pci.total.busy)};
+  for (unsigned bank = 0; bank < p.banks; ++bank) {
+    const tlmx::SramBankReport br = board.bank(bank).report();
     const double bytes = static_cast<double>(br.bytes_read + br.bytes_written);
-    banks.push_back({{"bank", b},
-                     {"role", L.role(b)},
-                     {"reads", br.reads},
-                     {"writes", br.writes},
-                     {"bytes_read", br.bytes_read},
-                     {"bytes_written", br.bytes_written},
-                     {"busy_seconds", seconds(br.busy)},
-                     {"bytes_per_second", total > 0 ? bytes / total : 0.0},
-                     {"bytes_per_second_while_fpga_busy", busy > 0 ? bytes / busy : 0.0}});
+    b.banks.push_back({bank, L.role(bank), br.reads, br.writes, br.bytes_read, br.bytes_written, seconds(br.busy),
+                       total > 0 ? bytes / total : 0.0, busy > 0 ? bytes / busy : 0.0});
   }
-  r["banks"] = banks;
-  ordered_json lanes = ordered_json::array();
   for (const board::RayGroup& g : L.groups) {
     for (unsigned j = 0; j < g.lanes; ++j) {
       const unsigned lane = g.first_lane + j;
       const std::uint64_t rays = w.lane_rays[lane];
-      lanes.push_back({{"lane", lane},
-                       {"rate", g.k() / 3.0},
-                       {"rays", rays},
-                       {"utilisation", w.busy_cycles > 0 ? static_cast<double>(rays) / w.busy_cycles : 0.0}});
+      b.lanes.push_back({lane, g.k() / 3.0, rays, w.busy_cycles > 0 ? static_cast<double>(rays) / w.busy_cycles : 0.0});
     }
   }
-  r["lanes"] = lanes;
-  ordered_json limits = ordered_json::array();
-  for (const auto& [limit, tally] : d.limits)
-    limits.push_back({{"limit", limit}, {"passes", tally.passes}, {"fpga_busy_seconds", seconds(tally.fpga_busy)}});
-  r["stream_limits"] = limits;  // what bounded each pass's stream (board/pass_timing.h), and its FPGA time
-  r["intersections"] = {{"tests", d.tests},
-                        {"per_second", total > 0 ? d.tests / total : 0.0},
-                        {"per_second_while_fpga_busy", busy > 0 ? d.tests / busy : 0.0}};
-  const ordered_json work = host_work_json(m_cpu);
-  ordered_json driver;
-  for (int k = 0; k < kDriverWorkKinds; ++k)
-    driver[to_string(DriverWork(k))] = {{"count", m_cpu.count(DriverWork(k))},
-                                        {"seconds", seconds(m_cpu.time(DriverWork(k)))}};
-  r["host"] = {{"profile", m_setup.host.name},
-               {"driver_model", m_setup.host.driver_model.name()},
-               {"work", work},
-               {"driver", driver}};
+  for (const auto& [limit, tally] : d.limits) b.stream_limits.push_back({limit, tally.passes, seconds(tally.fpga_busy)});
+  r.intersections = {d.tests, total > 0 ? d.tests / total : 0.0, busy > 0 ? d.tests / busy : 0.0};
+  r.host_profile = m_setup.host.name;
+  r.work = host_work(m_cpu);
+  b.driver_model = m_setup.host.driver_model.name();
+  for (int k = 0; k < kDriverWorkKinds; ++k) b.driver[k] = {m_cpu.count(DriverWork(k)), seconds(m_cpu.time(DriverWork(k)))};
   if (wall_seconds >= 0) {
-    r["wall_seconds"] = wall_seconds;
-    r["wall_seconds_per_step"] = m_result.steps > 0 ? wall_seconds / m_result.steps : 0.0;
+    r.has_wall = true;
+    r.wall_seconds = wall_seconds;
+    r.wall_seconds_per_step = m_result.steps > 0 ? wall_seconds / m_result.steps : 0.0;
   }
   return r;
 }

@@ -5,7 +5,7 @@
 //   BoardRunOptions o;  o.device = "xc2v6000";  o.lanes = 2;  o.concurrent = true;
 //   BoardRunResult r = run_radiosity_on_board(scene, solver_options, o);
 //   r.solver   -- the SolverResult, as the software backends return it
-//   r.report   -- simulated_seconds and its parts, traffic, utilisation, capacity (docs/board.md)
+//   r.report   -- RunReport: simulated_seconds and its parts, traffic, utilisation, capacity (docs/board.md)
 //
 // SystemC elaborates once per process: run_radiosity_on_board may be called once per process (a
 // second call throws std::logic_error). Tests that need two systems side by side construct two
@@ -29,6 +29,7 @@
 #include "host/host_cpu_model.h"
 #include "radiosity/radiosity.h"
 #include "host/trace_writer.h"
+#include "platform/run_report.h"
 #include "radiosity/visibility_recording.h"
 #include "scenes/scene.h"
 
@@ -55,7 +56,7 @@ struct BoardRunOptions {
 
 struct BoardRunResult {
   SolverResult solver;
-  nlohmann::ordered_json report;
+  RunReport report;  // to_json(report) is the report.json document
 };
 
 // Throws std::invalid_argument for bad options (profiles, layout, width, capacity without
@@ -94,7 +95,7 @@ class BoardSystem : public sc_core::sc_module {
   const HostCpuModel& cpu() const { return m_cpu; }
   const BoardVisibility& driver() const { return *m_visibility; }
   TraceWriter& trace() { return m_trace; }
-  nlohmann::ordered_json report(double wall_seconds = -1) const;
+  RunReport report(double wall_seconds = -1) const;
 
  private:
   void run();

@@ -41,22 +41,14 @@ void SoftwareSystem::rethrow_if_failed() const {
   if (m_error) std::rethrow_exception(m_error);
 }
 
-nlohmann::ordered_json host_work_json(const HostCpuModel& cpu) {
-  nlohmann::ordered_json work;
-  for (int k = 0; k < kHostWorkKinds; ++k) {
-    work[to_string(HostWork(k))] = {{"count", cpu.count(HostWork(k))}, {"seconds", cpu.time(HostWork(k)).to_seconds()}};
-  }
-  return work;
-}
-
-nlohmann::ordered_json SoftwareSystem::report() const {
-  nlohmann::ordered_json r;
-  r["schema"] = "rc2000sim.software/1";
-  r["simulated_seconds"] = m_end.to_seconds();
-  r["time"] = {{"host_compute_seconds", m_cpu.compute_time().to_seconds()}};
-  r["intersections"] = {{"tests", m_tests},
-                        {"per_second", m_end > sc_core::SC_ZERO_TIME ? m_tests / m_end.to_seconds() : 0.0}};
-  r["host"] = {{"profile", m_cpu.profile().name}, {"work", host_work_json(m_cpu)}};
+RunReport SoftwareSystem::report() const {
+  RunReport r;
+  r.simulated_seconds = m_end.to_seconds();
+  r.time.host_compute = m_cpu.compute_time().to_seconds();
+  r.intersections.tests = m_tests;
+  r.intersections.per_second = m_end > sc_core::SC_ZERO_TIME ? m_tests / m_end.to_seconds() : 0.0;
+  r.host_profile = m_cpu.profile().name;
+  for (int k = 0; k < kHostWorkKinds; ++k) r.work[k] = {m_cpu.count(HostWork(k)), m_cpu.time(HostWork(k)).to_seconds()};
   return r;
 }
 

@@ -10,6 +10,7 @@
 #include <systemc>
 
 #include "host/host_cpu_model.h"
+#include "platform/run_report.h"
 #include "radiosity/radiosity.h"
 #include "radiosity/visibility_recording.h"
 #include "scenes/scene.h"
@@ -30,7 +31,7 @@ class SoftwareSystem : public sc_core::sc_module {
   const SolverResult& result() const { return m_result; }
   sc_core::sc_time end_time() const { return m_end; }
   const HostCpuModel& cpu() const { return m_cpu; }
-  nlohmann::ordered_json report() const;
+  RunReport report() const;
 
  private:
   void run();
@@ -46,8 +47,5 @@ class SoftwareSystem : public sc_core::sc_module {
   bool m_finished = false;
   std::exception_ptr m_error;
 };
-
-// Host work counts and seconds by kind, as board and software reports give them.
-nlohmann::ordered_json host_work_json(const HostCpuModel& cpu);
 
 }  // namespace rc

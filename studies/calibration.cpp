@@ -33,8 +33,6 @@ CostGroup group_of(HostWork w) {
 
 CostGroup group_of(DriverWork w) { return w == DriverWork::Call ? CostGroup::DriverPass : CostGroup::DriverData; }
 
-double number(const nlohmann::ordered_json& j, const char* a, const char* b) { return j.at(a).at(b).get<double>(); }
-
 }  // namespace
 
 double minimum_scale(CostGroup group) { return group == CostGroup::DriverPass ? 1.0 : 0.0; }
@@ -46,23 +44,20 @@ double CalibrationObservation::simulated_seconds() const {
 }
 
 CalibrationObservation observation_from_report(const std::string& label, double measured_seconds,
-                                               const nlohmann::ordered_json& report, const HostProfile& used) {
+                                               const RunReport& report, const HostProfile& used) {
   CalibrationObservation o;
   o.label = label;
   o.measured_seconds = measured_seconds;
-  for (int k = 0; k < kHostWorkKinds; ++k) {
-    o.group_seconds[static_cast<int>(group_of(HostWork(k)))] += number(report.at("host").at("work"), to_string(HostWork(k)).c_str(), "seconds");
-  }
-  if (report.contains("board") || report.at("schema") == "rc2000sim.board/1") {
-    const auto& driver = report.at("host").at("driver");
+  for (int k = 0; k < kHostWorkKinds; ++k) o.group_seconds[static_cast<int>(group_of(HostWork(k)))] += report.work[k].seconds;
+  if (report.board_run) {
     for (int k = 0; k < kDriverWorkKinds; ++k) {
-      o.group_seconds[static_cast<int>(group_of(DriverWork(k)))] += number(driver, to_string(DriverWork(k)).c_str(), "seconds");
+      o.group_seconds[static_cast<int>(group_of(DriverWork(k)))] += report.board.driver[k].seconds;
     }
     // Each pass ends with one interrupt, whose latency the host profile sets; the rest of the
     // waiting is the board's own time.
-    const double irq = used.interrupt_latency.to_seconds() * report.at("batching").at("passes").get<double>();
+    const double irq = used.interrupt_latency.to_seconds() * static_cast<double>(report.board.batching.passes);
     o.group_seconds[static_cast<int>(CostGroup::DriverPass)] += irq;
-    o.fixed_seconds = number(report, "time", "pci_transfer_seconds") + number(report, "time", "waiting_seconds") - irq;
+    o.fixed_seconds = report.time.pci_transfer + report.time.waiting - irq;
   }
   return o;
 }

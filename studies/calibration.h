@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "host/host_cpu_model.h"
+#include "platform/run_report.h"
 
 namespace rc {
 
@@ -35,9 +36,9 @@ struct CalibrationObservation {
   double simulated_seconds() const;                 // fixed + sum of groups (scale 1)
 };
 
-// Splits a run's report (rc2000sim.software/1 or rc2000sim.board/1, serial) into groups.
+// Splits a run's report (software or serial board) into groups.
 CalibrationObservation observation_from_report(const std::string& label, double measured_seconds,
-                                               const nlohmann::ordered_json& report, const HostProfile& used);
+                                               const RunReport& report, const HostProfile& used);
 
 struct CalibrationFit {
   std::array<double, kCostGroups> scale{};  // >= 0; cost = scale x the profile's cost

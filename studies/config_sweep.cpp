@@ -223,52 +223,50 @@ namespace {
 
 double ratio(double a, double b) { return b > 0 ? a / b : kNaN; }
 
-void busiest_bank(const nlohmann::ordered_json& banks, double fpga_busy, SweepRow& r) {
+void busiest_bank(const std::vector<BankUseReport>& banks, double fpga_busy, SweepRow& r) {
   double most = -1;
-  for (const auto& b : banks) {
-    const double busy = b.at("busy_seconds").get<double>();
-    if (busy <= most) continue;  // the first of equal banks wins
-    most = busy;
-    r.busiest_bank = b.at("bank").get<int>();
-    r.busiest_bank_role = b.at("role").get<std::string>();
+  for (const BankUseReport& b : banks) {
+    if (b.busy_seconds <= most) continue;  // the first of equal banks wins
+    most = b.busy_seconds;
+    r.busiest_bank = static_cast<int>(b.bank);
+    r.busiest_bank_role = b.role;
   }
   r.max_bank_utilisation = most >= 0 ? ratio(most, fpga_busy) : kNaN;
 }
 
-void dominant_limit(const nlohmann::ordered_json& limits, SweepRow& r) {
+void dominant_limit(const std::vector<StreamLimitReport>& limits, SweepRow& r) {
   double most = -1, total = 0;
-  for (const auto& l : limits) {
-    const double busy = l.at("fpga_busy_seconds").get<double>();
-    total += busy;
-    if (busy <= most) continue;
-    most = busy;
-    r.fpga_limit = l.at("limit").get<std::string>();
+  for (const StreamLimitReport& l : limits) {
+    total += l.fpga_busy_seconds;
+    if (l.fpga_busy_seconds <= most) continue;
+    most = l.fpga_busy_seconds;
+    r.fpga_limit = l.limit;
   }
   r.fpga_limit_share = most >= 0 ? ratio(most, total) : kNaN;
 }
 
 }  // namespace
 
-SweepRow row_from_report(const SweepConfig& config, const nlohmann::ordered_json& report, int steps) {
+SweepRow row_from_report(const SweepConfig& config, const RunReport& report, int steps) {
   SweepRow r;
   r.config = config;
   r.steps = steps;
-  const auto& t = report.at("time");
-  r.clock_mhz = report.at("device").at("clock_hz").get<double>() / 1e6;
-  r.nominal_rays_per_cycle = report.at("layout").at("nominal_rays_per_cycle").get<double>();
-  r.simulated_seconds = report.at("simulated_seconds").get<double>();
-  r.fpga_busy_seconds = t.at("fpga_busy_seconds").get<double>();
-  r.host_compute_seconds = t.at("host_compute_seconds").get<double>();
-  r.driver_cpu_seconds = t.at("driver_cpu_seconds").get<double>();
-  r.pci_transfer_seconds = t.at("pci_transfer_seconds").get<double>();
-  r.waiting_seconds = t.at("waiting_seconds").get<double>();
-  r.pci_utilisation = ratio(report.at("pci").at("bus_busy_seconds").get<double>(), r.simulated_seconds);
-  busiest_bank(report.at("banks"), r.fpga_busy_seconds, r);
+  const RunTime& t = report.time;
+  r.clock_mhz = report.board.device.clock_hz / 1e6;
+  r.nominal_rays_per_cycle = report.board.layout.nominal_rays_per_cycle;
+  r.simulated_seconds = report.simulated_seconds;
+  r.fpga_busy_seconds = t.fpga_busy;
+  r.host_compute_seconds = t.host_compute;
+  r.driver_cpu_seconds = t.driver_cpu;
+  r.pci_transfer_seconds = t.pci_transfer;
+  r.waiting_seconds = t.waiting;
+  r.pci_utilisation = ratio(report.board.pci.bus_busy_seconds, r.simulated_seconds);
+  busiest_bank(report.board.banks, r.fpga_busy_seconds, r);
   double lanes = 0;
-  for (const auto& l : report.at("lanes")) lanes += l.at("utilisation").get<double>();
-  r.mean_lane_utilisation = report.at("lanes").empty() ? kNaN : lanes / report.at("lanes").size();
-  r.intersections_per_second_while_busy = report.at("intersections").at("per_second_while_fpga_busy").get<double>();
-  dominant_limit(report.at("stream_limits"), r);
+  for (const LaneReport& l : report.board.lanes) lanes += l.utilisation;
+  r.mean_lane_utilisation = report.board.lanes.empty() ? kNaN : lanes / report.board.lanes.size();
+  r.intersections_per_second_while_busy = report.intersections.per_second_while_fpga_busy;
+  dominant_limit(report.board.stream_limits, r);
   r.bottleneck = bottleneck(r);
   r.speedup_vs_one_lane = r.speedup_vs_software = kNaN;
   return r;

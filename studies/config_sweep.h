@@ -143,7 +143,7 @@ struct SweepRow {
 
 SweepRow invalid_row(const SweepConfig& config, const ConfigCheck& check, int steps);
 // From a board report (rc2000sim.board/1 with stream_limits); speedups are filled by fill_speedups.
-SweepRow row_from_report(const SweepConfig& config, const nlohmann::ordered_json& report, int steps);
+SweepRow row_from_report(const SweepConfig& config, const RunReport& report, int steps);
 
 // "lanes" -> "fpga_lanes"; "bank N (results)" -> "fpga_result_bank"; "bank N (rays ...)" ->
 // "fpga_ray_bank"; anything else -> "fpga_other".

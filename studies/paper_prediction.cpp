@@ -44,11 +44,7 @@ TimingCase bank_variant_case(const PaperScene& s, const BankVariant& v, const st
 
 }  // namespace
 
-double fpga_busy(const TimingOutcome& o) {
-  return o.report.contains("time") && o.report["time"].contains("fpga_busy_seconds")
-             ? o.report["time"]["fpga_busy_seconds"].get<double>()
-             : 0.0;
-}
+double fpga_busy(const TimingOutcome& o) { return o.report.time.fpga_busy; }
 
 std::vector<std::pair<std::string, double>> PaperPrediction::spread_of(std::size_t scene, int impl) const {
   std::vector<std::pair<std::string, double>> out;

@@ -89,7 +89,7 @@ std::vector<TimingOutcome> run_here(const std::vector<TimingCase>& all, const st
       o.steps = s.board->result().steps;
     }
     if (!s.finished()) throw std::logic_error("timing case '" + c.label + "' did not finish");
-    o.simulated_seconds = o.report["simulated_seconds"].get<double>();
+    o.simulated_seconds = o.report.simulated_seconds;
     out.push_back(std::move(o));
   }
   return out;
@@ -113,25 +113,26 @@ std::vector<std::vector<std::size_t>> deal(const std::vector<TimingCase>& cases,
   return out;
 }
 
-nlohmann::ordered_json to_json(const TimingOutcome& o) {
-  return {{"label", o.label}, {"simulated_seconds", o.simulated_seconds}, {"steps", o.steps}, {"report", o.report}};
+// Between the study's processes (run_report.h's codec for the report).
+nlohmann::json to_message(const TimingOutcome& o) {
+  return {{"label", o.label}, {"steps", o.steps}, {"report", encode(o.report)}};
 }
 
-TimingOutcome from_json(const nlohmann::ordered_json& j) {
+TimingOutcome from_message(const nlohmann::json& j) {
   TimingOutcome o;
   o.label = j.at("label").get<std::string>();
-  o.simulated_seconds = j.at("simulated_seconds").get<double>();
   o.steps = j.at("steps").get<int>();
-  o.report = j.at("report");
+  o.report = decode(j.at("report").get<std::string>());
+  o.simulated_seconds = o.report.simulated_seconds;
   return o;
 }
 
 // A child process: runs its shard and writes one JSON document (outcomes or an error) to `fd`.
 [[noreturn]] void run_child(const std::vector<TimingCase>& cases, const std::vector<std::size_t>& shard, int fd) {
-  nlohmann::ordered_json answer;
+  nlohmann::json answer;
   try {
-    nlohmann::ordered_json list = nlohmann::ordered_json::array();
-    for (const TimingOutcome& o : run_here(cases, shard)) list.push_back(to_json(o));
+    nlohmann::json list = nlohmann::json::array();
+    for (const TimingOutcome& o : run_here(cases, shard)) list.push_back(to_message(o));
     answer["outcomes"] = std::move(list);
   } catch (const std::exception& e) {
     answer["error"] = e.what();
@@ -206,13 +207,13 @@ std::vector<TimingOutcome> run_timing_study(const std::vector<TimingCase>& cases
       child_error = "timing study: worker process " + std::to_string(c + 1) + " died (status " + std::to_string(status) + ")";
       continue;
     }
-    const nlohmann::ordered_json answer = nlohmann::ordered_json::parse(text);
+    const nlohmann::json answer = nlohmann::json::parse(text);
     if (answer.contains("error")) {
       child_error = answer["error"].get<std::string>();
       continue;
     }
     const auto& list = answer.at("outcomes");
-    for (std::size_t k = 0; k < list.size(); ++k) out[dealt[c + 1][k]] = from_json(list[k]);
+    for (std::size_t k = 0; k < list.size(); ++k) out[dealt[c + 1][k]] = from_message(list[k]);
   }
   if (error) std::rethrow_exception(error);
   if (!child_error.empty()) throw std::runtime_error(child_error);

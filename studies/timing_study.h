@@ -49,7 +49,7 @@ struct TimingOutcome {
   std::string label;
   double simulated_seconds = 0;
   int steps = 0;
-  nlohmann::ordered_json report;  // the system's report (rc2000sim.board/1 or rc2000sim.software/1)
+  RunReport report;  // the system's report (to_json: rc2000sim.board/1 or rc2000sim.software/1)
 };
 
 // Throws std::invalid_argument for a bad case (before elaboration) and rethrows a system's error.

@@ -38,12 +38,12 @@ TEST(BoardMeasure, DISABLED_LargestPaperScene) {
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("%zu faces, %zu patches, %d steps, %u lanes, %s: %llu segments, %.3g tests\n", scene.faces.size(),
               scene.patches.size(), r.solver.steps, o.lanes, o.concurrent ? "concurrent" : "serial",
-              static_cast<unsigned long long>(r.solver.segments), r.report["intersections"]["tests"].get<double>());
+              static_cast<unsigned long long>(r.solver.segments), static_cast<double>(r.report.intersections.tests));
   std::printf("wall: %.3f s in sc_start, %.3f s with scene preparation; %.3f ms per simulated step\n",
-              r.report["wall_seconds"].get<double>(), total, 1e3 * r.report["wall_seconds_per_step"].get<double>());
-  std::printf("simulated: %.6f s (%.3f ms per step)\n", r.report["simulated_seconds"].get<double>(),
-              1e3 * r.report["simulated_seconds"].get<double>() / r.solver.steps);
-  std::printf("%s\n", r.report.dump(2).c_str());
+              r.report.wall_seconds, total, 1e3 * r.report.wall_seconds_per_step);
+  std::printf("simulated: %.6f s (%.3f ms per step)\n", r.report.simulated_seconds,
+              1e3 * r.report.simulated_seconds / r.solver.steps);
+  std::printf("%s\n", to_json(r.report).dump(2).c_str());
 }
 
 }  // namespace

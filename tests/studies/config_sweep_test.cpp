@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <tuple>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -195,21 +197,30 @@ TEST(ConfigSweep, CompactBanksHoldTheWholeStepAndEveryFaceWithoutCappingAGroup) 
 
 // ---- rows ---------------------------------------------------------------------------------------------
 
-nlohmann::ordered_json synthetic_report(double waiting, double host) {
-  nlohmann::ordered_json r;
-  r["simulated_seconds"] = waiting + host + 1.0 + 0.5;
-  r["time"] = {{"host_compute_seconds", host}, {"driver_cpu_seconds", 1.0}, {"pci_transfer_seconds", 0.5},
-               {"waiting_seconds", waiting}, {"fpga_busy_seconds", 4.0}, {"overlap_seconds", 0.0}};
-  r["device"] = {{"clock_hz", 52.5e6}};
-  r["layout"] = {{"nominal_rays_per_cycle", 2.0}};
-  r["pci"] = {{"bus_busy_seconds", 0.25}};
-  r["banks"] = {{{"bank", 0}, {"role", "faces"}, {"busy_seconds", 0.1}},
-                {{"bank", 4}, {"role", "results"}, {"busy_seconds", 3.0}},
-                {{"bank", 1}, {"role", "rays g0 X"}, {"busy_seconds", 2.0}}};
-  r["lanes"] = {{{"utilisation", 0.9}}, {{"utilisation", 0.8}}};
-  r["intersections"] = {{"per_second_while_fpga_busy", 1e8}};
-  r["stream_limits"] = {{{"limit", "bank 4 (results)"}, {"passes", 10}, {"fpga_busy_seconds", 3.0}},
-                        {{"limit", "lanes"}, {"passes", 20}, {"fpga_busy_seconds", 1.0}}};
+RunReport synthetic_report(double waiting, double host) {
+  RunReport r;
+  r.board_run = true;
+  r.simulated_seconds = waiting + host + 1.0 + 0.5;
+  r.time.host_compute = host;
+  r.time.driver_cpu = 1.0;
+  r.time.pci_transfer = 0.5;
+  r.time.waiting = waiting;
+  r.time.fpga_busy = 4.0;
+  r.board.device.clock_hz = 52.5e6;
+  r.board.layout.nominal_rays_per_cycle = 2.0;
+  r.board.pci.bus_busy_seconds = 0.25;
+  for (const auto& [bank, role, busy] : {std::tuple<unsigned, const char*, double>{0, "faces", 0.1},
+                                         {4, "results", 3.0},
+                                         {1, "rays g0 X", 2.0}}) {
+    BankUseReport b;
+    b.bank = bank;
+    b.role = role;
+    b.busy_seconds = busy;
+    r.board.banks.push_back(b);
+  }
+  r.board.lanes = {{0, 1.0, 0, 0.9}, {1, 1.0, 0, 0.8}};
+  r.intersections.per_second_while_fpga_busy = 1e8;
+  r.board.stream_limits = {{"bank 4 (results)", 10, 3.0}, {"lanes", 20, 1.0}};
   return r;
 }
 

@@ -17,7 +17,7 @@ namespace {
 std::string dump(const std::vector<TimingOutcome>& outcomes) {
   nlohmann::ordered_json j = nlohmann::ordered_json::array();
   for (const TimingOutcome& o : outcomes) {
-    j.push_back({{"label", o.label}, {"seconds", o.simulated_seconds}, {"steps", o.steps}, {"report", o.report}});
+    j.push_back({{"label", o.label}, {"seconds", o.simulated_seconds}, {"steps", o.steps}, {"report", to_json(o.report)}});
   }
   return j.dump();
 }

@@ -23,6 +23,8 @@
 #include <string>
 #include <vector>
 
+#include "pipeline/fixed_format.h"
+
 namespace rc::board {
 
 struct RayGroup {
@@ -40,7 +42,7 @@ struct RayGroup {
 struct BankLayout {
   unsigned lanes = 0;
   unsigned banks_available = 0;
-  int bits = 0;
+  pipeline::FracBits bits = 15;  // set by make_bank_layout
   unsigned word_bits = 32;
   unsigned coords_per_word = 0;  // c
   unsigned field_bits = 0;       // width of one coordinate field in a word
@@ -63,7 +65,7 @@ struct BankLayout {
 
 // Throws std::invalid_argument for zero lanes, a width outside 7..31, a word narrower than a
 // coordinate, or more banks needed than available (naming lanes, banks needed and available).
-BankLayout make_bank_layout(unsigned lanes, unsigned banks, int bits, unsigned word_bits,
+BankLayout make_bank_layout(unsigned lanes, unsigned banks, pipeline::FracBits bits, unsigned word_bits,
                             std::uint64_t bank_capacity_bytes);
 
 // The rays of one pass divided over the groups: contiguous ranges in ray order, each group filled

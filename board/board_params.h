@@ -20,7 +20,7 @@ struct BoardParams {
   std::string device = "custom";
   unsigned lanes = 1;
   unsigned banks = 6;
-  int bits = 15;
+  pipeline::FracBits bits = 15;
   std::uint64_t bank_capacity_bytes = 4u << 20;
   unsigned word_bits = 32;
   unsigned bank_write_latency = 2;     // bank cycles (read latency: timing.bank_read_latency)
@@ -37,7 +37,7 @@ struct BoardParams {
 struct BoardChoices {
   unsigned lanes = 1;
   unsigned banks = 0;                    // 0: the profile's count
-  int bits = 15;
+  pipeline::FracBits bits = 15;
   std::uint64_t bank_capacity_bytes = 0; // 0: the profile's
   WrapperModel model = WrapperModel::fast;
   sc_core::sc_time irq_latency = sc_core::SC_ZERO_TIME;

@@ -16,7 +16,7 @@ std::string DesignFit::describe() const {
   return line;
 }
 
-DesignFit fit_design(const DeviceProfile& device, const pipeline::ResourceModel& resources, int lanes, int bits) {
+DesignFit fit_design(const DeviceProfile& device, const pipeline::ResourceModel& resources, int lanes, pipeline::FracBits bits) {
   if (lanes < 1) throw std::invalid_argument("a design needs at least one lane, got " + std::to_string(lanes));
   const pipeline::PipelineResources hard = resources.pipeline(bits, true);
   const pipeline::PipelineResources soft = resources.pipeline(bits, false);
@@ -44,7 +44,7 @@ DesignFit fit_design(const DeviceProfile& device, const pipeline::ResourceModel&
   return f;
 }
 
-int max_lanes(const DeviceProfile& device, const pipeline::ResourceModel& resources, int bits) {
+int max_lanes(const DeviceProfile& device, const pipeline::ResourceModel& resources, pipeline::FracBits bits) {
   int lanes = 0;
   while (fit_design(device, resources, lanes + 1, bits).fits) ++lanes;
   return lanes;

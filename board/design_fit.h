@@ -34,9 +34,9 @@ struct DesignFit {
 // The smallest implementation of `lanes` lanes on the device: as many block-multiplier lanes as
 // its multipliers allow, the rest with slice multipliers. Throws std::invalid_argument for
 // lanes < 1 or a width outside 7..31.
-DesignFit fit_design(const DeviceProfile& device, const pipeline::ResourceModel& resources, int lanes, int bits);
+DesignFit fit_design(const DeviceProfile& device, const pipeline::ResourceModel& resources, int lanes, pipeline::FracBits bits);
 
 // The largest lane count that fits (0 if not even one does).
-int max_lanes(const DeviceProfile& device, const pipeline::ResourceModel& resources, int bits);
+int max_lanes(const DeviceProfile& device, const pipeline::ResourceModel& resources, pipeline::FracBits bits);
 
 }  // namespace rc::board

@@ -51,8 +51,7 @@ bool segment_hits_exact(const FaceRecord& face, const FixedVec3& start, const Fi
   return exact_values(face, start, end).hit;
 }
 
-bool near_decision_boundary(const ExactValues& e, int bits) {
-  validate_frac_bits(bits);
+bool near_decision_boundary(const ExactValues& e, FracBits bits) {
   // One LSB of the pipeline (2^-N) is 2^2N units of the exact values (2^-3N).
   const Wide lsb = Wide{1} << (2 * bits);
   const Wide bound = kDotErrorBoundLsb * lsb;

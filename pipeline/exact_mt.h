@@ -24,7 +24,7 @@ constexpr int kDotErrorBoundLsb = 6;
 // True if some quantity the decision compares lies within the proven error bound of its
 // threshold, so the pipeline may legitimately decide differently from the exact reference.
 // Outside this band the two must agree: the stress tests check exactly that.
-bool near_decision_boundary(const ExactValues& exact, int bits);
+bool near_decision_boundary(const ExactValues& exact, FracBits bits);
 
 // The smallest distance, in units of 2^-3N, between a compared quantity and its threshold:
 // min(|det|, |u*s|, |v*s|, |t*s|, ||det| - u*s|, ||det| - t*s|, ||det| - u*s - v*s|).

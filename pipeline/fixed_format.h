@@ -11,10 +11,26 @@ namespace rc::pipeline {
 constexpr int kMinFracBits = 7;
 constexpr int kMaxFracBits = 31;
 
+constexpr bool is_valid_frac_bits(int bits) { return bits >= kMinFracBits && bits <= kMaxFracBits; }
+
 // Throws std::invalid_argument naming the width and the accepted range.
 void validate_frac_bits(int bits);
 
-constexpr bool is_valid_frac_bits(int bits) { return bits >= kMinFracBits && bits <= kMaxFracBits; }
+// A fractional width the pipeline supports, valid by construction: the width is checked once, when
+// an int becomes a FracBits (std::invalid_argument naming it and the range), and every function that
+// takes a FracBits relies on it instead of checking again. The conversion from int is implicit on
+// purpose, so each call site with a bare width is checked at the call; the value reads as an int.
+class FracBits {
+ public:
+  FracBits(int bits) : bits_(bits) {  // NOLINT(google-explicit-constructor): checked conversion
+    validate_frac_bits(bits);
+  }
+  constexpr operator int() const { return bits_; }  // NOLINT(google-explicit-constructor)
+  constexpr int value() const { return bits_; }
+
+ private:
+  int bits_;
+};
 
 // A 3-vector of fixed-point integers. The generic core is templated on the integer type (32-bit,
 // 64-bit or 128-bit); the public API speaks FixedVec3 = IntVec3<int64_t>.

@@ -93,8 +93,7 @@ const OccludeKernels& occlude_kernels(KernelIsa isa) {
 
 }  // namespace
 
-std::int64_t quantize_coordinate(double x, int bits) {
-  validate_frac_bits(bits);
+std::int64_t quantize_coordinate(double x, FracBits bits) {
   if (!(x >= 0.0 && x < 1.0)) {
     char text[64];
     std::snprintf(text, sizeof text, "%.17g", x);
@@ -105,19 +104,19 @@ std::int64_t quantize_coordinate(double x, int bits) {
   return static_cast<std::int64_t>(std::floor(std::ldexp(x, bits)));
 }
 
-FixedVec3 quantize_point(const Vec3& p, int bits) {
+FixedVec3 quantize_point(const Vec3& p, FracBits bits) {
   return {quantize_coordinate(p.x, bits), quantize_coordinate(p.y, bits),
           quantize_coordinate(p.z, bits)};
 }
 
-FaceRecord make_face_record(const Triangle& triangle, int bits) {
+FaceRecord make_face_record(const Triangle& triangle, FracBits bits) {
   const FixedVec3 v0 = quantize_point(triangle.v0, bits);
   return {v0, quantize_point(triangle.v1, bits) - v0, quantize_point(triangle.v2, bits) - v0};
 }
 
-bool is_position(const FixedVec3& p, int bits) { return in_range(p, Quantity::Position, bits); }
+bool is_position(const FixedVec3& p, FracBits bits) { return in_range(p, Quantity::Position, bits); }
 
-bool is_face_record(const FaceRecord& face, int bits) {
+bool is_face_record(const FaceRecord& face, FracBits bits) {
   // The edges must be differences of two in-range positions, not just in the 1.N range.
   return is_position(face.v0, bits) && in_range(face.edge1, Quantity::Difference, bits) &&
          in_range(face.edge2, Quantity::Difference, bits) &&
@@ -127,27 +126,23 @@ bool is_face_record(const FaceRecord& face, int bits) {
 FixedVec3 segment_direction(const FixedVec3& start, const FixedVec3& end) { return end - start; }
 
 Stage1Result stage1(const FaceRecord& face, const FixedVec3& start, const FixedVec3& direction,
-                    int bits) {
-  validate_frac_bits(bits);
+                    FracBits bits) {
   NoProbe probe;
   return stage1(face.v0, face.edge2, start, direction, bits, probe);
 }
 
-Stage2Result stage2(const FaceRecord& face, const Stage1Result& s1, int bits) {
-  validate_frac_bits(bits);
+Stage2Result stage2(const FaceRecord& face, const Stage1Result& s1, FracBits bits) {
   NoProbe probe;
   return stage2(face.edge1, s1, bits, probe);
 }
 
 Stage3Result stage3(const FaceRecord& face, const FixedVec3& direction, const Stage1Result& s1,
-                    const Stage2Result& s2, int bits) {
-  validate_frac_bits(bits);
+                    const Stage2Result& s2, FracBits bits) {
   NoProbe probe;
   return stage3(face.edge2, direction, s1, s2, bits, probe);
 }
 
-Trace trace(const FaceRecord& face, const FixedVec3& start, const FixedVec3& end, int bits) {
-  validate_frac_bits(bits);
+Trace trace(const FaceRecord& face, const FixedVec3& start, const FixedVec3& end, FracBits bits) {
   assert(is_face_record(face, bits) && is_position(start, bits) && is_position(end, bits));
   Trace t;
   t.bits = bits;
@@ -156,22 +151,20 @@ Trace trace(const FaceRecord& face, const FixedVec3& start, const FixedVec3& end
   return t;
 }
 
-bool segment_hits(const FaceRecord& face, const FixedVec3& start, const FixedVec3& end, int bits) {
-  validate_frac_bits(bits);
+bool segment_hits(const FaceRecord& face, const FixedVec3& start, const FixedVec3& end, FracBits bits) {
   assert(is_face_record(face, bits) && is_position(start, bits) && is_position(end, bits));
   return pipeline_hits(face.v0, face.edge1, face.edge2, start, end, bits);
 }
 
 void occlude_face(const FaceRecord& face, const FixedVec3& start, const std::int64_t* end_x,
-                  const std::int64_t* end_y, const std::int64_t* end_z, std::size_t n, int bits,
+                  const std::int64_t* end_y, const std::int64_t* end_z, std::size_t n, FracBits bits,
                   std::uint8_t* blocked, const std::uint8_t* skip) {
   occlude_face(best_kernel_isa(), face, start, end_x, end_y, end_z, n, bits, blocked, skip);
 }
 
 void occlude_face(KernelIsa isa, const FaceRecord& face, const FixedVec3& start,
                   const std::int64_t* end_x, const std::int64_t* end_y, const std::int64_t* end_z,
-                  std::size_t n, int bits, std::uint8_t* blocked, const std::uint8_t* skip) {
-  validate_frac_bits(bits);
+                  std::size_t n, FracBits bits, std::uint8_t* blocked, const std::uint8_t* skip) {
   assert(is_face_record(face, bits) && is_position(start, bits));
   const OccludeKernels& k = occlude_kernels(isa);
   // The narrowest integer type whose products cannot overflow at this width (bit_bounds.h).

@@ -20,15 +20,15 @@ namespace rc::pipeline {
 
 // floor(x * 2^bits): the 0.N code of a coordinate. Throws std::out_of_range (naming the value)
 // unless 0 <= x < 1.
-std::int64_t quantize_coordinate(double x, int bits);
-FixedVec3 quantize_point(const Vec3& p, int bits);
+std::int64_t quantize_coordinate(double x, FracBits bits);
+FixedVec3 quantize_point(const Vec3& p, FracBits bits);
 
 // Quantises the three vertices and takes exact differences, so both edges fit signed 1.N.
-FaceRecord make_face_record(const Triangle& triangle, int bits);
+FaceRecord make_face_record(const Triangle& triangle, FracBits bits);
 
 // True if the values are what the hardware can be fed at `bits` (see the header comment).
-bool is_position(const FixedVec3& p, int bits);
-bool is_face_record(const FaceRecord& face, int bits);
+bool is_position(const FixedVec3& p, FracBits bits);
+bool is_face_record(const FaceRecord& face, FracBits bits);
 
 // ---- Stage by stage, for a cycle-level model of the 37-stage pipeline ------------------------
 using Stage1Result = Stage1Values<std::int64_t>;
@@ -38,10 +38,10 @@ using Stage3Result = Stage3Values<std::int64_t>;
 // Input stage: the segment direction end - start (exact, signed 1.N).
 FixedVec3 segment_direction(const FixedVec3& start, const FixedVec3& end);
 Stage1Result stage1(const FaceRecord& face, const FixedVec3& start, const FixedVec3& direction,
-                    int bits);
-Stage2Result stage2(const FaceRecord& face, const Stage1Result& s1, int bits);
+                    FracBits bits);
+Stage2Result stage2(const FaceRecord& face, const Stage1Result& s1, FracBits bits);
 Stage3Result stage3(const FaceRecord& face, const FixedVec3& direction, const Stage1Result& s1,
-                    const Stage2Result& s2, int bits);
+                    const Stage2Result& s2, FracBits bits);
 
 // ---- Everything at once -------------------------------------------------------------------------
 // All intermediates of one test: the stage outputs plus the output of every hardware block.
@@ -55,22 +55,22 @@ struct Trace {
   std::int64_t output(AddSub a) const { return add_subs[static_cast<int>(a)]; }
   bool hit() const { return values.stage3.hit; }
 };
-Trace trace(const FaceRecord& face, const FixedVec3& start, const FixedVec3& end, int bits);
+Trace trace(const FaceRecord& face, const FixedVec3& start, const FixedVec3& end, FracBits bits);
 
 // Does the open segment (start, end) cross the triangle's interior? The hardware's answer.
-bool segment_hits(const FaceRecord& face, const FixedVec3& start, const FixedVec3& end, int bits);
+bool segment_hits(const FaceRecord& face, const FixedVec3& start, const FixedVec3& end, FracBits bits);
 
 // The hardware's streaming order (paper sec 4.1): one face, one start point, many end points given
 // as structure-of-arrays (the X, Y and Z banks). ORs each hit into blocked[i]; entries with
 // skip[i] != 0 are left untouched (skip may be null). The loop is branch-free and vectorised;
 // widths <= 15 run on 32-bit lanes, wider ones on 64-bit lanes, both from the same core.
 void occlude_face(const FaceRecord& face, const FixedVec3& start, const std::int64_t* end_x,
-                  const std::int64_t* end_y, const std::int64_t* end_z, std::size_t n, int bits,
+                  const std::int64_t* end_y, const std::int64_t* end_z, std::size_t n, FracBits bits,
                   std::uint8_t* blocked, const std::uint8_t* skip = nullptr);
 // The same on one particular instruction-set variant (tests, benchmarks); the overload above
 // uses best_kernel_isa(). Throws std::invalid_argument if the CPU cannot run it.
 void occlude_face(KernelIsa isa, const FaceRecord& face, const FixedVec3& start,
                   const std::int64_t* end_x, const std::int64_t* end_y, const std::int64_t* end_z,
-                  std::size_t n, int bits, std::uint8_t* blocked, const std::uint8_t* skip = nullptr);
+                  std::size_t n, FracBits bits, std::uint8_t* blocked, const std::uint8_t* skip = nullptr);
 
 }  // namespace rc::pipeline

@@ -20,8 +20,7 @@ struct FaceStartValues {
   std::int64_t t;
 };
 
-FaceStartValues face_start_values(const FaceRecord& face, const FixedVec3& start, int bits) {
-  validate_frac_bits(bits);
+FaceStartValues face_start_values(const FaceRecord& face, const FixedVec3& start, FracBits bits) {
   const FixedVec3 none{0, 0, 0};
   NoProbe probe;
   const Stage1Values<std::int64_t> s1 = stage1(face.v0, face.edge2, start, none, bits, probe);
@@ -49,7 +48,7 @@ struct ConditionInputs {
   std::int64_t l1_edge1, l1_tvec;
 };
 
-ConditionInputs condition_inputs(const FaceRecord& face, const FixedVec3& start, int bits) {
+ConditionInputs condition_inputs(const FaceRecord& face, const FixedVec3& start, FracBits bits) {
   const FaceStartValues f = face_start_values(face, start, bits);
   ConditionInputs in{};
   in.empty = f.t == 0;
@@ -91,7 +90,7 @@ Thresholds<Num> thresholds(const ConditionInputs& in, Num m) {
 
 }  // namespace
 
-ExactHitConditions exact_hit_conditions(const FaceRecord& face, const FixedVec3& start, int bits) {
+ExactHitConditions exact_hit_conditions(const FaceRecord& face, const FixedVec3& start, FracBits bits) {
   const ConditionInputs in = condition_inputs(face, start, bits);
   ExactHitConditions r;
   r.empty = in.empty;
@@ -136,7 +135,7 @@ float round_down(double x) {
 // 20 * 2^-53 * G[k], where G[k] = M * sum_i mag[k][i] + cmag[k] bounds every term involved
 // (coordinates are below M). Lowering the threshold by 2^-44 * G[k], far more than that, keeps
 // the double test conservative; at 31 bits it costs under 1/1000 of an LSB of tightness.
-HitRegion::HitRegion(const FaceRecord& face, const FixedVec3& start, int bits) {
+HitRegion::HitRegion(const FaceRecord& face, const FixedVec3& start, FracBits bits) {
   const ConditionInputs in = condition_inputs(face, start, bits);
   if (in.empty) {
     empty_ = true;

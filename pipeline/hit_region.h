@@ -34,7 +34,7 @@ struct ExactHitConditions {
 
   bool allows(const FixedVec3& direction) const;
 };
-ExactHitConditions exact_hit_conditions(const FaceRecord& face, const FixedVec3& start, int bits);
+ExactHitConditions exact_hit_conditions(const FaceRecord& face, const FixedVec3& start, FracBits bits);
 
 // The same four conditions in double precision, moved into end-point space, with thresholds
 // lowered by a margin that covers every rounding of the double evaluation, so that
@@ -43,7 +43,7 @@ class HitRegion {
  public:
   // Throws std::invalid_argument for a width outside 7..31. Requires a valid face record and
   // start position (as pipeline::segment_hits does).
-  HitRegion(const FaceRecord& face, const FixedVec3& start, int bits);
+  HitRegion(const FaceRecord& face, const FixedVec3& start, FracBits bits);
 
   // True when t == 0: the pipeline reports a miss for every end point.
   bool empty() const { return empty_; }

@@ -181,8 +181,7 @@ int ResourceModel::blocks_per_product(int a_bits, int b_bits, int block_bits) {
   return pieces(a_bits) * pieces(b_bits);
 }
 
-int ResourceModel::block_multipliers_needed(int bits, int block_bits) {
-  validate_frac_bits(bits);
+int ResourceModel::block_multipliers_needed(FracBits bits, int block_bits) {
   int total = 0;
   for (int m = 0; m < kMultiplierCount; ++m) {
     const MultiplierOperands ops = operands_of(static_cast<Multiplier>(m));
@@ -191,8 +190,7 @@ int ResourceModel::block_multipliers_needed(int bits, int block_bits) {
   return total;
 }
 
-PipelineResources ResourceModel::pipeline(int bits, bool use_block_multipliers) const {
-  validate_frac_bits(bits);
+PipelineResources ResourceModel::pipeline(FracBits bits, bool use_block_multipliers) const {
   PipelineResources r;
   r.frac_bits = bits;
   r.block_multipliers_used = use_block_multipliers;

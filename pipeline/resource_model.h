@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "pipeline/fixed_format.h"
+
 namespace rc::pipeline {
 
 struct PipelineResources {
@@ -59,7 +61,7 @@ class ResourceModel {
   static std::string default_path();
 
   // Throws std::invalid_argument for widths outside 7..31.
-  PipelineResources pipeline(int bits, bool use_block_multipliers) const;
+  PipelineResources pipeline(FracBits bits, bool use_block_multipliers) const;
   WrapperCost wrapper() const { return wrapper_; }
   double wrapper_clock_mhz(int lanes) const;
   DesignResources design(int bits, bool use_block_multipliers, int lanes) const;
@@ -69,7 +71,7 @@ class ResourceModel {
   // operand split into 17-bit unsigned pieces plus a signed top piece.
   static int blocks_per_product(int a_bits, int b_bits, int block_bits = 18);
   // Sum over the 27 multipliers, with operand widths from bit_bounds.h.
-  static int block_multipliers_needed(int bits, int block_bits = 18);
+  static int block_multipliers_needed(FracBits bits, int block_bits = 18);
 
  private:
   struct Point {

@@ -195,9 +195,8 @@ const char* name(CaseKind kind) {
   return kNames[static_cast<int>(kind)];
 }
 
-std::vector<StressCase> make_stress_cases(CaseKind kind, int bits, std::size_t count,
+std::vector<StressCase> make_stress_cases(CaseKind kind, FracBits bits, std::size_t count,
                                           std::uint64_t seed) {
-  validate_frac_bits(bits);
   Rng rng(seed * 1000003u + static_cast<std::uint64_t>(kind) * 101u + static_cast<std::uint64_t>(bits));
   const Lattice lattice{bits};
   std::vector<StressCase> cases;

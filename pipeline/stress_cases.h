@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "pipeline/fixed_format.h"
+
 #include "scenes/geometry.h"
 
 namespace rc::pipeline {
@@ -34,7 +36,7 @@ struct StressCase {
 // `count` reproducible cases of one kind, all coordinates in [0, 1). [lattice] kinds put every
 // coordinate on the 2^-bits grid, so quantising at `bits` is exact and the exact reference sees
 // the adversarial configuration itself; the others are generic doubles that quantisation moves.
-std::vector<StressCase> make_stress_cases(CaseKind kind, int bits, std::size_t count,
+std::vector<StressCase> make_stress_cases(CaseKind kind, FracBits bits, std::size_t count,
                                           std::uint64_t seed);
 
 // Every implementation's answer on one case at one width.

@@ -39,7 +39,7 @@ struct BoardRunOptions {
   std::string device = "xc2v6000";      // configs/devices/NAME.json, or a path to a profile
   unsigned lanes = 1;                   // pipeline instances
   unsigned banks = 0;                   // 0: the profile's bank count
-  int bits = 15;                        // fractional bits (7..31)
+  pipeline::FracBits bits = 15;         // fractional bits (7..31), checked when set
   bool concurrent = false;              // paper sec 4.3
   std::string host = "athlon-mp-2600";  // configs/hosts/NAME.json, or a path
   std::optional<HostProfile> host_profile;  // when set, this profile instead of `host` (calibration variants)

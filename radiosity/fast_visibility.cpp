@@ -32,8 +32,8 @@ constexpr std::size_t kDenseShare = 8;
 #define RC_FAST_TARGETS
 #endif
 
-FastFixedVisibility::FastFixedVisibility(int frac_bits, int threads)
-    : bits_(frac_bits), pool_((pipeline::validate_frac_bits(frac_bits), threads)) {
+FastFixedVisibility::FastFixedVisibility(pipeline::FracBits frac_bits, int threads)
+    : bits_(frac_bits), pool_(threads) {
   outputs_.resize(static_cast<std::size_t>(pool_.size()));
 }
 

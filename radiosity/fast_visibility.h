@@ -41,7 +41,7 @@ class FastFixedVisibility : public VisibilityBackend {
  public:
   // Throws std::invalid_argument unless 7 <= frac_bits <= 31 and threads >= 0.
   // threads = 0: one per hardware thread. The threads are created here, once.
-  explicit FastFixedVisibility(int frac_bits, int threads = 0);
+  explicit FastFixedVisibility(pipeline::FracBits frac_bits, int threads = 0);
   ~FastFixedVisibility() override;
 
   std::string name() const override { return "fast"; }

@@ -5,9 +5,7 @@
 
 namespace rc {
 
-FixedPointVisibility::FixedPointVisibility(int frac_bits) : bits_(frac_bits) {
-  pipeline::validate_frac_bits(frac_bits);
-}
+FixedPointVisibility::FixedPointVisibility(pipeline::FracBits frac_bits) : bits_(frac_bits) {}
 
 void FixedPointVisibility::load_faces(const std::vector<Triangle>& faces) {
   faces_.clear();

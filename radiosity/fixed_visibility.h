@@ -15,7 +15,7 @@ namespace rc {
 class FixedPointVisibility : public VisibilityBackend {
  public:
   // Throws std::invalid_argument unless 7 <= frac_bits <= 31.
-  explicit FixedPointVisibility(int frac_bits);
+  explicit FixedPointVisibility(pipeline::FracBits frac_bits);
 
   std::string name() const override { return "fixed"; }
   void load_faces(const std::vector<Triangle>& faces) override;

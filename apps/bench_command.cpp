@@ -41,6 +41,7 @@ struct BenchOptions {
   std::vector<int> patch_levels{1, 2, 3};
   std::string visibility = "fast";
   BoardRunOptions board;  // the hardware whose time is predicted
+  unsigned lanes = 2;     // --lanes, into board.lanes
   std::string out_dir = "out/bench";
   std::string docs_dir;
   bool quiet = false;
@@ -231,7 +232,6 @@ int run_bench(const BenchOptions& o) {
 void add_bench_command(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<BenchOptions>();
   auto base_ff = std::make_shared<std::string>("disc");
-  o->board.lanes = 2;
   o->board.concurrent = true;
   o->board.host = "athlon-mp-2600-calibrated";
   CLI::App* cmd = app.add_subcommand("bench", "Simulator wall time and predicted hardware time against radiosity error");
@@ -251,13 +251,14 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--visibility", o->visibility, "Bit-exact backend for the points: fixed or fast")
       ->check(CLI::IsMember({"fixed", "fast"}))->capture_default_str();
   cmd->add_option("--device", o->board.device, "Board whose time is predicted")->capture_default_str();
-  cmd->add_option("--lanes", o->board.lanes, "Lanes of that board")->check(CLI::Range(1, 64))->capture_default_str();
+  cmd->add_option("--lanes", o->lanes, "Lanes of that board")->check(CLI::Range(1, 64))->capture_default_str();
   cmd->add_option("--host", o->board.host, "Host profile")->capture_default_str();
   cmd->add_option("--out", o->out_dir, "Output folder")->capture_default_str();
   cmd->add_option("--docs", o->docs_dir, "Also write speed-vs-error.md and its plot here (e.g. docs/results)");
   cmd->add_flag("--quiet", o->quiet, "No progress output");
   cmd->callback([o, base_ff, &exit_code] {
     o->base.form_factor = parse_form_factor_kind(*base_ff);
+    o->board.lanes = o->lanes;
     exit_code = run_bench(*o);
   });
 }

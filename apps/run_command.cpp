@@ -58,6 +58,7 @@ void parse_trace_steps(const std::string& text, BoardRunOptions& board) {
 RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& progress) {
   BoardRunOptions board = o.board;
   board.bits = o.bits;
+  board.lanes = o.lanes;
   // The lanes copy the culled kernel's answer, proven bit-identical (tests BoardOracle.*, FastVisibility.*).
   std::unique_ptr<VisibilityBackend> oracle;
   if (!o.lanes_compute) {
@@ -71,7 +72,7 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   BoardRunResult r = run_radiosity_on_board(scene, o.solver, board);
   RunOutcome out;
   out.solver = std::move(r.solver);
-  out.visibility_name = "board " + board.device + ", " + std::to_string(board.lanes) + " lane(s), " +
+  out.visibility_name = "board " + board.device + ", " + std::to_string(board.lanes.value()) + " lane(s), " +
                         std::to_string(o.bits) + "-bit" + (board.concurrent ? ", concurrent" : ", serial");
   out.visibility_tests = r.report.intersections.tests;
   out.board = std::move(r.report);
@@ -177,7 +178,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
   BoardRunOptions& b = options->board;
   b.host = "athlon-mp-2600-calibrated";  // the profile fitted to the paper's measurements (docs/calibration.md)
   cmd->add_option("--device", b.device, "Board: device profile, configs/devices/NAME.json or a path")->capture_default_str();
-  cmd->add_option("--lanes", b.lanes, "Board: pipeline lanes")->check(CLI::Range(1, 64))->capture_default_str();
+  cmd->add_option("--lanes", options->lanes, "Board: pipeline lanes")->check(CLI::Range(1, 64))->capture_default_str();
   cmd->add_option("--banks", b.banks, "Board: memory banks (0: the profile's)")->check(CLI::Range(0, 64))
       ->capture_default_str();
   cmd->add_flag("--concurrent", b.concurrent, "Board: form factors while the FPGA works (paper sec 4.3)");

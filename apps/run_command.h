@@ -18,6 +18,7 @@ struct RunOptions {
   std::string visibility = "float";  // software backend: float | fixed | fast
   bool lanes_compute = false;        // board: the lanes test every ray against every face themselves
   int bits = 15;                     // fractional bits of the fixed-point pipeline
+  unsigned lanes = 1;                // board: pipeline lanes (--lanes; BoardRunOptions::lanes checks it)
   BoardRunOptions board;             // --impl board
   std::string trace_steps = "1:3";   // A:B, steps written to the trace
   std::string out_dir = "out";

@@ -56,9 +56,8 @@ std::uint64_t max_rays(const BankLayout& layout) {
 
 }  // namespace
 
-BankLayout make_bank_layout(unsigned lanes, unsigned banks, pipeline::FracBits bits, unsigned word_bits,
+BankLayout make_bank_layout(LaneCount lanes, unsigned banks, pipeline::FracBits bits, unsigned word_bits,
                             std::uint64_t bank_capacity_bytes) {
-  if (lanes == 0) throw std::invalid_argument("the wrapper needs at least one lane (pipeline instance)");
   if (word_bits != 32 && word_bits != 64) throw std::invalid_argument("bank words must be 32 or 64 bits wide");
   if (bank_capacity_bytes < word_bits / 8)
     throw std::invalid_argument("bank capacity must hold at least one word");

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "board/lane_count.h"
 #include "pipeline/fixed_format.h"
 
 namespace rc::board {
@@ -65,7 +66,7 @@ struct BankLayout {
 
 // Throws std::invalid_argument for zero lanes, a width outside 7..31, a word narrower than a
 // coordinate, or more banks needed than available (naming lanes, banks needed and available).
-BankLayout make_bank_layout(unsigned lanes, unsigned banks, pipeline::FracBits bits, unsigned word_bits,
+BankLayout make_bank_layout(LaneCount lanes, unsigned banks, pipeline::FracBits bits, unsigned word_bits,
                             std::uint64_t bank_capacity_bytes);
 
 // The rays of one pass divided over the groups: contiguous ranges in ray order, each group filled

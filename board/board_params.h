@@ -18,7 +18,7 @@ enum class WrapperModel { fast, cycle };
 
 struct BoardParams {
   std::string device = "custom";
-  unsigned lanes = 1;
+  LaneCount lanes = 1;
   unsigned banks = 6;
   pipeline::FracBits bits = 15;
   std::uint64_t bank_capacity_bytes = 4u << 20;
@@ -35,7 +35,7 @@ struct BoardParams {
 };
 
 struct BoardChoices {
-  unsigned lanes = 1;
+  LaneCount lanes = 1;
   unsigned banks = 0;                    // 0: the profile's count
   pipeline::FracBits bits = 15;
   std::uint64_t bank_capacity_bytes = 0; // 0: the profile's

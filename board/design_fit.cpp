@@ -16,8 +16,9 @@ std::string DesignFit::describe() const {
   return line;
 }
 
-DesignFit fit_design(const DeviceProfile& device, const pipeline::ResourceModel& resources, int lanes, pipeline::FracBits bits) {
-  if (lanes < 1) throw std::invalid_argument("a design needs at least one lane, got " + std::to_string(lanes));
+DesignFit fit_design(const DeviceProfile& device, const pipeline::ResourceModel& resources, LaneCount lane_count,
+                     pipeline::FracBits bits) {
+  const int lanes = static_cast<int>(lane_count.value());
   const pipeline::PipelineResources hard = resources.pipeline(bits, true);
   const pipeline::PipelineResources soft = resources.pipeline(bits, false);
   const pipeline::WrapperCost wrapper = resources.wrapper();
@@ -46,7 +47,7 @@ DesignFit fit_design(const DeviceProfile& device, const pipeline::ResourceModel&
 
 int max_lanes(const DeviceProfile& device, const pipeline::ResourceModel& resources, pipeline::FracBits bits) {
   int lanes = 0;
-  while (fit_design(device, resources, lanes + 1, bits).fits) ++lanes;
+  while (lanes < static_cast<int>(LaneCount::kMax) && fit_design(device, resources, lanes + 1, bits).fits) ++lanes;
   return lanes;
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "board/device_profile.h"
+#include "board/lane_count.h"
 #include "pipeline/resource_model.h"
 
 namespace rc::board {
@@ -33,8 +34,8 @@ struct DesignFit {
 
 // The smallest implementation of `lanes` lanes on the device: as many block-multiplier lanes as
 // its multipliers allow, the rest with slice multipliers. Throws std::invalid_argument for
-// lanes < 1 or a width outside 7..31.
-DesignFit fit_design(const DeviceProfile& device, const pipeline::ResourceModel& resources, int lanes, pipeline::FracBits bits);
+// (LaneCount and FracBits are valid by construction.)
+DesignFit fit_design(const DeviceProfile& device, const pipeline::ResourceModel& resources, LaneCount lanes, pipeline::FracBits bits);
 
 // The largest lane count that fits (0 if not even one does).
 int max_lanes(const DeviceProfile& device, const pipeline::ResourceModel& resources, pipeline::FracBits bits);

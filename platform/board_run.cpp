@@ -35,7 +35,6 @@ BoardSetup make_board_setup(const BoardRunOptions& o) {
   c.bank_capacity_bytes = o.bank_capacity_bytes;
   c.model = o.model;
   c.irq_latency = s.host.interrupt_latency;
-  if (o.lanes == 0) throw std::invalid_argument("lanes must be at least 1");
   s.board = board::make_board_params(device, c);
   s.board.report_at_end = o.print_summaries;
   // Checks the layout now, so that a bad configuration fails before elaboration.

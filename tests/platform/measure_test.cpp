@@ -37,7 +37,7 @@ TEST(BoardMeasure, DISABLED_LargestPaperScene) {
   const BoardRunResult r = run_radiosity_on_board(scene, solver, o);
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("%zu faces, %zu patches, %d steps, %u lanes, %s: %llu segments, %.3g tests\n", scene.faces.size(),
-              scene.patches.size(), r.solver.steps, o.lanes, o.concurrent ? "concurrent" : "serial",
+              scene.patches.size(), r.solver.steps, o.lanes.value(), o.concurrent ? "concurrent" : "serial",
               static_cast<unsigned long long>(r.solver.segments), static_cast<double>(r.report.intersections.tests));
   std::printf("wall: %.3f s in sc_start, %.3f s with scene preparation; %.3f ms per simulated step\n",
               r.report.wall_seconds, total, 1e3 * r.report.wall_seconds_per_step);

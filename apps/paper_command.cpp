@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "apps/cli_options.h"
+#include "apps/paper_document.h"
 #include "board/throughput_estimates.h"
 #include "studies/paper_workload.h"
 #include "apps/plot.h"
@@ -31,50 +32,32 @@ struct PaperOptions {
   bool quiet = false;
 };
 
-double paper_seconds(const PaperRow& row, int impl) {
-  return impl == 0 ? row.software_seconds : impl == 1 ? row.one_pipe_seconds : NAN;
-}
+using nlohmann::ordered_json;
 
-nlohmann::ordered_json scene_records(const PaperPrediction& r) {
-  nlohmann::ordered_json records = nlohmann::ordered_json::array();
-  for (std::size_t i = 0; i < r.scenes->size(); ++i) {
-    const PaperScene& s = (*r.scenes)[i];
-    for (int impl = 0; impl < kPaperImplementations; ++impl) {
-      const TimingOutcome& o = r.at(i, impl);
-      const double paper = paper_seconds(s.row, impl);
-      nlohmann::ordered_json rec = {{"faces", s.row.faces},
-                                    {"patches", s.row.patches},
-                                    {"steps", s.row.steps},
-                                    {"implementation", to_string(PaperImplementation(impl))},
-                                    {"seconds", o.simulated_seconds},
-                                    {"role", impl < 2 ? "calibration" : "prediction"},
-                                    {"paper_seconds", std::isnan(paper) ? nlohmann::ordered_json() : nlohmann::ordered_json(paper)},
-                                    {"relative_residual", std::isnan(paper) ? nlohmann::ordered_json()
-                                                                            : nlohmann::ordered_json((o.simulated_seconds - paper) / paper)},
-                                    {"fpga_busy_seconds", fpga_busy(o)},
-                                    {"speedup_vs_software", r.at(i, 0).simulated_seconds / o.simulated_seconds},
-                                    {"steps_per_second", s.row.steps / o.simulated_seconds},
-                                    {"convergence_steps_ours", s.convergence_steps}};
-      const auto spread = r.spread_of(i, impl);
-      if (!spread.empty()) {
-        double lo = spread[0].second, hi = lo;
-        nlohmann::ordered_json list = nlohmann::ordered_json::array();
-        for (const auto& [model, seconds] : spread) {
-          lo = std::min(lo, seconds);
-          hi = std::max(hi, seconds);
-          list.push_back({{"driver_model", model}, {"seconds", seconds}});
-        }
-        rec["spread_min_seconds"] = lo;
-        rec["spread_max_seconds"] = hi;
-        rec["spread"] = list;
-      }
-      records.push_back(rec);
-    }
+ordered_json scene_record(const PaperTableRow& row) {
+  ordered_json rec = {{"faces", row.scene.faces},
+                      {"patches", row.scene.patches},
+                      {"steps", row.scene.steps},
+                      {"implementation", to_string(row.implementation)},
+                      {"seconds", row.seconds},
+                      {"role", row.calibration ? "calibration" : "prediction"},
+                      {"paper_seconds", row.calibration ? ordered_json(row.paper_seconds()) : ordered_json()},
+                      {"relative_residual", row.calibration ? ordered_json(row.relative_residual()) : ordered_json()},
+                      {"fpga_busy_seconds", row.fpga_busy_seconds},
+                      {"speedup_vs_software", row.speedup_vs_software},
+                      {"steps_per_second", row.steps_per_second},
+                      {"convergence_steps_ours", row.convergence_steps_ours}};
+  if (!row.spread.empty()) {
+    ordered_json list = ordered_json::array();
+    for (const auto& [model, seconds] : row.spread) list.push_back({{"driver_model", model}, {"seconds", seconds}});
+    rec["spread_min_seconds"] = row.spread_min_seconds;
+    rec["spread_max_seconds"] = row.spread_max_seconds;
+    rec["spread"] = list;
   }
-  return records;
+  return rec;
 }
 
-nlohmann::ordered_json estimate_record(const board::PaperEstimate& e) {
+ordered_json estimate_record(const board::PaperEstimate& e) {
   return {{"estimate", e.estimate},
           {"rule", board::to_string(e.rule)},
           {"device", e.device},
@@ -89,64 +72,64 @@ nlohmann::ordered_json estimate_record(const board::PaperEstimate& e) {
           {"note", e.note}};
 }
 
-// Pairs: the paper's rule, then the model's estimate of the same question, and why they differ.
-nlohmann::ordered_json estimate_records(const PaperPrediction& r) {
-  nlohmann::ordered_json records = nlohmann::ordered_json::array();
-  for (std::size_t i = 0; i < r.paper_rule.size(); ++i) {
-    records.push_back(estimate_record(r.paper_rule[i]));
-    nlohmann::ordered_json model = estimate_record(r.model[i]);
-    model["why_different"] = board::why_estimates_differ(r.paper_rule[i], r.model[i]);
-    records.push_back(model);
+// The one JSON writer of paper.json.
+ordered_json paper_json(const PaperDocument& d) {
+  ordered_json j;
+  j["schema"] = "rc2000sim.paper/1";
+  j["host_profile"] = d.host_profile;
+  j["driver_model"] = d.driver_model;
+  j["variants"] = d.variants;
+  j["visibility"] = "bit-exact fixed point, 15 fractional bits, every segment against every face";
+  ordered_json scenes = ordered_json::array(), estimates = ordered_json::array(), banks = ordered_json::array();
+  for (const PaperTableRow& row : d.rows) scenes.push_back(scene_record(row));
+  // Pairs: the paper's rule, then the model's estimate of the same question, and why they differ.
+  for (std::size_t i = 0; i < d.paper_rule.size(); ++i) {
+    estimates.push_back(estimate_record(d.paper_rule[i]));
+    ordered_json model = estimate_record(d.model[i]);
+    model["why_different"] = board::why_estimates_differ(d.paper_rule[i], d.model[i]);
+    estimates.push_back(model);
   }
-  return records;
+  for (const BankVariantRow& b : d.bank_variants) {
+    banks.push_back({{"banks", b.variant.banks},
+                     {"lanes", b.variant.lanes},
+                     {"seconds", b.seconds},
+                     {"fpga_busy_seconds", b.fpga_busy_seconds},
+                     {"fpga_speedup_over_five_banks", b.fpga_speedup_over_five_banks},
+                     {"run_speedup_over_five_banks", b.run_speedup_over_five_banks}});
+  }
+  j["scene_records"] = scenes;
+  j["estimate_records"] = estimates;
+  j["bank_variants"] = banks;
+  j["summary"] = {{"average_overall_speedup", d.summary.average_overall_speedup},
+                  {"largest_scene_overall_speedup", d.summary.largest_scene_overall_speedup},
+                  {"average_steps_per_second_concurrent", d.summary.average_steps_per_second_concurrent},
+                  {"overall_speedup_definition", "software seconds / concurrent seconds (two pipelines with the concurrent driver)"}};
+  return j;
 }
 
-nlohmann::ordered_json bank_variant_records(const PaperPrediction& r) {
-  nlohmann::ordered_json records = nlohmann::ordered_json::array();
-  const TimingOutcome& base = r.bank_variant(0);
-  for (std::size_t v = 0; v < std::size(kBankVariants); ++v) {
-    const TimingOutcome& o = r.bank_variant(v);
-    records.push_back({{"banks", kBankVariants[v].banks},
-                       {"lanes", kBankVariants[v].lanes},
-                       {"seconds", o.simulated_seconds},
-                       {"fpga_busy_seconds", fpga_busy(o)},
-                       {"fpga_speedup_over_five_banks", fpga_busy(base) / fpga_busy(o)},
-                       {"run_speedup_over_five_banks", base.simulated_seconds / o.simulated_seconds}});
-  }
-  return records;
-}
+// Numbers as paper.json spells them (shortest text that reads back to the same double).
+std::string number(double x) { return ordered_json(x).dump(); }
 
-nlohmann::ordered_json summary(const PaperPrediction& r) {
-  double speedup_sum = 0, steps_per_s = 0;
-  const std::size_t n = r.scenes->size();
-  for (std::size_t i = 0; i < n; ++i) {
-    speedup_sum += r.at(i, 0).simulated_seconds / r.at(i, 3).simulated_seconds;
-    steps_per_s += (*r.scenes)[i].row.steps / r.at(i, 3).simulated_seconds;
-  }
-  return {{"average_overall_speedup", speedup_sum / n},
-          {"largest_scene_overall_speedup", r.at(n - 1, 0).simulated_seconds / r.at(n - 1, 3).simulated_seconds},
-          {"average_steps_per_second_concurrent", steps_per_s / n},
-          {"overall_speedup_definition", "software seconds / concurrent seconds (two pipelines with the concurrent driver)"}};
-}
-
-void write_csv(const std::string& path, const nlohmann::ordered_json& scenes, const nlohmann::ordered_json& estimates) {
+void write_csv(const std::string& path, const PaperDocument& d) {
   std::ofstream out(path);
   if (!out) throw std::runtime_error(path + ": cannot open for writing");
-  auto field = [](const nlohmann::ordered_json& v) { return v.is_null() ? std::string() : v.is_string() ? v.get<std::string>() : v.dump(); };
-  auto optional = [&](const nlohmann::ordered_json& j, const char* key) { return j.contains(key) ? field(j[key]) : std::string(); };
   out << "record,faces,patches,steps,implementation,seconds,paper_seconds,relative_residual,spread_min_seconds,"
          "spread_max_seconds,fpga_busy_seconds,speedup_vs_software,device,lanes,clock_mhz,intersections_per_s,"
          "bytes_per_cycle,gb_per_s,estimate,rule\n";
-  for (const auto& s : scenes) {
-    out << "scene," << s["faces"] << ',' << s["patches"] << ',' << s["steps"] << ',' << field(s["implementation"]) << ','
-        << s["seconds"] << ',' << field(s["paper_seconds"]) << ',' << field(s["relative_residual"]) << ','
-        << optional(s, "spread_min_seconds") << ',' << optional(s, "spread_max_seconds") << ',' << s["fpga_busy_seconds"]
-        << ',' << s["speedup_vs_software"] << ",,,,,,,,\n";
+  for (const PaperTableRow& s : d.rows) {
+    out << "scene," << s.scene.faces << ',' << s.scene.patches << ',' << s.scene.steps << ',' << to_string(s.implementation)
+        << ',' << number(s.seconds) << ',' << (s.calibration ? number(s.paper_seconds()) : "") << ','
+        << (s.calibration ? number(s.relative_residual()) : "") << ','
+        << (s.spread.empty() ? "" : number(s.spread_min_seconds)) << ','
+        << (s.spread.empty() ? "" : number(s.spread_max_seconds)) << ',' << number(s.fpga_busy_seconds) << ','
+        << number(s.speedup_vs_software) << ",,,,,,,,\n";
   }
-  for (const auto& e : estimates) {
-    out << "estimate,,,,,,,,,,," << e["speedup_vs_software"] << ',' << field(e["device"]) << ',' << e["lanes"] << ','
-        << e["clock_mhz"] << ',' << e["intersections_per_s"] << ',' << e["bytes_per_cycle"] << ',' << e["gb_per_s"] << ",\""
-        << field(e["estimate"]) << "\"," << field(e["rule"]) << "\n";
+  for (std::size_t i = 0; i < d.paper_rule.size(); ++i) {
+    for (const board::PaperEstimate* e : {&d.paper_rule[i], &d.model[i]}) {
+      out << "estimate,,,,,,,,,,," << number(e->speedup_vs_software) << ',' << e->device << ',' << e->lanes << ','
+          << number(e->clock_mhz) << ',' << number(e->intersections_per_s) << ',' << number(e->bytes_per_cycle) << ','
+          << number(e->gb_per_s) << ",\"" << e->estimate << "\"," << board::to_string(e->rule) << "\n";
+    }
   }
 }
 
@@ -200,8 +183,6 @@ void print_table(const PaperPrediction& r) {
 
 }  // namespace
 
-void write_paper_markdown(const std::string& path, const nlohmann::ordered_json& json, const std::string& host);
-
 namespace {
 
 int run_paper(const PaperOptions& o) {
@@ -218,27 +199,26 @@ int run_paper(const PaperOptions& o) {
   const double study_seconds = progress.seconds() - functional_seconds;
   progress.finish();
 
-  nlohmann::ordered_json json;
-  json["schema"] = "rc2000sim.paper/1";
-  json["host_profile"] = o.host;
-  json["driver_model"] = host.driver_model.name();
+  PaperDocument document;
+  document.rows = table_rows(r);
+  document.paper_rule = r.paper_rule;
+  document.model = r.model;
+  document.bank_variants = bank_variant_rows(r);
+  document.summary = summarize(r);
+  document.host_profile = o.host;
+  document.driver_model = host.driver_model.name();
   const std::string source_dir = std::string(RC_SOURCE_DIR) + "/";
-  json["variants"] = o.variants.rfind(source_dir, 0) == 0 ? o.variants.substr(source_dir.size()) : o.variants;
-  json["visibility"] = "bit-exact fixed point, 15 fractional bits, every segment against every face";
-  json["scene_records"] = scene_records(r);
-  json["estimate_records"] = estimate_records(r);
-  json["bank_variants"] = bank_variant_records(r);
-  json["summary"] = summary(r);
+  document.variants = o.variants.rfind(source_dir, 0) == 0 ? o.variants.substr(source_dir.size()) : o.variants;
   std::filesystem::create_directories(o.out_dir);
-  std::ofstream(o.out_dir + "/paper.json") << json.dump(2) << "\n";
-  write_csv(o.out_dir + "/paper.csv", json["scene_records"], json["estimate_records"]);
+  std::ofstream(o.out_dir + "/paper.json") << paper_json(document).dump(2) << "\n";
+  write_csv(o.out_dir + "/paper.csv", document);
   print_table(r);
   std::printf("\n  average overall speedup %.2fx, largest scene %.2fx (software / concurrent)\n",
-              json["summary"]["average_overall_speedup"].get<double>(), json["summary"]["largest_scene_overall_speedup"].get<double>());
+              document.summary.average_overall_speedup, document.summary.largest_scene_overall_speedup);
   if (!o.docs_dir.empty()) {
     std::filesystem::create_directories(o.docs_dir + "/paper");
     plotter.draw(o.out_dir + "/paper.csv", o.docs_dir + "/paper");
-    write_paper_markdown(o.docs_dir + "/paper.md", json, o.host);
+    write_paper_markdown(o.docs_dir + "/paper.md", document);
   } else {
     plotter.draw(o.out_dir + "/paper.csv", o.out_dir);
   }

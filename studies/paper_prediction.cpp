@@ -1,5 +1,7 @@
 #include "studies/paper_prediction.h"
 
+#include <algorithm>
+
 namespace rc {
 
 namespace {
@@ -52,6 +54,62 @@ std::vector<std::pair<std::string, double>> PaperPrediction::spread_of(std::size
     if (s.scene == scene && s.implementation == impl) out.emplace_back(s.driver_model, outcomes[s.index()].simulated_seconds);
   }
   return out;
+}
+
+double PaperTableRow::paper_seconds() const {
+  return implementation == PaperImplementation::Software ? scene.software_seconds : scene.one_pipe_seconds;
+}
+
+double PaperTableRow::relative_residual() const { return (seconds - paper_seconds()) / paper_seconds(); }
+
+std::vector<PaperTableRow> table_rows(const PaperPrediction& r) {
+  std::vector<PaperTableRow> rows;
+  for (std::size_t i = 0; i < r.scenes->size(); ++i) {
+    const PaperScene& s = (*r.scenes)[i];
+    for (int impl = 0; impl < kPaperImplementations; ++impl) {
+      const TimingOutcome& o = r.at(i, impl);
+      PaperTableRow row;
+      row.scene = s.row;
+      row.implementation = PaperImplementation(impl);
+      row.seconds = o.simulated_seconds;
+      row.calibration = impl < 2;
+      row.fpga_busy_seconds = fpga_busy(o);
+      row.speedup_vs_software = r.at(i, 0).simulated_seconds / o.simulated_seconds;
+      row.steps_per_second = s.row.steps / o.simulated_seconds;
+      row.convergence_steps_ours = s.convergence_steps;
+      row.spread = r.spread_of(i, impl);
+      if (!row.spread.empty()) {
+        row.spread_min_seconds = row.spread_max_seconds = row.spread[0].second;
+        for (const auto& [model, seconds] : row.spread) {
+          row.spread_min_seconds = std::min(row.spread_min_seconds, seconds);
+          row.spread_max_seconds = std::max(row.spread_max_seconds, seconds);
+        }
+      }
+      rows.push_back(std::move(row));
+    }
+  }
+  return rows;
+}
+
+std::vector<BankVariantRow> bank_variant_rows(const PaperPrediction& r) {
+  std::vector<BankVariantRow> rows;
+  const TimingOutcome& base = r.bank_variant(0);
+  for (std::size_t v = 0; v < std::size(kBankVariants); ++v) {
+    const TimingOutcome& o = r.bank_variant(v);
+    rows.push_back({kBankVariants[v], o.simulated_seconds, fpga_busy(o), fpga_busy(base) / fpga_busy(o),
+                    base.simulated_seconds / o.simulated_seconds});
+  }
+  return rows;
+}
+
+PaperSummary summarize(const PaperPrediction& r) {
+  double speedup_sum = 0, steps_per_s = 0;
+  const std::size_t n = r.scenes->size();
+  for (std::size_t i = 0; i < n; ++i) {
+    speedup_sum += r.at(i, 0).simulated_seconds / r.at(i, 3).simulated_seconds;
+    steps_per_s += (*r.scenes)[i].row.steps / r.at(i, 3).simulated_seconds;
+  }
+  return {speedup_sum / n, r.at(n - 1, 0).simulated_seconds / r.at(n - 1, 3).simulated_seconds, steps_per_s / n};
 }
 
 PaperPrediction predict_paper(const std::vector<PaperScene>& scenes, const std::vector<PaperRow>& rows,

@@ -50,6 +50,38 @@ struct PaperPrediction {
   const TimingOutcome& bank_variant(std::size_t v) const { return outcomes[scenes->size() * kPaperImplementations + v]; }
 };
 
+// One cell of Table 2: a scene under one implementation, with what the paper measured (given
+// columns) or the spread of the variants (withheld columns).
+struct PaperTableRow {
+  PaperRow scene;  // faces, patches, steps, the paper's given seconds
+  PaperImplementation implementation = PaperImplementation::Software;
+  double seconds = 0;
+  bool calibration = false;  // software and single pipeline: the columns the model was fitted to
+  double fpga_busy_seconds = 0, speedup_vs_software = 0, steps_per_second = 0;
+  int convergence_steps_ours = 0;
+  std::vector<std::pair<std::string, double>> spread;  // (driver model, seconds); empty for calibration cells
+  double spread_min_seconds = 0, spread_max_seconds = 0;
+
+  double paper_seconds() const;      // calibration cells only
+  double relative_residual() const;  // calibration cells only
+};
+
+struct BankVariantRow {
+  BankVariant variant;
+  double seconds = 0, fpga_busy_seconds = 0, fpga_speedup_over_five_banks = 0, run_speedup_over_five_banks = 0;
+};
+
+struct PaperSummary {
+  double average_overall_speedup = 0;            // software / concurrent, over the scenes
+  double largest_scene_overall_speedup = 0;
+  double average_steps_per_second_concurrent = 0;
+};
+
+// Rows in scene order, kPaperImplementations per scene.
+std::vector<PaperTableRow> table_rows(const PaperPrediction& prediction);
+std::vector<BankVariantRow> bank_variant_rows(const PaperPrediction& prediction);
+PaperSummary summarize(const PaperPrediction& prediction);
+
 // `host`: the profile of the main columns (by name, as `rc2000sim paper --host` gives it, and
 // loaded); `variants`: the calibrated variants (load_calibrated_variants). Runs the timing study
 // (once per process).

@@ -1,0 +1,25 @@
+// What `rc2000sim paper` writes, as typed data: the prediction's rows and what the command knows
+// (profiles, file names). Its writers (paper.json, paper.csv in paper_command.cpp; paper.md in
+// paper_markdown.cpp) read these fields, never each other's output.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "studies/paper_prediction.h"
+
+namespace rc {
+
+struct PaperDocument {
+  std::vector<PaperTableRow> rows;
+  std::vector<board::PaperEstimate> paper_rule, model;  // sec 5.6, pairwise
+  std::vector<BankVariantRow> bank_variants;
+  PaperSummary summary;
+  std::string host_profile;  // as given to --host
+  std::string driver_model;  // the host profile's
+  std::string variants;      // the variants file, relative to the source tree when inside it
+};
+
+void write_paper_markdown(const std::string& path, const PaperDocument& document);
+
+}  // namespace rc

@@ -13,6 +13,7 @@
 #include <memory>
 
 #include "apps/cli_options.h"
+#include "studies/sweep_study.h"
 #include "studies/paper_workload.h"
 #include "apps/plot.h"
 #include "apps/progress.h"
@@ -38,88 +39,6 @@ struct SweepOptions {
   bool full_banks = false;
   bool quiet = false;
 };
-
-// ---- the workload ---------------------------------------------------------------------------------
-
-// One width's functional answer and the steps every configuration at that width replays.
-struct WidthRun {
-  RecordedRun functional;
-  int steps = 0;
-  std::uint64_t max_segments = 0;  // in one step, over the replayed steps
-};
-
-// Table 2's step count when the scene is one of the paper's (our Cornell Box refined to 70 faces,
-// then split); 0 otherwise.
-int paper_steps(const SweepOptions& o, const Scene& scene) {
-  if (!o.scene.file.empty() || o.scene.face_target != 70) return 0;
-  for (const PaperRow& row : load_paper_table(default_paper_table_path())) {
-    if (static_cast<std::size_t>(row.faces) == scene.faces.size() &&
-        static_cast<std::size_t>(row.patches) == scene.patches.size())
-      return row.steps;
-  }
-  return 0;
-}
-
-SolverOptions base_solver(const SweepOptions& o) {
-  SolverOptions s;
-  s.cull_receivers = !o.paper_faithful;
-  s.convergence = o.convergence;
-  return s;
-}
-
-WidthRun record_width(const SweepOptions& o, const Scene& scene, int bits, int fixed_steps) {
-  SolverOptions solver = base_solver(o);
-  solver.fixed_steps = fixed_steps;  // 0: to convergence
-  WidthRun w;
-  w.functional = record_functional_run(scene, solver, o.visibility, bits);
-  w.steps = w.functional.result.steps;
-  for (int s = 0; s < w.steps; ++s)
-    w.max_segments = std::max<std::uint64_t>(w.max_segments, w.functional.recording.segments(static_cast<std::size_t>(s)));
-  return w;
-}
-
-// ---- the study ------------------------------------------------------------------------------------
-
-struct Planned {
-  SweepConfig config;
-  ConfigCheck check;
-  std::uint64_t bank_capacity = 0;  // 0: the profile's
-  std::size_t outcome = 0;          // index into the study's outcomes (ok configurations)
-};
-
-TimingCase base_case(const Scene& scene, const SweepOptions& o, const WidthRun& w) {
-  TimingCase c;
-  c.scene = &scene;
-  c.solver = base_solver(o);
-  c.solver.fixed_steps = w.steps;
-  c.recording = &w.functional.recording;
-  return c;
-}
-
-TimingCase software_case(const Scene& scene, const SweepOptions& o, int bits, const WidthRun& w) {
-  TimingCase c = base_case(scene, o, w);
-  c.label = "software " + std::to_string(bits) + "-bit";
-  c.software = true;
-  c.host = o.host;
-  return c;
-}
-
-TimingCase board_case(const Scene& scene, const SweepOptions& o, const Planned& p, const WidthRun& w) {
-  TimingCase c = base_case(scene, o, w);
-  c.label = p.config.label();
-  c.board = p.check.options;
-  c.board.bank_capacity_bytes = p.bank_capacity;
-  return c;
-}
-
-// Compact banks promise identical passes; a batched or split step would break that promise.
-void check_compact_banks(const Planned& p, const TimingOutcome& out) {
-  if (p.bank_capacity == 0) return;
-  const BatchingReport& b = out.report.board.batching;
-  if (b.max_batches_per_step > 1 || b.face_sets > 1) {
-    throw std::logic_error("compact banks batched " + p.config.label() + "; rerun with --full-banks");
-  }
-}
 
 // ---- output ---------------------------------------------------------------------------------------
 
@@ -248,90 +167,34 @@ SweepAxes parse_axes(const SweepOptions& o) {
   return a;
 }
 
-// Every combination with its verdict, in enumeration order.
-std::vector<Planned> plan_sweep(const SweepAxes& axes, const ConfigChecker& checker) {
-  std::vector<Planned> plan;
-  for (const SweepConfig& c : enumerate_configs(axes)) plan.push_back({c, checker.check(c)});
-  return plan;
-}
-
-std::map<int, WidthRun> record_widths(const SweepOptions& o, const Scene& scene, const std::vector<int>& bits,
-                                      ProgressLine& progress) {
-  const StepsChoice steps = parse_steps(o.steps);
-  int fixed_steps = steps.kind == StepsChoice::Kind::fixed ? steps.steps : 0;
-  if (steps.kind == StepsChoice::Kind::paper) {
-    fixed_steps = paper_steps(o, scene);
-    if (fixed_steps == 0 && !o.quiet)
-      std::fprintf(stderr, "note: the scene is not one of Table 2's; --steps paper falls back to converge\n");
-  }
-  std::map<int, WidthRun> widths;
-  for (int b : bits) {
-    progress.update("solving %zu patches at %d bits%-20s", scene.patches.size(), b, "");
-    widths.emplace(b, record_width(o, scene, b, fixed_steps));
-  }
-  return widths;
-}
-
-// One software case per width first (in width order), then every combination that can exist;
-// each planned combination learns its case's index.
-std::vector<TimingCase> make_cases(const SweepOptions& o, const Scene& scene, const ConfigChecker& checker,
-                                   const std::map<int, WidthRun>& widths, std::vector<Planned>& plan) {
-  std::vector<TimingCase> cases;
-  for (const auto& [bits, w] : widths) cases.push_back(software_case(scene, o, bits, w));
-  for (Planned& p : plan) {
-    if (p.check.validity != Validity::ok) continue;
-    const WidthRun& w = widths.at(p.config.bits);
-    if (!o.full_banks) p.bank_capacity = checker.compact_bank_capacity(p.config, w.max_segments, scene.faces.size());
-    p.outcome = cases.size();
-    cases.push_back(board_case(scene, o, p, w));
-  }
-  return cases;
-}
-
-std::vector<SweepRow> collect_rows(const std::vector<Planned>& plan, const ConfigChecker& checker,
-                                   const std::map<int, WidthRun>& widths, const std::map<int, double>& software,
-                                   const std::vector<TimingOutcome>& outcomes) {
-  std::vector<SweepRow> rows;
-  for (const Planned& p : plan) {
-    const int replayed = widths.at(p.config.bits).steps;
-    if (p.check.validity == Validity::ok) check_compact_banks(p, outcomes[p.outcome]);
-    rows.push_back(p.check.validity == Validity::ok ? row_from_report(p.config, outcomes[p.outcome].report, replayed)
-                                                    : invalid_row(p.config, p.check, replayed));
-    rows.back().config.device = checker.device(p.config.device).name;  // a profile given by path shows its name
-  }
-  fill_speedups(rows, software);
-  return rows;
-}
-
-std::map<std::string, std::uint64_t> bank_capacities(const std::vector<Planned>& plan, const ConfigChecker& checker) {
-  std::map<std::string, std::uint64_t> capacity;
-  for (const Planned& p : plan) {
-    if (p.check.validity != Validity::ok) continue;
-    std::uint64_t& bytes = capacity[checker.device(p.config.device).name];
-    bytes = std::max(bytes, p.bank_capacity);
-  }
-  return capacity;
+SweepSpec sweep_spec(const SweepOptions& o) {
+  SweepSpec s;
+  s.axes = parse_axes(o);
+  s.scene = o.scene;
+  s.steps = o.steps;
+  s.convergence = o.convergence;
+  s.paper_faithful = o.paper_faithful;
+  s.host = o.host;
+  s.visibility = o.visibility;
+  s.full_banks = o.full_banks;
+  s.quiet = o.quiet;
+  return s;
 }
 
 int run_sweep(const SweepOptions& o) {
   ProgressLine progress(!o.quiet);
-  const SweepAxes axes = parse_axes(o);
-  (void)parse_steps(o.steps);                         // a bad --steps fails before any work
-  const ConfigChecker checker(axes.devices, o.host);  // and so do unknown profiles
-  std::vector<Planned> plan = plan_sweep(axes, checker);
-  const std::size_t valid = static_cast<std::size_t>(
-      std::count_if(plan.begin(), plan.end(), [](const Planned& p) { return p.check.validity == Validity::ok; }));
-
+  const SweepSpec spec = sweep_spec(o);
+  (void)parse_steps(o.steps);                              // a bad --steps fails before the scene is made
+  const ConfigChecker checker(spec.axes.devices, o.host);  // and so do unknown profiles
   const Scene scene = prepare_scene(o.scene).scene;
-  const std::map<int, WidthRun> widths = record_widths(o, scene, axes.bits, progress);
-  const std::vector<TimingCase> cases = make_cases(o, scene, checker, widths, plan);
-  progress.update("simulating %zu configurations (%zu cannot exist)%-10s", valid, plan.size() - valid, "");
-  const std::vector<TimingOutcome> outcomes = run_timing_study(cases);
+  const SweepResult result =
+      run_sweep_study(scene, spec, [&](const std::string& what) { progress.update("%-60s", what.c_str()); });
   progress.finish();
-
-  std::map<int, double> software;  // the software cases come first, one per width in width order
-  for (const auto& [bits, w] : widths) software[bits] = outcomes[software.size()].simulated_seconds;
-  const std::vector<SweepRow> rows = collect_rows(plan, checker, widths, software, outcomes);
+  const std::vector<SweepRow>& rows = result.rows;
+  const std::map<int, WidthRun>& widths = result.widths;
+  const std::map<int, double>& software = result.software_seconds;
+  const std::vector<Planned>& plan = result.plan;
+  const std::size_t valid = result.valid;
 
   std::filesystem::create_directories(o.out_dir);
   {
@@ -339,7 +202,7 @@ int run_sweep(const SweepOptions& o) {
     if (!csv) throw std::runtime_error(o.out_dir + "/sweep.csv: cannot open for writing");
     write_sweep_csv(csv, rows);
     std::ofstream json(o.out_dir + "/sweep.json");
-    write_json(json, sweep_json(o, scene, widths, software, bank_capacities(plan, checker), rows));
+    write_json(json, sweep_json(o, scene, widths, software, result.bank_capacities, rows));
   }
   std::printf("rc2000sim sweep: %s, %zu faces, %zu patches, %s, host %s\n", scene.name.c_str(), scene.faces.size(),
               scene.patches.size(), o.paper_faithful ? "paper-faithful (every segment)" : "receivers culled",
@@ -347,7 +210,7 @@ int run_sweep(const SweepOptions& o) {
   for (const auto& [bits, w] : widths)
     std::printf("  %d-bit: %d steps replayed; software alone %.3f s\n", bits, w.steps, software.at(bits));
   std::printf("  %zu configurations: %zu simulated, %zu cannot exist\n", plan.size(), valid, plan.size() - valid);
-  print_blocks(rows, axes.banks);
+  print_blocks(rows, spec.axes.banks);
   plot("sweep.py", o.out_dir + "/sweep.csv", o.out_dir);
   std::printf("\n  wrote %s/sweep.csv, sweep.json and plots (%.1f s)\n", o.out_dir.c_str(), progress.seconds());
   return 0;

@@ -14,6 +14,7 @@
 #include "apps/cli_options.h"
 #include "apps/plot.h"
 #include "apps/progress.h"
+#include "studies/bench_study.h"
 #include "radiosity/float_visibility.h"
 #include "radiosity/render.h"
 #include "studies/solution_error.h"
@@ -23,102 +24,12 @@ namespace rc {
 
 namespace {
 
-struct BenchPoint {
-  std::string varied;  // which dimension this point varies ("base" for the base point)
-  int bits = 15;
-  double convergence = 0.995;
-  int patch_levels = 2;
-  // The disc form factor by default: the paper's point formula's near-field error (docs/radiosity.md)
-  // would otherwise swamp every other effect; the sweep still shows the point formula as one point.
-  FormFactorKind form_factor = FormFactorKind::Disc;
-};
-
-struct BenchOptions {
-  SceneOptions scene;  // patch_levels is swept
-  BenchPoint base;
-  std::vector<int> widths{7, 11, 15, 19, 23, 27, 31};
-  std::vector<double> convergences{0.99, 0.995, 0.999, 0.9999};
-  std::vector<int> patch_levels{1, 2, 3};
-  std::string visibility = "fast";
-  BoardRunOptions board;  // the hardware whose time is predicted
-  unsigned lanes = 2;     // --lanes, into board.lanes
+struct BenchOptions : BenchSpec {
+  unsigned lanes = 2;  // --lanes, into board.lanes
   std::string out_dir = "out/bench";
   std::string docs_dir;
   bool quiet = false;
 };
-
-std::vector<BenchPoint> sweep_points(const BenchOptions& o) {
-  std::vector<BenchPoint> points{o.base};
-  points[0].varied = "base";
-  auto vary = [&](const char* what, auto apply) {
-    BenchPoint p = o.base;
-    p.varied = what;
-    apply(p);
-    const bool is_base = p.bits == o.base.bits && p.convergence == o.base.convergence &&
-                         p.patch_levels == o.base.patch_levels && p.form_factor == o.base.form_factor;
-    if (!is_base) points.push_back(p);
-  };
-  for (int b : o.widths) vary("bits", [&](BenchPoint& p) { p.bits = b; });
-  for (double c : o.convergences) vary("convergence", [&](BenchPoint& p) { p.convergence = c; });
-  for (int m : o.patch_levels) vary("patch_levels", [&](BenchPoint& p) { p.patch_levels = m; });
-  vary("form_factor", [&](BenchPoint& p) {
-    p.form_factor = p.form_factor == FormFactorKind::PointToPoint ? FormFactorKind::Disc : FormFactorKind::PointToPoint;
-  });
-  return points;
-}
-
-struct PointRun {
-  BenchPoint point;
-  Scene scene;
-  SolverOptions solver;
-  RecordedRun run;
-  double wall_seconds = 0;
-  SolutionError error;
-  double image_difference = 0;
-};
-
-struct Reference {
-  Scene scene;
-  SolverResult result;
-  HdrImage image;
-};
-
-Reference solve_reference(const BenchOptions& o, int finest) {
-  Reference r;
-  SceneOptions so = o.scene;
-  so.patch_levels = finest;
-  r.scene = prepare_scene(so).scene;
-  SolverOptions solver;
-  solver.convergence = 1 - 1e-6;
-  solver.form_factor = FormFactorKind::Disc;
-  FloatVisibility exact;
-  r.result = ProgressiveRadiosity(r.scene, exact, solver).run();
-  RenderOptions ro;
-  ro.width = ro.height = 256;
-  r.image = render_radiosity(r.scene, r.result.radiosity, ro);
-  return r;
-}
-
-PointRun solve_point(const BenchOptions& o, const BenchPoint& p, const Reference& ref, int finest) {
-  PointRun run;
-  run.point = p;
-  SceneOptions so = o.scene;
-  so.patch_levels = p.patch_levels;
-  run.scene = prepare_scene(so).scene;
-  run.solver.convergence = p.convergence;
-  run.solver.form_factor = p.form_factor;
-  const auto t0 = std::chrono::steady_clock::now();
-  run.run = record_functional_run(run.scene, run.solver, o.visibility, p.bits);
-  run.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  run.solver.fixed_steps = run.run.result.steps;  // the timing replay runs exactly these steps
-  const std::vector<Spectrum> reference =
-      coarsen_solution(ref.result.radiosity, ref.scene.faces.size(), finest - p.patch_levels);
-  run.error = compare_solutions(run.run.result.radiosity, reference);
-  RenderOptions ro;
-  ro.width = ro.height = 256;
-  run.image_difference = image_difference(render_radiosity(run.scene, run.run.result.radiosity, ro), ref.image);
-  return run;
-}
 
 void write_csv(const std::string& path, const std::vector<PointRun>& runs, const std::vector<TimingOutcome>& timing) {
   std::ofstream out(path);
@@ -171,35 +82,13 @@ void write_markdown(const std::string& path, const BenchOptions& o, const std::v
 
 int run_bench(const BenchOptions& o) {
   ProgressLine progress(!o.quiet);
-  const std::vector<BenchPoint> points = sweep_points(o);
-  int finest = 0;
-  for (const BenchPoint& p : points) finest = std::max(finest, p.patch_levels);
-  progress.update("reference solve (%d patch levels, converged to 1e-6)", finest);
-  const auto t0 = std::chrono::steady_clock::now();
-  const Reference ref = solve_reference(o, finest);
-  const double reference_wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-
-  std::vector<PointRun> runs;
-  for (const BenchPoint& p : points) {
-    progress.update("point %zu of %zu (%s)%-10s", runs.size() + 1, points.size(), p.varied.c_str(), "");
-    runs.push_back(solve_point(o, p, ref, finest));
-  }
-  std::vector<TimingCase> cases;
-  for (const PointRun& r : runs) {
-    TimingCase c;
-    c.label = r.point.varied;
-    c.scene = &r.scene;
-    c.solver = r.solver;
-    c.recording = &r.run.recording;
-    c.board = o.board;
-    c.board.bits = r.point.bits;
-    cases.push_back(c);
-  }
-  progress.update("timing study of %zu points%-20s", cases.size(), "");
-  const auto t1 = std::chrono::steady_clock::now();
-  const std::vector<TimingOutcome> timing = run_timing_study(cases);
-  const double study_wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+  const BenchResult b = run_bench_study(o, [&](const std::string& what) { progress.update("%-60s", what.c_str()); });
   progress.finish();
+  const std::vector<PointRun>& runs = b.runs;
+  const std::vector<TimingOutcome>& timing = b.timing;
+  const Reference& ref = b.reference;
+  const double reference_wall = b.reference_wall_seconds, study_wall = b.study_wall_seconds;
+  const int finest = b.finest;
 
   std::filesystem::create_directories(o.out_dir);
   write_csv(o.out_dir + "/bench.csv", runs, timing);

@@ -42,9 +42,13 @@ tlmx::PciBusConfig pci_config(const BoardParams& p) {
 }  // namespace
 
 Rc2000::Rc2000(const sc_core::sc_module_name& name, const BoardParams& params)
+    : Rc2000(name, params,
+             make_bank_layout(params.lanes, params.banks, params.bits, params.word_bits, params.bank_capacity_bytes)) {}
+
+Rc2000::Rc2000(const sc_core::sc_module_name& name, const BoardParams& params, BankLayout layout)
     : sc_core::sc_module(name),
       m_params(params),
-      m_layout(make_bank_layout(params.lanes, params.banks, params.bits, params.word_bits, params.bank_capacity_bytes)),
+      m_layout(std::move(layout)),
       m_stride(stride_for(params.bank_capacity_bytes)),
       pci("pci", pci_config(params)),
       dma("dma", tlmx::DmaConfig{params.pci.max_burst_bytes, params.report_at_end}),
@@ -55,6 +59,10 @@ Rc2000::Rc2000(const sc_core::sc_module_name& name, const BoardParams& params)
       busy_signal("busy"),
       done_signal("done"),
       irq_signal("irq_level") {
+  if (m_layout.lanes != params.lanes || m_layout.banks_available != params.banks || m_layout.bits != params.bits ||
+      m_layout.word_bits != params.word_bits) {
+    throw std::logic_error("Rc2000: the bank layout given is not the layout of the board's parameters");
+  }
   dma.out.bind(pci.in);  // the bridge's DMA channel: pci.in[0]; host initiators bind after it
   pci.out.bind(regs.in);
   pci.out.bind(local.in);

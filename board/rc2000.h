@@ -44,6 +44,9 @@ class Rc2000 : public sc_core::sc_module {
   static constexpr std::uint64_t kBar1 = 0x1'0000'0000;      // banks (64-bit BAR)
 
   Rc2000(const sc_core::sc_module_name& name, const BoardParams& params);
+  // With the layout of these parameters already made (and so checked) by the caller: it is not
+  // made twice. Throws std::logic_error if it is not the layout of `params`.
+  Rc2000(const sc_core::sc_module_name& name, const BoardParams& params, BankLayout layout);
 
   const BoardParams& params() const { return m_params; }
   const BankLayout& layout() const { return m_layout; }

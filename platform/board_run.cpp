@@ -37,9 +37,9 @@ BoardSetup make_board_setup(const BoardRunOptions& o) {
   c.irq_latency = s.host.interrupt_latency;
   s.board = board::make_board_params(device, c);
   s.board.report_at_end = o.print_summaries;
-  // Checks the layout now, so that a bad configuration fails before elaboration.
-  (void)board::make_bank_layout(s.board.lanes, s.board.banks, s.board.bits, s.board.word_bits,
-                                s.board.bank_capacity_bytes);
+  // The layout, made once: a bad configuration fails here, before elaboration, and the board uses it.
+  s.layout = board::make_bank_layout(s.board.lanes, s.board.banks, s.board.bits, s.board.word_bits,
+                                     s.board.bank_capacity_bytes);
   s.driver.concurrent = o.concurrent;
   s.driver.allow_batching = o.allow_batching;
   s.driver.oracle = o.oracle;
@@ -55,7 +55,7 @@ BoardSystem::BoardSystem(const sc_core::sc_module_name& name, const Scene& scene
                          const BoardSetup& setup)
     : sc_core::sc_module(name),
       host_out("host_out"),
-      board("rc2000", setup.board),
+      board("rc2000", setup.board, setup.layout),
       m_scene(scene),
       m_solver(solver),
       m_setup(setup),

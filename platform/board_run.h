@@ -67,6 +67,7 @@ BoardRunResult run_radiosity_on_board(const Scene& scene, const SolverOptions& s
 
 struct BoardSetup {
   board::BoardParams board;
+  board::BankLayout layout;  // of `board`, made (and so checked) once, by make_board_setup
   HostProfile host;
   BoardVisibilityOptions driver;
   int trace_first_step = 1, trace_last_step = 0;  // empty range: no trace

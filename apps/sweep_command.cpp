@@ -23,21 +23,15 @@ namespace rc {
 
 namespace {
 
-struct SweepOptions {
-  SceneOptions scene = paper_scene_options(280, 1120);  // a Table 2 scene that sweeps in seconds
-  std::string steps = "paper";
-  double convergence = SolverOptions{}.convergence;
+// The study's settings (SweepSpec) and its axes as the command line spells them.
+struct SweepOptions : SweepSpec {
+  SweepOptions() { scene = paper_scene_options(280, 1120); }  // a Table 2 scene that sweeps in seconds
   std::string lanes = "1-16";
   std::string banks = "5-12";
   std::string bits = "15";
   std::string devices = "xc2v6000,virtex4-sx55,spartan3-5000";
   std::string concurrent = "on";
-  bool paper_faithful = true;
-  std::string host = "athlon-mp-2600-calibrated";
-  std::string visibility = "fast";
   std::string out_dir = "out/sweep";
-  bool full_banks = false;
-  bool quiet = false;
 };
 
 // ---- output ---------------------------------------------------------------------------------------
@@ -168,16 +162,8 @@ SweepAxes parse_axes(const SweepOptions& o) {
 }
 
 SweepSpec sweep_spec(const SweepOptions& o) {
-  SweepSpec s;
+  SweepSpec s = o;
   s.axes = parse_axes(o);
-  s.scene = o.scene;
-  s.steps = o.steps;
-  s.convergence = o.convergence;
-  s.paper_faithful = o.paper_faithful;
-  s.host = o.host;
-  s.visibility = o.visibility;
-  s.full_banks = o.full_banks;
-  s.quiet = o.quiet;
   return s;
 }
 

@@ -15,6 +15,7 @@
 #include "studies/paper_workload.h"
 #include "apps/plot.h"
 #include "apps/progress.h"
+#include "apps/report.h"
 #include "studies/calibration_variants.h"
 #include "studies/paper_prediction.h"
 
@@ -57,21 +58,6 @@ ordered_json scene_record(const PaperTableRow& row) {
   return rec;
 }
 
-ordered_json estimate_record(const board::PaperEstimate& e) {
-  return {{"estimate", e.estimate},
-          {"rule", board::to_string(e.rule)},
-          {"device", e.device},
-          {"lanes", e.lanes},
-          {"clock_mhz", e.clock_mhz},
-          {"intersections_per_s", e.intersections_per_s},
-          {"bytes_per_intersection", e.bytes_per_intersection},
-          {"bytes_per_cycle", e.bytes_per_cycle},
-          {"gb_per_s", e.gb_per_s},
-          {"software_rate", e.software_rate},
-          {"speedup_vs_software", e.speedup_vs_software},
-          {"note", e.note}};
-}
-
 // The one JSON writer of paper.json.
 ordered_json paper_json(const PaperDocument& d) {
   ordered_json j;
@@ -84,8 +70,8 @@ ordered_json paper_json(const PaperDocument& d) {
   for (const PaperTableRow& row : d.rows) scenes.push_back(scene_record(row));
   // Pairs: the paper's rule, then the model's estimate of the same question, and why they differ.
   for (std::size_t i = 0; i < d.paper_rule.size(); ++i) {
-    estimates.push_back(estimate_record(d.paper_rule[i]));
-    ordered_json model = estimate_record(d.model[i]);
+    estimates.push_back(estimate_json(d.paper_rule[i]));
+    ordered_json model = estimate_json(d.model[i]);
     model["why_different"] = board::why_estimates_differ(d.paper_rule[i], d.model[i]);
     estimates.push_back(model);
   }

@@ -1,5 +1,9 @@
 #include "apps/report.h"
 
+#include "host/host_cpu_model.h"
+#include "studies/paper_workload.h"
+
+#include <cstdio>
 #include <fstream>
 #include <iomanip>
 #include <stdexcept>
@@ -67,6 +71,43 @@ void write_patches_csv(const std::string& path, const Scene& scene, const std::v
     for (std::size_t b = 0; b < kBands; ++b) out << ',' << radiosity[i][b];
     out << "\n";
   }
+}
+
+nlohmann::ordered_json estimate_json(const board::PaperEstimate& e) {
+  return {{"estimate", e.estimate},
+          {"rule", board::to_string(e.rule)},
+          {"device", e.device},
+          {"lanes", e.lanes},
+          {"clock_mhz", e.clock_mhz},
+          {"intersections_per_s", e.intersections_per_s},
+          {"bytes_per_intersection", e.bytes_per_intersection},
+          {"bytes_per_cycle", e.bytes_per_cycle},
+          {"gb_per_s", e.gb_per_s},
+          {"software_rate", e.software_rate},
+          {"speedup_vs_software", e.speedup_vs_software},
+          {"note", e.note}};
+}
+
+LanesThatFit lanes_that_fit(const std::string& device, const std::string& host, int bits) {
+  const board::DeviceProfile profile = board::find_device_profile(device);
+  const HostProfile host_profile = find_host_profile(host);
+  return {board::paper_rule_lanes_that_fit(profile, measured_peak_software_rate(load_paper_table(default_paper_table_path()))),
+          board::model_lanes_that_fit(profile, 1.0 / host_profile.work[static_cast<int>(HostWork::IntersectionTest)].to_seconds(),
+                                      bits)};
+}
+
+nlohmann::ordered_json lanes_that_fit_json(const LanesThatFit& e) {
+  return {{"paper_rule", estimate_json(e.paper_rule)},
+          {"model", estimate_json(e.model)},
+          {"why_different", board::why_estimates_differ(e.paper_rule, e.model)}};
+}
+
+std::string lanes_that_fit_line(const LanesThatFit& e) {
+  char line[256];
+  std::snprintf(line, sizeof line, "%s: paper's rule (15-bit Table 1 pipeline) %d lanes, %.4g int/s (%.1fx software); model %d lanes, %.4g int/s (%.1fx)",
+                e.model.device.c_str(), e.paper_rule.lanes, e.paper_rule.intersections_per_s,
+                e.paper_rule.speedup_vs_software, e.model.lanes, e.model.intersections_per_s, e.model.speedup_vs_software);
+  return line;
 }
 
 }  // namespace rc

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "board/throughput_estimates.h"
 #include "radiosity/radiosity.h"
 #include "scenes/scene.h"
 
@@ -16,5 +17,19 @@ nlohmann::ordered_json scene_json(const Scene& scene, const std::string& source,
 nlohmann::ordered_json solver_json(const SolverResult& result);
 void write_json(const std::string& path, const nlohmann::ordered_json& json);
 void write_patches_csv(const std::string& path, const Scene& scene, const std::vector<Spectrum>& radiosity);
+
+// One sec 5.6 estimate (board/throughput_estimates.h), as paper.json, report.json and sweep.json
+// write it.
+nlohmann::ordered_json estimate_json(const board::PaperEstimate& estimate);
+
+// "Lanes that fit" on `device` under the paper's rule and the model's, with why they differ: what a
+// board run's or a sweep's device would do at full rate (docs/calibration.md, "Sec 5.6"). The paper
+// rule's software rate is Table 2's peak; the model's is `host`'s intersection test.
+struct LanesThatFit {
+  board::PaperEstimate paper_rule, model;
+};
+LanesThatFit lanes_that_fit(const std::string& device, const std::string& host, int bits);
+nlohmann::ordered_json lanes_that_fit_json(const LanesThatFit& estimates);
+std::string lanes_that_fit_line(const LanesThatFit& estimates);  // one line for a summary
 
 }  // namespace rc

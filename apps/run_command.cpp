@@ -23,6 +23,7 @@ struct RunOutcome {
   std::uint64_t visibility_tests = 0;
   std::array<std::uint64_t, kHostWorkKinds> work_counts{};  // software runs
   std::optional<RunReport> board;                           // board runs
+  std::optional<LanesThatFit> lanes_that_fit;               // board runs: sec 5.6 on the run's device
 };
 
 RunOutcome run_software(const RunOptions& o, const Scene& scene, ProgressLine& progress) {
@@ -76,6 +77,7 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
                         std::to_string(o.bits) + "-bit" + (board.concurrent ? ", concurrent" : ", serial");
   out.visibility_tests = r.report.intersections.tests;
   out.board = std::move(r.report);
+  out.lanes_that_fit = lanes_that_fit(board.device, board.host, o.bits);
   return out;
 }
 
@@ -105,7 +107,10 @@ void print_summary(const RunOptions& o, const Scene& scene, const RunOutcome& ou
               static_cast<unsigned long long>(out.visibility_tests));
   std::printf("  energy       emitted %.6g = absorbed %.6g + escaping %.6g + unshot %.6g\n", r.energy.emitted,
               r.energy.absorbed, r.energy.escaping, r.energy.unshot);
-  if (out.board) print_board_summary(*out.board);
+  if (out.board) {
+    print_board_summary(*out.board);
+    std::printf("  sec 5.6      lanes that fit on %s\n", lanes_that_fit_line(*out.lanes_that_fit).c_str());
+  }
   std::printf("  wall time    %.2f s\n", wall);
   std::printf("  outputs      %s/report.json, patches.csv, image.png%s\n", o.out_dir.c_str(),
               o.board.trace_path.empty() ? "" : (", " + o.board.trace_path).c_str());
@@ -139,7 +144,10 @@ nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& pre
     report["host_work"] = counts;
   }
   report["visibility_tests"] = out.visibility_tests;
-  if (out.board) report["board"] = to_json(*out.board);
+  if (out.board) {
+    report["board"] = to_json(*out.board);
+    report["lanes_that_fit"] = lanes_that_fit_json(*out.lanes_that_fit);
+  }
   report["wall_seconds"] = wall;
   return report;
 }

@@ -17,6 +17,7 @@
 #include "studies/paper_workload.h"
 #include "apps/plot.h"
 #include "apps/progress.h"
+#include "apps/report.h"
 #include "studies/config_sweep.h"
 
 namespace rc {
@@ -97,9 +98,23 @@ void print_blocks(const std::vector<SweepRow>& rows, const std::vector<int>& ban
   }
 }
 
+// Sec 5.6's "lanes that fit" for every device and width swept, each rule.
+struct SweptFit {
+  int bits = 0;
+  LanesThatFit estimates;
+};
+
+std::vector<SweptFit> swept_fits(const SweepSpec& spec) {
+  std::vector<SweptFit> fits;
+  for (const std::string& device : spec.axes.devices) {
+    for (int bits : spec.axes.bits) fits.push_back({bits, lanes_that_fit(device, spec.host, bits)});
+  }
+  return fits;
+}
+
 nlohmann::ordered_json sweep_json(const SweepOptions& o, const Scene& scene, const std::map<int, WidthRun>& widths,
                                   const std::map<int, double>& software, const std::map<std::string, std::uint64_t>& capacity,
-                                  const std::vector<SweepRow>& rows) {
+                                  const std::vector<SweptFit>& fits, const std::vector<SweepRow>& rows) {
   nlohmann::ordered_json j;
   j["schema"] = "rc2000sim.sweep/1";
   j["scene"] = {{"name", scene.name},
@@ -126,6 +141,13 @@ nlohmann::ordered_json sweep_json(const SweepOptions& o, const Scene& scene, con
   j["bank_capacity_note"] =
       "0: the profile's banks. Otherwise banks of this size, which change no pass, transfer or time for this "
       "scene (no step batches with either size; studies/config_sweep.cpp), to keep the model's memory small";
+  nlohmann::ordered_json estimates = nlohmann::ordered_json::array();
+  for (const SweptFit& f : fits) {
+    nlohmann::ordered_json e = {{"device", f.estimates.model.device}, {"bits", f.bits}};
+    e.update(lanes_that_fit_json(f.estimates));
+    estimates.push_back(e);
+  }
+  j["lanes_that_fit"] = estimates;
   nlohmann::ordered_json records = nlohmann::ordered_json::array();
   for (const SweepRow& r : rows) records.push_back(sweep_row_json(r));
   j["rows"] = records;
@@ -182,13 +204,14 @@ int run_sweep(const SweepOptions& o) {
   const std::vector<Planned>& plan = result.plan;
   const std::size_t valid = result.valid;
 
+  const std::vector<SweptFit> fits = swept_fits(spec);
   std::filesystem::create_directories(o.out_dir);
   {
     std::ofstream csv(o.out_dir + "/sweep.csv");
     if (!csv) throw std::runtime_error(o.out_dir + "/sweep.csv: cannot open for writing");
     write_sweep_csv(csv, rows);
     std::ofstream json(o.out_dir + "/sweep.json");
-    write_json(json, sweep_json(o, scene, widths, software, result.bank_capacities, rows));
+    write_json(json, sweep_json(o, scene, widths, software, result.bank_capacities, fits, rows));
   }
   std::printf("rc2000sim sweep: %s, %zu faces, %zu patches, %s, host %s\n", scene.name.c_str(), scene.faces.size(),
               scene.patches.size(), o.paper_faithful ? "paper-faithful (every segment)" : "receivers culled",
@@ -197,6 +220,8 @@ int run_sweep(const SweepOptions& o) {
     std::printf("  %d-bit: %d steps replayed; software alone %.3f s\n", bits, w.steps, software.at(bits));
   std::printf("  %zu configurations: %zu simulated, %zu cannot exist\n", plan.size(), valid, plan.size() - valid);
   print_blocks(rows, spec.axes.banks);
+  std::printf("\n  sec 5.6, lanes that fit at full rate (docs/calibration.md):\n");
+  for (const SweptFit& f : fits) std::printf("    %d-bit %s\n", f.bits, lanes_that_fit_line(f.estimates).c_str());
   plot("sweep.py", o.out_dir + "/sweep.csv", o.out_dir);
   std::printf("\n  wrote %s/sweep.csv, sweep.json and plots (%.1f s)\n", o.out_dir.c_str(), progress.seconds());
   return 0;

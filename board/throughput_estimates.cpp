@@ -93,8 +93,6 @@ StreamRate long_pass_rate(const DeviceProfile& device, int lanes, int bits) {
 }  // namespace
 
 std::vector<PaperEstimate> paper_rule_estimates(double software_peak_rate) {
-  const pipeline::ResourceModel model = pipeline::ResourceModel::load_default();
-  const pipeline::PipelineResources table1 = model.pipeline(15, true);  // 1976 slices, 30 multipliers, 176.9 MHz
   const double bytes = bytes_per_intersection(15);
   std::vector<PaperEstimate> out{bandwidth_limit(EstimateRule::Paper, software_peak_rate)};
 
@@ -104,19 +102,21 @@ std::vector<PaperEstimate> paper_rule_estimates(double software_peak_rate) {
   measured.note = "sec 5.7: 2 parallel pipelines at 52 MHz";
   out.push_back(measured);
 
-  for (const char* name : kEstimateDevices) {
-    const DeviceProfile device = find_device_profile(name);
-    const int by_slices = device.slices / table1.slices;
-    const int by_multipliers = device.block_multipliers / table1.block_multipliers;
-    const int lanes = std::min(by_slices, by_multipliers);
-    PaperEstimate e = at_rate("lanes that fit", EstimateRule::Paper, device.name, lanes, table1.clock_mhz,
-                              lanes * table1.clock_mhz * 1e6, bytes, software_peak_rate);
-    e.note = format("min(%g slices / %g, %g multipliers / %g)", device.slices, table1.slices, device.block_multipliers,
-                    table1.block_multipliers) +
-             format(" = min(%g, %g); wrapper not counted", by_slices, by_multipliers);
-    out.push_back(e);
-  }
+  for (const char* name : kEstimateDevices) out.push_back(paper_rule_lanes_that_fit(find_device_profile(name), software_peak_rate));
   return out;
+}
+
+PaperEstimate paper_rule_lanes_that_fit(const DeviceProfile& device, double software_peak_rate) {
+  const pipeline::PipelineResources table1 = pipeline::ResourceModel::load_default().pipeline(15, true);
+  const int by_slices = device.slices / table1.slices;
+  const int by_multipliers = device.block_multipliers / table1.block_multipliers;
+  const int lanes = std::min(by_slices, by_multipliers);
+  PaperEstimate e = at_rate("lanes that fit", EstimateRule::Paper, device.name, lanes, table1.clock_mhz,
+                            lanes * table1.clock_mhz * 1e6, bytes_per_intersection(15), software_peak_rate);
+  e.note = format("min(%g slices / %g, %g multipliers / %g)", device.slices, table1.slices, device.block_multipliers,
+                  table1.block_multipliers) +
+           format(" = min(%g, %g); wrapper not counted", by_slices, by_multipliers);
+  return e;
 }
 
 std::vector<PaperEstimate> model_estimates(double software_rate, int bits) {
@@ -131,19 +131,21 @@ std::vector<PaperEstimate> model_estimates(double software_rate, int bits) {
   measured.note = format("%.3f rays per cycle (bound: ", two_rate.rays_per_cycle) + two_rate.limit + ")";
   out.push_back(measured);
 
-  for (const char* name : kEstimateDevices) {
-    const DeviceProfile device = find_device_profile(name);
-    const int lanes = max_lanes(device, model, bits);
-    const DesignFit fit = fit_design(device, model, std::max(lanes, 1), bits);
-    const StreamRate rate = lanes > 0 ? long_pass_rate(device, lanes, bits) : StreamRate{};
-    PaperEstimate e = at_rate("lanes that fit", EstimateRule::Model, device.name, lanes, fit.clock_mhz,
-                              rate.rays_per_cycle * fit.clock_mhz * 1e6, rate.bytes_per_ray, software_rate);
-    e.note = format("%g with block multipliers, %g with slice multipliers, wrapper counted; ", fit.hard_lanes,
-                    fit.soft_lanes) +
-             format("%.3f rays per cycle (bound: ", rate.rays_per_cycle) + rate.limit + ")";
-    out.push_back(e);
-  }
+  for (const char* name : kEstimateDevices) out.push_back(model_lanes_that_fit(find_device_profile(name), software_rate, bits));
   return out;
+}
+
+PaperEstimate model_lanes_that_fit(const DeviceProfile& device, double software_rate, int bits) {
+  const pipeline::ResourceModel model = pipeline::ResourceModel::load_default();
+  const int lanes = max_lanes(device, model, bits);
+  const DesignFit fit = fit_design(device, model, std::max(lanes, 1), bits);
+  const StreamRate rate = lanes > 0 ? long_pass_rate(device, lanes, bits) : StreamRate{};
+  PaperEstimate e = at_rate("lanes that fit", EstimateRule::Model, device.name, lanes, fit.clock_mhz,
+                            rate.rays_per_cycle * fit.clock_mhz * 1e6, rate.bytes_per_ray, software_rate);
+  e.note = format("%g with block multipliers, %g with slice multipliers, wrapper counted; ", fit.hard_lanes,
+                  fit.soft_lanes) +
+           format("%.3f rays per cycle (bound: ", rate.rays_per_cycle) + (lanes > 0 ? rate.limit : "no lane fits") + ")";
+  return e;
 }
 
 std::string why_estimates_differ(const PaperEstimate& paper, const PaperEstimate& model) {

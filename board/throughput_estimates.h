@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "board/device_profile.h"
+
 namespace rc::board {
 
 enum class EstimateRule { Paper, Model };
@@ -46,6 +48,11 @@ std::vector<PaperEstimate> paper_rule_estimates(double software_peak_rate);
 // Our estimate of the same questions at `bits`; `software_rate`: the calibrated host's
 // intersections per second (1 / intersection_test).
 std::vector<PaperEstimate> model_estimates(double software_rate, int bits);
+
+// "Lanes that fit" on any device, each rule (the same functions give the tables above): what a run's or
+// a sweep's device would do at full rate. The paper's rule is Table 1's 15-bit pipeline at 176.9 MHz.
+PaperEstimate paper_rule_lanes_that_fit(const DeviceProfile& device, double software_peak_rate);
+PaperEstimate model_lanes_that_fit(const DeviceProfile& device, double software_rate, int bits);
 
 // Why the two rules give different lane counts and rates for `device`, in one sentence.
 std::string why_estimates_differ(const PaperEstimate& paper, const PaperEstimate& model);

@@ -45,6 +45,23 @@ TEST(ThroughputEstimates, PaperRuleIsTheArithmeticOnThePapersPrintedInputs) {
   EXPECT_DOUBLE_EQ(e[3].bytes_per_cycle, 3 * 6.125);
 }
 
+// The same rule on any device: the XC2V6000 holds min(33792 / 1976, 144 / 30) = min(17, 4) = 4
+// Table 1 pipelines; the model fits 8 lanes at 15 bits (4 with block multipliers, 4 without) and
+// only 3 at 23 bits, whose rate the one result bank still caps.
+TEST(ThroughputEstimates, LanesThatFitOnAnyDevice) {
+  const DeviceProfile v2 = find_device_profile("xc2v6000");
+  const PaperEstimate paper = paper_rule_lanes_that_fit(v2, 2e7);
+  EXPECT_EQ(paper.lanes, 4);
+  EXPECT_DOUBLE_EQ(paper.intersections_per_s, 4 * 176.9e6);
+  EXPECT_DOUBLE_EQ(paper.speedup_vs_software, 4 * 176.9e6 / 2e7);
+  const PaperEstimate model15 = model_lanes_that_fit(v2, 2e7, 15);
+  const PaperEstimate model23 = model_lanes_that_fit(v2, 2e7, 23);
+  EXPECT_EQ(model15.lanes, 8);
+  EXPECT_EQ(model23.lanes, 3);
+  EXPECT_NE(model23.note.find("results"), std::string::npos);
+  EXPECT_LT(model23.intersections_per_s, 3 * model23.clock_mhz * 1e6);
+}
+
 // Our estimate: lanes that fit with the wrapper counted, streaming at the pass-timing formula's
 // long-pass rate, whose bound is named.
 TEST(ThroughputEstimates, ModelEstimatesCountTheWrapperAndTheResultBank) {

@@ -1,6 +1,7 @@
 #include "scenes/prepare.h"
 
 #include "scenes/cornell_box.h"
+#include "scenes/mesh_import.h"
 #include "scenes/normalise.h"
 #include "scenes/scene_file.h"
 #include "scenes/subdivide.h"
@@ -12,7 +13,8 @@ PreparedScene prepare_scene(const SceneOptions& options) {
   if (options.file.empty()) {
     out.scene = cornell_box();
   } else {
-    LoadedScene loaded = load_scene_file(options.file);
+    // Our text format, or any format Assimp reads (recognised by content).
+    LoadedScene loaded = is_text_scene_file(options.file) ? load_scene_file(options.file) : import_mesh_file(options.file);
     out.scene = std::move(loaded.scene);
     out.warnings = std::move(loaded.warnings);
   }

@@ -4,11 +4,16 @@ set -euo pipefail
 RC_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 RC_BUILD="${RC_BUILD:-$RC_ROOT/build}"
 RC_PACKAGES=(build-essential cmake ninja-build pkg-config libsystemc-dev libglm-dev libgtest-dev
-             libbenchmark-dev nlohmann-json3-dev libcli11-dev libpng-dev libembree-dev python3-matplotlib)
+             libbenchmark-dev nlohmann-json3-dev libcli11-dev libpng-dev libembree-dev python3-matplotlib
+             libassimp-dev)
 
+# Test data only, installed by scripts/test: real models in many formats (tests/scenes/mesh_import_test.cpp).
+RC_TEST_PACKAGES=(assimp-testmodels)
+
+# Installs RC_PACKAGES and any packages given as arguments that are missing.
 rc_install_missing() {
   local missing=()
-  for p in "${RC_PACKAGES[@]}"; do
+  for p in "${RC_PACKAGES[@]}" "$@"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done
   [ ${#missing[@]} -eq 0 ] && return 0

@@ -1,0 +1,32 @@
+// Scenes someone else's tool made: every format Assimp reads (OBJ, PLY, STL, glTF, Collada, 3DS,
+// OFF, ...), recognised by content as well as by extension. Polygons are triangulated, identical
+// vertices joined, node transforms applied; points and lines are skipped and zero-area faces
+// dropped (both counted in the warnings). Each mesh's material gives its reflectance (diffuse
+// colour, RGB bands as the solver uses them) and emission (emissive colour); docs/scenes.md,
+// "Meshes". Errors name the file and the reason.
+#pragma once
+
+#include <string>
+
+#include "scenes/scene_file.h"
+
+namespace rc {
+
+struct MeshImportOptions {
+  // Diffuse colour components at or above this are clamped to it, with a warning: a reflectance
+  // must be below 1 for the solution to converge, and many models use pure white (1, 1, 1).
+  double max_reflectance = 0.99;
+  // The reflectance of a material that gives no diffuse colour (documented default).
+  double default_reflectance = 0.5;
+  bool require_emitter = true;  // a scene that emits no light is an error
+};
+
+// Throws SceneFileError naming the file: Assimp could not read it, it has no triangles, or (with
+// require_emitter) none of its materials emits light.
+LoadedScene import_mesh_file(const std::string& path, const MeshImportOptions& options = {});
+
+// True when the file is in rc2000sim's own text scene format (its first keyword is material,
+// quad, tri or camera); anything else goes to Assimp.
+bool is_text_scene_file(const std::string& path);
+
+}  // namespace rc

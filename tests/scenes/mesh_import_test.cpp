@@ -1,0 +1,146 @@
+// Meshes made by other tools, through Assimp (scenes/mesh_import.h): real models from Debian's
+// assimp-testmodels (installed by scripts/test; test data only) in several formats, text and binary,
+// recognised by content; the malformed files that package ships give clear errors, no crash.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "scenes/mesh_import.h"
+#include "scenes/normalise.h"
+#include "scenes/prepare.h"
+
+namespace rc {
+namespace {
+
+const std::string kModels = "/usr/share/assimp/models";
+
+#define REQUIRE_TESTMODELS()                                                                     \
+  if (!std::filesystem::exists(kModels)) GTEST_SKIP() << kModels << " is missing: install assimp-testmodels " \
+                                                                    "(scripts/test does)"
+
+LoadedScene import(const std::string& relative) {
+  MeshImportOptions o;
+  o.require_emitter = false;  // a lone model emits nothing; tests look at its geometry and materials
+  return import_mesh_file(kModels + "/" + relative, o);
+}
+
+std::string error_of(const std::string& path, const MeshImportOptions& o = {}) {
+  try {
+    import_mesh_file(path, o);
+  } catch (const SceneFileError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Triangulated face counts of real models in five formats (two binary), and the box's bounds after
+// normalisation into [0, 1)^3: a cube stays a cube, centred, as large as it fits.
+TEST(MeshImport, RealModelsInSeveralFormats) {
+  REQUIRE_TESTMODELS();
+  struct Case {
+    const char* file;
+    std::size_t faces;
+  } cases[] = {{"OBJ/box.obj", 12},
+               {"PLY/cube_binary.ply", 12},
+               {"STL/Spider_binary.stl", 1312},
+               {"STL/Spider_ascii.stl", 1312},
+               {"glTF2/BoxTextured-glTF-Binary/BoxTextured.glb", 12},
+               {"OFF/Cube.off", 12},
+               {"Collada/duck.dae", 4212},
+               {"3DS/fels.3ds", 768}};
+  for (const Case& c : cases) {
+    const LoadedScene l = import(c.file);
+    EXPECT_EQ(l.scene.faces.size(), c.faces) << c.file;
+    EXPECT_FALSE(l.scene.materials.empty()) << c.file;
+  }
+  Scene box = import("OBJ/box.obj").scene;
+  normalise(box);
+  Vec3 lo{1, 1, 1}, hi{0, 0, 0};
+  for (const Triangle& t : box.face_triangles()) {
+    for (const Vec3& v : {t.v0, t.v1, t.v2}) {
+      lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)};
+      hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
+    }
+  }
+  EXPECT_GE(lo.x, 0.0);
+  EXPECT_LT(hi.x, 1.0);
+  EXPECT_NEAR(hi.x - lo.x, hi.y - lo.y, 1e-9);  // a cube: every side scaled alike
+  EXPECT_NEAR(hi.y - lo.y, hi.z - lo.z, 1e-9);
+  EXPECT_GT(hi.x - lo.x, 0.9);
+}
+
+// Materials: the OBJ's diffuse colour is the reflectance; pure white is clamped below 1 with a
+// warning naming the material; a material without colour gets the documented default.
+TEST(MeshImport, MaterialsBecomeReflectanceAndEmission) {
+  REQUIRE_TESTMODELS();
+  const LoadedScene box = import("OBJ/box.obj");  // its MTL-less default: Assimp's 0.6 grey
+  EXPECT_DOUBLE_EQ(box.scene.materials[0].reflectance.band[0], 0.6f);
+  const LoadedScene ply = import("PLY/cube_binary.ply");  // white
+  EXPECT_DOUBLE_EQ(ply.scene.materials[0].reflectance.band[0], MeshImportOptions{}.max_reflectance);
+  ASSERT_FALSE(ply.warnings.empty());
+  EXPECT_NE(ply.warnings[0].find("clamped"), std::string::npos) << ply.warnings[0];
+}
+
+// Files that the package ships broken: each is an error naming the file, never a crash. One of them
+// asks for hundreds of gigabytes; the import's memory cap turns that into an error too.
+TEST(MeshImport, MalformedFilesGiveClearErrors) {
+  REQUIRE_TESTMODELS();
+  for (const char* file : {"invalid/malformed.obj", "invalid/empty.obj", "invalid/empty.ply", "invalid/empty.3ds",
+                           "invalid/empty.off", "invalid/OutOfMemory.off", "OBJ/point_cloud.obj"}) {
+    const std::string path = kModels + "/" + file;
+    const std::string e = error_of(path);
+    EXPECT_EQ(e.rfind(path + ": ", 0), 0u) << file << ": " << e;
+  }
+  EXPECT_NE(error_of(kModels + "/invalid/OutOfMemory.off").find("memory"), std::string::npos);
+  EXPECT_EQ(error_of("/no/such/mesh.obj"), "/no/such/mesh.obj: cannot open");
+}
+
+// By content, not by name: the same OBJ and binary STL under meaningless extensions import alike,
+// and rc2000sim's own scene text is recognised by its keywords.
+TEST(MeshImport, FormatsAreRecognisedByContent) {
+  REQUIRE_TESTMODELS();
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "rc_mesh_import_test";
+  std::filesystem::create_directories(dir);
+  std::filesystem::copy_file(kModels + "/OBJ/box.obj", dir / "box.data", std::filesystem::copy_options::overwrite_existing);
+  std::filesystem::copy_file(kModels + "/STL/Spider_binary.stl", dir / "spider.bin",
+                             std::filesystem::copy_options::overwrite_existing);
+  MeshImportOptions o;
+  o.require_emitter = false;
+  EXPECT_EQ(import_mesh_file((dir / "box.data").string(), o).scene.faces.size(), 12u);
+  EXPECT_EQ(import_mesh_file((dir / "spider.bin").string(), o).scene.faces.size(), 1312u);
+  std::ofstream(dir / "room.txt") << "# a comment\nmaterial white reflectance 0.5 0.5 0.5\n";
+  EXPECT_TRUE(is_text_scene_file((dir / "room.txt").string()));
+  EXPECT_FALSE(is_text_scene_file((dir / "box.data").string()));
+  std::filesystem::remove_all(dir);
+}
+
+// A mesh with an emissive material runs through scene preparation like any scene: a lit room as an
+// OBJ with its MTL (faces wound into the room), and a model without an emitter is refused.
+TEST(MeshImport, AnEmissiveMeshIsASceneAndOneWithoutLightIsRefused) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "rc_mesh_import_room";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "room.mtl") << "newmtl white\nKd 0.8 0.8 0.8\nnewmtl light\nKd 0.5 0.5 0.5\nKe 10 10 10\n";
+  std::ofstream(dir / "room.obj") << "mtllib room.mtl\n"
+                                     "v 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nv 0 1 0\nv 1 1 0\nv 1 1 1\nv 0 1 1\n"
+                                     "v 0.4 0.99 0.4\nv 0.6 0.99 0.4\nv 0.6 0.99 0.6\nv 0.4 0.99 0.6\n"
+                                     "usemtl white\nf 4 3 2 1\nf 6 7 8 5\nf 2 6 5 1\nf 3 7 6 2\nf 4 8 7 3\nf 1 5 8 4\n"
+                                     "usemtl light\nf 9 10 11 12\n";
+  SceneOptions options;
+  options.file = (dir / "room.obj").string();
+  options.patch_levels = 1;
+  const PreparedScene room = prepare_scene(options);
+  EXPECT_EQ(room.scene.faces.size(), 14u);
+  EXPECT_EQ(room.scene.materials.size(), 2u);
+  double emitted = 0;
+  for (const Material& m : room.scene.materials) emitted += m.emission.band[0];
+  EXPECT_DOUBLE_EQ(emitted, 10.0);
+  std::ofstream(dir / "dark.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  EXPECT_NE(error_of((dir / "dark.obj").string()).find("no material emits light"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace rc

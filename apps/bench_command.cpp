@@ -146,6 +146,10 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--docs", o->docs_dir, "Also write speed-vs-error.md and its plot here (e.g. docs/results)");
   cmd->add_flag("--quiet", o->quiet, "No progress output");
   cmd->callback([o, base_ff, &exit_code] {
+    if (o->scene.patch_size > 0) {
+      throw CLI::ValidationError("--patch-size", "does not apply to bench, which sweeps patch levels "
+                                                 "(--base-patch-levels, --sweep-patch-levels)");
+    }
     o->base.form_factor = parse_form_factor_kind(*base_ff);
     o->board.lanes = o->lanes;
     exit_code = run_bench(*o);

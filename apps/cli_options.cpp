@@ -14,8 +14,12 @@ void add_scene_options(CLI::App& cmd, SceneOptions& scene) {
   cmd.add_option("--faces", scene.face_target, "Refine to exactly this many faces first (70: the paper's count)")
       ->check(CLI::NonNegativeNumber);
   cmd.add_option("--face-levels", scene.face_levels, "Split every face into 4^k faces")->check(CLI::Range(0, 8));
-  cmd.add_option("--patch-levels", scene.patch_levels, "Split every face into 4^m patches")
-      ->check(CLI::Range(0, 8))->capture_default_str();
+  CLI::Option* levels = cmd.add_option("--patch-levels", scene.patch_levels, "Split every face into 4^m patches")
+                            ->check(CLI::Range(0, 8))->capture_default_str();
+  cmd.add_option("--patch-size", scene.patch_size,
+                 "Instead of --patch-levels: split each face until its patches' edges are at most this long "
+                 "(normalised units, the scene scaled into [0,1)^3; for meshes that are not grids)")
+      ->check(CLI::PositiveNumber)->excludes(levels);
 }
 
 void add_solver_options(CLI::App& cmd, SolverCli& solver) {

@@ -22,7 +22,8 @@ PreparedScene prepare_scene(const SceneOptions& options) {
   if (options.face_target > 0) scene.faces = refine_to_count(scene.faces, options.face_target);
   scene.faces = split_faces(scene.faces, options.face_levels);
   normalise(scene);
-  scene.patches = make_patches(scene.faces, options.patch_levels);
+  scene.patches = options.patch_size > 0 ? make_patches_of_size(scene.faces, options.patch_size)
+                                         : make_patches(scene.faces, options.patch_levels);
   return out;
 }
 

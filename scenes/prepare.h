@@ -13,6 +13,7 @@ struct SceneOptions {
   int face_target = 0;    // > 0: refine to exactly this many faces first (longest-edge bisection)
   int face_levels = 0;    // then split every face into 4^face_levels faces
   int patch_levels = 3;   // then split every face into 4^patch_levels patches
+  double patch_size = 0;  // > 0: instead, patches of at most this edge length (normalised units)
 };
 
 struct PreparedScene {

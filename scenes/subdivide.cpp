@@ -1,5 +1,7 @@
 #include "scenes/subdivide.h"
 
+#include <algorithm>
+
 #include <stdexcept>
 #include <string>
 
@@ -79,15 +81,36 @@ std::vector<Face> refine_to_count(const std::vector<Face>& faces, int target) {
   return out;
 }
 
+namespace {
+
+void add_patches(const Face& face, int index, int levels, std::vector<Patch>& out) {
+  const Vec3 normal = face.tri.normal();
+  for (const Triangle& t : split_levels(face.tri, levels)) out.push_back({t, index, t.centroid(), normal, t.area()});
+}
+
+double longest_edge(const Triangle& t) {
+  return std::max({glm::length(t.v1 - t.v0), glm::length(t.v2 - t.v1), glm::length(t.v0 - t.v2)});
+}
+
+}  // namespace
+
 std::vector<Patch> make_patches(const std::vector<Face>& faces, int levels) {
   check_levels(levels, "patch");
   std::vector<Patch> out;
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    const Vec3 normal = faces[f].tri.normal();
-    for (const Triangle& t : split_levels(faces[f].tri, levels)) {
-      out.push_back({t, static_cast<int>(f), t.centroid(), normal, t.area()});
-    }
-  }
+  for (std::size_t f = 0; f < faces.size(); ++f) add_patches(faces[f], static_cast<int>(f), levels, out);
+  return out;
+}
+
+int levels_for_size(const Triangle& t, double size) {
+  if (!(size > 0)) throw std::invalid_argument("patch size must be positive, got " + std::to_string(size));
+  int levels = 0;
+  for (double edge = longest_edge(t); edge > size && levels < 8; edge /= 2) ++levels;
+  return levels;
+}
+
+std::vector<Patch> make_patches_of_size(const std::vector<Face>& faces, double size) {
+  std::vector<Patch> out;
+  for (std::size_t f = 0; f < faces.size(); ++f) add_patches(faces[f], static_cast<int>(f), levels_for_size(faces[f].tri, size), out);
   return out;
 }
 

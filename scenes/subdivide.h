@@ -19,6 +19,12 @@ std::vector<Face> refine_to_count(const std::vector<Face>& faces, int target);
 // Patches: each face split uniformly into 4^levels sub-triangles, grouped by face in face order.
 std::vector<Patch> make_patches(const std::vector<Face>& faces, int levels);
 
+// Patches of a target size for meshes that are not grids: each face is split into 4^k patches with
+// the smallest k (at most 8) whose patches' longest edge is at most `size` (midpoint splits halve
+// every edge). `size` is in the scene's units (normalised: [0, 1)); throws for size <= 0.
+std::vector<Patch> make_patches_of_size(const std::vector<Face>& faces, double size);
+int levels_for_size(const Triangle& t, double size);
+
 // Splits one triangle into its 4 midpoint children.
 std::vector<Triangle> split4(const Triangle& t);
 

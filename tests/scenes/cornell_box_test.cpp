@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "scenes/cornell_box.h"
 #include "scenes/normalise.h"
 #include "scenes/prepare.h"
@@ -86,6 +88,33 @@ TEST(Subdivision, PatchesTileTheirFace) {
     EXPECT_NEAR(glm::dot(p.normal, f.tri.normal()), 1.0, 1e-12);
     EXPECT_NEAR(glm::dot(p.centre - f.tri.v0, f.tri.normal()), 0.0, 1e-9);  // centre on the face plane
   }
+}
+
+// --patch-size: each face split until its patches' edges fit; large faces get more levels than
+// small ones, every patch's longest edge is at most the size, and the patches still tile the faces.
+TEST(Subdivision, PatchSizeSplitsEachFaceUntilItsEdgesFit) {
+  SceneOptions options;
+  options.patch_size = 0.1;
+  const Scene s = prepare_scene(options).scene;
+  std::vector<double> area(s.faces.size(), 0.0);
+  std::vector<int> count(s.faces.size(), 0);
+  for (const Patch& p : s.patches) {
+    const Triangle& t = p.tri;
+    const double longest = std::max({glm::length(t.v1 - t.v0), glm::length(t.v2 - t.v1), glm::length(t.v0 - t.v2)});
+    EXPECT_LE(longest, 0.1 * (1 + 1e-12));
+    area[p.face] += p.area;
+    ++count[p.face];
+  }
+  int fewest = count[0], most = count[0];
+  for (std::size_t f = 0; f < s.faces.size(); ++f) {
+    EXPECT_NEAR(area[f], s.faces[f].tri.area(), 1e-9 * s.faces[f].tri.area());
+    EXPECT_EQ(count[f], 1 << (2 * levels_for_size(s.faces[f].tri, 0.1)));
+    fewest = std::min(fewest, count[f]);
+    most = std::max(most, count[f]);
+  }
+  EXPECT_LT(fewest, most);  // the box's small block faces get fewer patches than its walls
+  EXPECT_EQ(levels_for_size(s.faces[0].tri, 10.0), 0);
+  EXPECT_THROW(levels_for_size(s.faces[0].tri, 0.0), std::invalid_argument);
 }
 
 TEST(Subdivision, RefineToCountIsExactAndDeterministic) {

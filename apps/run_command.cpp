@@ -134,7 +134,8 @@ nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& pre
                         {"bits", o.bits},
                         {"face_target", o.scene.face_target},
                         {"face_levels", o.scene.face_levels},
-                        {"patch_levels", o.scene.patch_levels}};
+                        {"patch_levels", o.scene.patch_size > 0 ? nlohmann::ordered_json() : nlohmann::ordered_json(o.scene.patch_levels)},
+                        {"patch_size", o.scene.patch_size > 0 ? nlohmann::ordered_json(o.scene.patch_size) : nlohmann::ordered_json()}};
   report["solver"] = solver_json(out.solver);
   if (out.board) {
     report["host_work"] = work_json(out.board->work);

@@ -1,5 +1,6 @@
 #include "scenes/prepare.h"
 
+#include "scenes/composition.h"
 #include "scenes/cornell_box.h"
 #include "scenes/mesh_import.h"
 #include "scenes/normalise.h"
@@ -14,7 +15,10 @@ PreparedScene prepare_scene(const SceneOptions& options) {
     out.scene = cornell_box();
   } else {
     // Our text format, or any format Assimp reads (recognised by content).
-    LoadedScene loaded = is_text_scene_file(options.file) ? load_scene_file(options.file) : import_mesh_file(options.file);
+    // Our text format, a composition (JSON), or any format Assimp reads (recognised by content).
+    LoadedScene loaded = is_text_scene_file(options.file)    ? load_scene_file(options.file)
+                         : is_composition_file(options.file) ? load_composition(options.file)
+                                                             : import_mesh_file(options.file);
     out.scene = std::move(loaded.scene);
     out.warnings = std::move(loaded.warnings);
   }

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "scenes/prepare.h"
 #include "tests/platform/system_support.h"
 
 namespace rc::test {
@@ -84,6 +85,32 @@ TEST(BoardSystem, ConcurrentModeOverlapsExactlyTheFormFactors) {
   EXPECT_EQ(serial.driver().stats().passes, static_cast<std::uint64_t>(so.fixed_steps));
   expect_host_timeline_adds_up(serial);
   expect_host_timeline_adds_up(concurrent);
+}
+
+// A composed scene (the Cornell Box with a mesh of our own placed in it, scenes/composition.h) on the
+// board gives exactly the CPU fixed-point radiosity, as every scene does.
+TEST(BoardSystem, ComposedSceneIsBitIdenticalToCpuFixedPoint) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "rc_composed_board";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "tetra.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+  std::ofstream(dir / "scene.json") << R"({"schema": "rc2000sim.composition/1", "room": "cornell-box",
+    "meshes": [{"file": "tetra.obj", "fit_into": {"min": [340, 0, 100], "max": [500, 150, 260]},
+                "material": {"reflectance": [0.8, 0.8, 0.8]}}]})";
+  SceneOptions options;
+  options.file = (dir / "scene.json").string();
+  options.patch_levels = 1;
+  const Scene scene = prepare_scene(options).scene;
+  std::filesystem::remove_all(dir);
+  ASSERT_EQ(scene.faces.size(), 38u + 4u);
+  const SolverOptions so = steps(30);
+  BoardRunOptions o;
+  o.lanes = 2;
+  BoardSystem board("board", scene, so, setup(o));
+  run_all({&board});
+  const SolverResult cpu = cpu_fixed_point(scene, so, 15);
+  EXPECT_EQ(board.result().blocked_segments, cpu.blocked_segments);
+  EXPECT_GT(cpu.blocked_segments, 0u);
+  expect_identical(board.result().radiosity, cpu.radiosity);
 }
 
 // Small banks force batches of rays and sets of faces (sec 4.4); the result is bit-identical to

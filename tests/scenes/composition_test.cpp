@@ -1,0 +1,127 @@
+// Composed scenes (scenes/composition.h): the Cornell Box plus a mesh placed in it, material
+// overrides, an added light, and errors that name the file and the key.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <unistd.h>
+
+#include "scenes/composition.h"
+#include "scenes/cornell_box.h"
+#include "scenes/prepare.h"
+
+namespace rc {
+namespace {
+
+class CompositionTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() / ("rc_composition_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir_);
+    // A unit tetrahedron as an OBJ of our own (no test data needed).
+    std::ofstream(dir_ / "tetra.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  std::string write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+    return (dir_ / name).string();
+  }
+  std::string error_of(const std::string& text) {
+    const std::string path = write("bad.json", text);
+    try {
+      load_composition(path);
+    } catch (const SceneFileError& e) {
+      return e.what();
+    }
+    return "";
+  }
+
+  std::filesystem::path dir_;
+};
+
+// The box's 38 faces plus the tetrahedron's 4, fitted into the given box (uniform scale, centred
+// on x and z, resting on its floor), with its material replaced by the override.
+TEST_F(CompositionTest, AMeshFitsIntoTheBoxWithItsMaterial) {
+  const std::string path = write("scene.json", R"({"schema": "rc2000sim.composition/1", "room": "cornell-box",
+    "meshes": [{"file": "tetra.obj", "fit_into": {"min": [100, 0, 100], "max": [300, 100, 300]},
+                "material": {"reflectance": [0.2, 0.7, 0.3]}}]})");
+  ASSERT_TRUE(is_composition_file(path));
+  const LoadedScene s = load_composition(path);
+  const Scene box = cornell_box();
+  ASSERT_EQ(s.scene.faces.size(), box.faces.size() + 4);
+  Vec3 lo{1e300}, hi{-1e300};
+  for (std::size_t f = box.faces.size(); f < s.scene.faces.size(); ++f) {
+    const Face& face = s.scene.faces[f];
+    EXPECT_DOUBLE_EQ(s.scene.materials[face.material].reflectance.band[1], 0.7);
+    for (const Vec3& v : {face.tri.v0, face.tri.v1, face.tri.v2}) {
+      lo = glm::min(lo, v);
+      hi = glm::max(hi, v);
+    }
+  }
+  // A unit tetrahedron scaled by min(200, 100, 200) = 100: 100 high, 100 wide, centred at 200.
+  EXPECT_NEAR(lo.y, 0, 1e-9);
+  EXPECT_NEAR(hi.y, 100, 1e-9);
+  EXPECT_NEAR((lo.x + hi.x) / 2, 200, 1e-9);
+  EXPECT_NEAR((lo.z + hi.z) / 2, 200, 1e-9);
+  EXPECT_NEAR(hi.x - lo.x, 100, 1e-9);
+  // The box's own faces and materials are unchanged.
+  EXPECT_EQ(s.scene.faces[0].tri.v0, box.faces[0].tri.v0);
+  EXPECT_EQ(s.scene.materials[0].name, box.materials[0].name);
+}
+
+// Rotate, scale and translate: a half-turn about y keeps the centre and mirrors x and z.
+TEST_F(CompositionTest, RotateScaleTranslate) {
+  const std::string path = write("scene.json", R"({"schema": "rc2000sim.composition/1",
+    "meshes": [{"file": "tetra.obj", "rotate": {"axis": [0, 1, 0], "degrees": 180}, "scale": 10,
+                "translate": [200, 50, 200]}]})");
+  const LoadedScene s = load_composition(path);
+  const Face& first = s.scene.faces[cornell_box().faces.size()];
+  // Vertex (0,0,0) of a tetrahedron centred at (0.5,0.5,0.5): turned to (1,0,1) - centre, times 10,
+  // plus centre + translate.
+  EXPECT_NEAR(first.tri.v0.x, 5 + 0.5 + 200, 1e-9);
+  EXPECT_NEAR(first.tri.v0.y, -5 + 0.5 + 50, 1e-9);
+  EXPECT_NEAR(first.tri.v0.z, 5 + 0.5 + 200, 1e-9);
+}
+
+// A room without light gets one from the description; a composition goes through scene
+// preparation like any scene.
+TEST_F(CompositionTest, AnAddedLightLightsAMeshRoom) {
+  std::ofstream(dir_ / "room.obj") << "v 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nv 0 1 0\nv 1 1 0\nv 1 1 1\nv 0 1 1\n"
+                                      "f 4 3 2 1\nf 6 7 8 5\nf 2 6 5 1\nf 3 7 6 2\nf 4 8 7 3\nf 1 5 8 4\n";
+  const std::string path = write("scene.json", R"({"schema": "rc2000sim.composition/1", "room": {"file": "room.obj"},
+    "light": {"corners": [[0.4, 0.99, 0.4], [0.6, 0.99, 0.4], [0.6, 0.99, 0.6], [0.4, 0.99, 0.6]],
+              "emission": [5, 5, 5]}})");
+  SceneOptions options;
+  options.file = path;
+  options.patch_levels = 1;
+  const PreparedScene p = prepare_scene(options);
+  EXPECT_EQ(p.scene.faces.size(), 14u);
+  EXPECT_EQ(p.scene.materials.back().emission.band[0], 5.0);
+  // The light faces down, into the room.
+  EXPECT_LT(p.scene.faces.back().tri.normal().y, 0);
+}
+
+TEST_F(CompositionTest, ErrorsNameTheFileAndTheKey) {
+  const std::string bad = (dir_ / "bad.json").string();
+  EXPECT_EQ(error_of(R"({"schema": "rc2000sim.composition/1", "meshes": [{"file": "tetra.obj", "sclae": 2}]})"),
+            bad + ": meshes[0].sclae: unknown key (allowed: file, rotate, fit_into, scale, translate, material)");
+  EXPECT_EQ(error_of(R"({"schema": "rc2000sim.composition/1", "meshes": [{"file": "tetra.obj", "scale": -1}]})"),
+            bad + ": meshes[0].scale: must be positive");
+  EXPECT_EQ(error_of(R"({"schema": "rc2000sim.composition/1", "meshes": [{"file": "tetra.obj",
+            "material": {"reflectance": [1.2, 0, 0]}}]})"),
+            bad + ": meshes[0].material.reflectance: components must be at least 0 and below 1.000000");
+  EXPECT_EQ(error_of(R"({"schema": "rc2000sim.composition/1", "room": {"file": "missing.obj"}})"),
+            (dir_ / "missing.obj").string() + ": cannot open");
+  EXPECT_EQ(error_of(R"({"schema": "rc2000sim.composition/1", "meshes": [{"file": "tetra.obj", "scale": 2,
+            "fit_into": {"min": [0, 0, 0], "max": [1, 1, 1]}}]})"),
+            bad + ": meshes[0].fit_into: excludes scale and translate");
+  EXPECT_NE(error_of("{not json").find(bad + ": not valid JSON"), std::string::npos);
+  EXPECT_FALSE(is_composition_file(write("other.json", R"({"schema": "something else"})")));
+}
+
+}  // namespace
+}  // namespace rc

@@ -68,7 +68,7 @@ void write_csv(const std::string& path, const std::vector<WidthResult>& rows, in
 
 int run_accuracy(const AccuracyOptions& o) {
   ProgressLine progress(!o.quiet);
-  const Scene scene = prepare_scene(o.scene).scene;
+  const Scene scene = prepare_scene(o.scene, [&](const std::string& what) { progress.update("%-60s", what.c_str()); }).scene;
   FloatVisibility float_visibility;
   const SolverResult reference = ProgressiveRadiosity(scene, float_visibility, o.solver).run();
   std::vector<WidthResult> rows;

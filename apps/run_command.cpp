@@ -157,7 +157,7 @@ nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& pre
 
 int run_simulation(const RunOptions& o) {
   ProgressLine progress(!o.quiet);
-  const PreparedScene prepared = prepare_scene(o.scene);
+  const PreparedScene prepared = prepare_scene(o.scene, [&](const std::string& what) { progress.update("%-60s", what.c_str()); });
   for (const std::string& w : prepared.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   const Scene& scene = prepared.scene;
   std::filesystem::create_directories(o.out_dir);

@@ -194,7 +194,7 @@ int run_sweep(const SweepOptions& o) {
   const SweepSpec spec = sweep_spec(o);
   (void)parse_steps(o.steps);                              // a bad --steps fails before the scene is made
   const ConfigChecker checker(spec.axes.devices, o.host);  // and so do unknown profiles
-  const Scene scene = prepare_scene(o.scene).scene;
+  const Scene scene = prepare_scene(o.scene, [&](const std::string& what) { progress.update("%-60s", what.c_str()); }).scene;
   const SweepResult result =
       run_sweep_study(scene, spec, [&](const std::string& what) { progress.update("%-60s", what.c_str()); });
   progress.finish();

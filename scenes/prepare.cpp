@@ -9,8 +9,14 @@
 
 namespace rc {
 
-PreparedScene prepare_scene(const SceneOptions& options) {
+PreparedScene prepare_scene(const SceneOptions& options) { return prepare_scene(options, nullptr); }
+
+PreparedScene prepare_scene(const SceneOptions& options, const std::function<void(const std::string&)>& progress) {
+  auto phase = [&](const std::string& what) {
+    if (progress) progress(what);
+  };
   PreparedScene out;
+  phase(options.file.empty() ? "building the Cornell Box" : "loading " + options.file);
   if (options.file.empty()) {
     out.scene = cornell_box();
   } else {
@@ -23,9 +29,14 @@ PreparedScene prepare_scene(const SceneOptions& options) {
     out.warnings = std::move(loaded.warnings);
   }
   Scene& scene = out.scene;
-  if (options.face_target > 0) scene.faces = refine_to_count(scene.faces, options.face_target);
+  if (options.face_target > 0) {
+    phase("refining " + std::to_string(scene.faces.size()) + " faces to " + std::to_string(options.face_target));
+    scene.faces = refine_to_count(scene.faces, options.face_target);
+  }
+  if (options.face_levels > 0) phase("splitting " + std::to_string(scene.faces.size()) + " faces");
   scene.faces = split_faces(scene.faces, options.face_levels);
   normalise(scene);
+  phase("making patches of " + std::to_string(scene.faces.size()) + " faces");
   scene.patches = options.patch_size > 0 ? make_patches_of_size(scene.faces, options.patch_size)
                                          : make_patches(scene.faces, options.patch_levels);
   return out;

@@ -1,6 +1,7 @@
 // From a scene source to the solver's input: load (or embed), refine, split, normalise, patch.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -22,5 +23,8 @@ struct PreparedScene {
 };
 
 PreparedScene prepare_scene(const SceneOptions& options);
+// The same, reporting each phase (loading, refining, splitting, patching) to `progress` as it starts:
+// meshes and scenes at real size take seconds there (docs/results/performance.md).
+PreparedScene prepare_scene(const SceneOptions& options, const std::function<void(const std::string&)>& progress);
 
 }  // namespace rc

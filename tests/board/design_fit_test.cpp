@@ -59,5 +59,20 @@ TEST(DesignFit, ClockIsTheSlowerOfDesignAndPipeline) {
   EXPECT_DOUBLE_EQ(f31.clock_mhz, f31.pipeline_clock_mhz);
 }
 
+// LaneCount is valid by construction: 1..255 (the CONFIG register's 8 bits), from any integer type.
+TEST(LaneCount, IsValidByConstruction) {
+  EXPECT_EQ(LaneCount(1).value(), 1u);
+  EXPECT_EQ(LaneCount(255u).value(), 255u);
+  EXPECT_EQ(static_cast<unsigned>(LaneCount(std::size_t{8})), 8u);
+  for (long bad : {0L, -1L, 256L, 1L << 40}) EXPECT_THROW(LaneCount{bad}, std::invalid_argument) << bad;
+  try {
+    LaneCount l = 0;
+    (void)l;
+    ADD_FAILURE() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("at least one lane"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace rc::board

@@ -29,6 +29,18 @@ TEST(PipelineFormat, AcceptsExactlyTheWidthsSevenToThirtyOne) {
   EXPECT_NE(message.find("7 to 31"), std::string::npos) << message;
 }
 
+// FracBits is valid by construction: an int becomes one only through the check, and reads back as
+// the same int.
+TEST(PipelineFormat, FracBitsIsValidByConstruction) {
+  for (int bits = kMinFracBits; bits <= kMaxFracBits; ++bits) {
+    const FracBits b = bits;
+    EXPECT_EQ(b.value(), bits);
+    EXPECT_EQ(static_cast<int>(b), bits);
+  }
+  for (int bits : {-1, 0, 6, 32}) EXPECT_THROW(FracBits{bits}, std::invalid_argument);
+  EXPECT_EQ(thrown_message([] { FracBits b = 40; (void)b; }), thrown_message([] { validate_frac_bits(40); }));
+}
+
 TEST(PipelineFormat, EveryEntryPointValidatesTheWidth) {
   const FaceRecord face{{1, 1, 1}, {2, 0, 0}, {0, 2, 0}};
   const FixedVec3 p{1, 1, 1};

@@ -58,28 +58,38 @@ std::uint32_t BoardVisibility::read_register(std::uint64_t offset) {
   return register_words_[0];
 }
 
-// One payload for every access: nothing waits between setting it up and its return, so no other
-// access can interleave (and a payload's construction allocates its extension array).
-void BoardVisibility::register_access(tlm::tlm_command command, std::uint64_t offset, unsigned words) {
-  tlm::tlm_generic_payload& trans = register_trans_;
-  const unsigned length = words * 4;
+// Payloads are reused (nothing waits between setting one up and its return, so no other access can
+// interleave, and a payload's construction allocates its extension array).
+void BoardVisibility::set_payload(tlm::tlm_generic_payload& trans, tlm::tlm_command command, std::uint64_t address,
+                                  void* data, std::uint64_t bytes) {
   trans.set_command(command);
-  trans.set_address(ports_.board.register_base + offset);
-  trans.set_data_ptr(reinterpret_cast<unsigned char*>(register_words_.data()));
-  trans.set_data_length(length);
-  trans.set_streaming_width(length);
+  trans.set_address(address);
+  trans.set_data_ptr(static_cast<unsigned char*>(data));
+  trans.set_data_length(static_cast<unsigned>(bytes));
+  trans.set_streaming_width(static_cast<unsigned>(bytes));
   trans.set_byte_enable_ptr(nullptr);
   trans.set_dmi_allowed(false);
   trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+}
+
+// Temporally decoupled: the access is issued at the host's local time, which moves to its
+// completion; the time it took counts as PCI time. Returns that time.
+sc_time BoardVisibility::decoupled_access(tlm::tlm_generic_payload& trans) {
   const sc_time issued = cpu_.local();
   sc_time delay = issued;
   pci_->b_transport(trans, delay);
-  if (!trans.is_response_ok()) {
-    throw std::runtime_error(std::string("register ") + (command == tlm::TLM_WRITE_COMMAND ? "write" : "read") +
-                             " failed: " + trans.get_response_string());
-  }
   cpu_.set_local(delay);
   stats_.pci += delay - issued;
+  return delay - issued;
+}
+
+void BoardVisibility::register_access(tlm::tlm_command command, std::uint64_t offset, unsigned words) {
+  set_payload(register_trans_, command, ports_.board.register_base + offset, register_words_.data(), words * 4);
+  decoupled_access(register_trans_);
+  if (!register_trans_.is_response_ok()) {
+    throw std::runtime_error(std::string("register ") + (command == tlm::TLM_WRITE_COMMAND ? "write" : "read") +
+                             " failed: " + register_trans_.get_response_string());
+  }
   ++stats_.register_accesses;
 }
 
@@ -91,6 +101,7 @@ void BoardVisibility::transfer(tlmx::DmaDirection direction, void* host, std::ui
   } else {
     dma(direction, host, address, bytes, what, no_data);
   }
+  (direction == tlmx::DmaDirection::to_device ? stats_.bytes_to_board : stats_.bytes_to_host) += bytes;
 }
 
 // The CPU itself moves the words through the BAR window, one PCI transaction each (the bus times
@@ -99,31 +110,20 @@ void BoardVisibility::transfer(tlmx::DmaDirection direction, void* host, std::ui
 void BoardVisibility::programmed_io(tlmx::DmaDirection direction, void* host, std::uint64_t address,
                                     std::uint64_t bytes, const char* what, bool no_data) {
   tlm::tlm_generic_payload& trans = pio_trans_;
-  trans.set_command(direction == tlmx::DmaDirection::to_device ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND);
-  trans.set_address(address);
-  trans.set_data_ptr(static_cast<unsigned char*>(host));
-  trans.set_data_length(static_cast<unsigned>(bytes));
-  trans.set_streaming_width(static_cast<unsigned>(bytes));
-  trans.set_byte_enable_ptr(nullptr);
-  trans.set_dmi_allowed(false);
-  trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+  const bool write = direction == tlmx::DmaDirection::to_device;
+  set_payload(trans, write ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND, address, host, bytes);
   trans.set_extension(&pio_extension_);
   if (no_data) trans.set_extension(&pio_no_data_);
-  const sc_time issued = cpu_.local();
-  sc_time delay = issued;
-  pci_->b_transport(trans, delay);
+  const sc_time start = cpu_.now();
+  const sc_time took = decoupled_access(trans);
   trans.clear_extension(&pio_extension_);
   if (no_data) trans.clear_extension(&pio_no_data_);
   if (!trans.is_response_ok()) {
     throw std::runtime_error(std::string("programmed I/O of ") + what + " failed: " + trans.get_response_string());
   }
-  const sc_time start = sc_core::sc_time_stamp() + issued;
-  cpu_.set_local(delay);
-  stats_.pci += delay - issued;
-  stats_.pio += delay - issued;
+  stats_.pio += took;
   ++stats_.pio_transfers;
-  (direction == tlmx::DmaDirection::to_device ? stats_.pio_bytes_written : stats_.pio_bytes_read) += bytes;
-  (direction == tlmx::DmaDirection::to_device ? stats_.bytes_to_board : stats_.bytes_to_host) += bytes;
+  (write ? stats_.pio_bytes_written : stats_.pio_bytes_read) += bytes;
   if (trace_ != nullptr && trace_->wants(cpu_.step())) {
     trace_->complete("host", std::string("pio ") + what, start, cpu_.now(), {{"bytes", bytes}});
   }
@@ -140,7 +140,6 @@ void BoardVisibility::dma(tlmx::DmaDirection direction, void* host, std::uint64_
   if (!r.ok()) throw std::runtime_error(std::string("DMA of ") + what + " failed");
   stats_.pci += r.duration();
   ++stats_.dma_transfers;
-  (direction == tlmx::DmaDirection::to_device ? stats_.bytes_to_board : stats_.bytes_to_host) += bytes;
   if (trace_ != nullptr && trace_->wants(cpu_.step())) {
     trace_->complete("dma", what, r.start, r.end, {{"bytes", bytes}});
     trace_->complete("host", std::string("dma ") + what, r.start, r.end);

@@ -140,6 +140,9 @@ class BoardVisibility : public VisibilityBackend {
   void write_registers(std::uint64_t offset, std::initializer_list<std::uint32_t> values);
   std::uint32_t read_register(std::uint64_t offset);
   void register_access(tlm::tlm_command command, std::uint64_t offset, unsigned words);  // register_words_
+  static void set_payload(tlm::tlm_generic_payload& trans, tlm::tlm_command command, std::uint64_t address, void* data,
+                          std::uint64_t bytes);
+  sc_core::sc_time decoupled_access(tlm::tlm_generic_payload& trans);
   // Moves a buffer between host and board the way the host profile's driver model says: a DMA
   // request (dma) or programmed I/O (pio). no_data: timed and counted like any transfer, bytes not
   // moved (timing replay of blank buffers).

@@ -23,16 +23,20 @@ std::string to_string(DriverWork work) {
   return "unknown";
 }
 
-const char* to_string(DriverModel::CostUnit unit) {
-  return unit == DriverModel::CostUnit::PerSegment ? "per_segment" : "per_word";
-}
-const char* to_string(DriverModel::Transfer transfer) { return transfer == DriverModel::Transfer::Dma ? "dma" : "pio"; }
-const char* to_string(DriverModel::FaceUpload upload) {
-  return upload == DriverModel::FaceUpload::Once ? "once" : "every_pass";
-}
-const char* to_string(DriverModel::Overlap overlap) {
-  return overlap == DriverModel::Overlap::FormFactors ? "form_factors" : "dual_cpu";
-}
+namespace {
+
+// The profile's spelling of each driver-model choice, in enum order (index = enum value).
+constexpr const char* kCostUnits[] = {"per_segment", "per_word"};
+constexpr const char* kTransfers[] = {"dma", "pio"};
+constexpr const char* kFaceUploads[] = {"once", "every_pass"};
+constexpr const char* kOverlaps[] = {"form_factors", "dual_cpu"};
+
+}  // namespace
+
+const char* to_string(DriverModel::CostUnit unit) { return kCostUnits[static_cast<int>(unit)]; }
+const char* to_string(DriverModel::Transfer transfer) { return kTransfers[static_cast<int>(transfer)]; }
+const char* to_string(DriverModel::FaceUpload upload) { return kFaceUploads[static_cast<int>(upload)]; }
+const char* to_string(DriverModel::Overlap overlap) { return kOverlaps[static_cast<int>(overlap)]; }
 
 std::string DriverModel::name() const {
   return std::string(to_string(cost_unit)) + "/" + to_string(transfer) + "/" + to_string(face_upload) + "/" +
@@ -58,11 +62,6 @@ Enum choice(const board::ProfileReader& r, const std::string& field, const char*
   for (std::size_t i = 0; i < N; ++i) allowed += std::string(i ? ", " : "") + names[i];
   r.fail(field + ".value", "'" + value + "' is not one of " + allowed);
 }
-
-constexpr const char* kCostUnits[] = {"per_segment", "per_word"};
-constexpr const char* kTransfers[] = {"dma", "pio"};
-constexpr const char* kFaceUploads[] = {"once", "every_pass"};
-constexpr const char* kOverlaps[] = {"form_factors", "dual_cpu"};
 
 DriverModel read_driver_model(const board::ProfileReader& r) {
   DriverModel m;

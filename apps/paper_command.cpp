@@ -119,51 +119,49 @@ void write_csv(const std::string& path, const PaperDocument& d) {
   }
 }
 
-std::string with_spread(const PaperPrediction& r, std::size_t scene, int impl) {
-  const auto spread = r.spread_of(scene, impl);
+// A withheld-column cell: the prediction and the spread of the variants within tolerance.
+std::string with_spread(const PaperTableRow& row) {
   char text[64];
-  if (spread.empty()) {
-    std::snprintf(text, sizeof text, "%7.1f", r.at(scene, impl).simulated_seconds);
+  if (row.spread.empty()) {
+    std::snprintf(text, sizeof text, "%7.1f", row.seconds);
   } else {
-    double lo = spread[0].second, hi = lo;
-    for (const auto& [model, seconds] : spread) lo = std::min(lo, seconds), hi = std::max(hi, seconds);
-    std::snprintf(text, sizeof text, "%7.1f [%6.1f-%6.1f]", r.at(scene, impl).simulated_seconds, lo, hi);
+    std::snprintf(text, sizeof text, "%7.1f [%6.1f-%6.1f]", row.seconds, row.spread_min_seconds, row.spread_max_seconds);
   }
   return text;
 }
 
-void print_table(const PaperPrediction& r) {
+void print_table(const PaperDocument& d) {
   std::printf("\nTable 2 (seconds; paper figures in brackets; * = calibration column; predictions with [the spread of\n"
               "the driver-model variants within %.0f%% of the best cross-validated error])\n", 100 * kVariantTolerance);
   std::printf("%6s %7s %6s %6s | %17s | %17s | %24s | %24s | %7s\n", "faces", "patches", "steps", "ours", "software*",
               "one pipe*", "two pipes", "concurrent", "speedup");
-  for (std::size_t i = 0; i < r.scenes->size(); ++i) {
-    const PaperScene& s = (*r.scenes)[i];
+  for (std::size_t i = 0; i + 3 < d.rows.size(); i += kPaperImplementations) {
+    const PaperTableRow &sw = d.rows[i], &one = d.rows[i + 1], &two = d.rows[i + 2], &con = d.rows[i + 3];
+    const PaperRow& s = sw.scene;
     char ours[16];
-    std::snprintf(ours, sizeof ours, s.convergence_steps ? "%d" : ">%d", s.convergence_steps ? s.convergence_steps : s.recorded_steps);
-    std::printf("%6d %7d %6d %6s | %7.1f [%7.1f] | %7.1f [%7.1f] | %24s | %24s | %6.2fx\n", s.row.faces, s.row.patches,
-                s.row.steps, ours, r.at(i, 0).simulated_seconds, s.row.software_seconds, r.at(i, 1).simulated_seconds,
-                s.row.one_pipe_seconds, with_spread(r, i, 2).c_str(), with_spread(r, i, 3).c_str(),
-                r.at(i, 0).simulated_seconds / r.at(i, 3).simulated_seconds);
+    std::snprintf(ours, sizeof ours, sw.convergence_steps_ours ? "%d" : ">%d",
+                  sw.convergence_steps_ours ? sw.convergence_steps_ours : s.steps + s.steps / 10);
+    std::printf("%6d %7d %6d %6s | %7.1f [%7.1f] | %7.1f [%7.1f] | %24s | %24s | %6.2fx\n", s.faces, s.patches, s.steps,
+                ours, sw.seconds, s.software_seconds, one.seconds, s.one_pipe_seconds, with_spread(two).c_str(),
+                with_spread(con).c_str(), con.speedup_vs_software);
   }
   std::printf("\nSec 5.6 estimates (15-bit pipeline): the paper's rule on its printed figures, and the model\n");
   std::printf("  %-24s %-14s %-5s %5s %7s %11s %7s %8s %7s %9s\n", "estimate", "device", "rule", "lanes", "MHz", "int/s",
               "B/int", "B/cycle", "GB/s", "speedup");
-  for (std::size_t i = 0; i < r.paper_rule.size(); ++i) {
-    for (const board::PaperEstimate* e : {&r.paper_rule[i], &r.model[i]}) {
+  for (std::size_t i = 0; i < d.paper_rule.size(); ++i) {
+    for (const board::PaperEstimate* e : {&d.paper_rule[i], &d.model[i]}) {
       std::printf("  %-24s %-14s %-5s %5d %7.1f %11.4g %7.3f %8.3f %7.2f %8.2fx  %s\n", e->estimate.c_str(),
                   e->device.c_str(), board::to_string(e->rule), e->lanes, e->clock_mhz, e->intersections_per_s,
                   e->bytes_per_intersection, e->bytes_per_cycle, e->gb_per_s, e->speedup_vs_software, e->note.c_str());
     }
-    std::printf("    why they differ: %s\n", board::why_estimates_differ(r.paper_rule[i], r.model[i]).c_str());
+    std::printf("    why they differ: %s\n", board::why_estimates_differ(d.paper_rule[i], d.model[i]).c_str());
   }
   std::printf("  software rates: paper rule %.4g int/s (Table 2's peak), model %.4g int/s (calibrated test)\n",
-              r.paper_rule[0].software_rate, r.model[0].software_rate);
+              d.paper_rule[0].software_rate, d.model[0].software_rate);
   std::printf("\nSec 4.1 bank variants (largest scene, 15 bits)\n");
-  for (std::size_t v = 0; v < std::size(kBankVariants); ++v) {
-    const TimingOutcome& o = r.bank_variant(v);
-    std::printf("  %u banks, %u lanes: %8.1f s, FPGA busy %8.1f s, FPGA speedup over 5 banks %.3fx\n", kBankVariants[v].banks,
-                kBankVariants[v].lanes, o.simulated_seconds, fpga_busy(o), fpga_busy(r.bank_variant(0)) / fpga_busy(o));
+  for (const BankVariantRow& b : d.bank_variants) {
+    std::printf("  %u banks, %u lanes: %8.1f s, FPGA busy %8.1f s, FPGA speedup over 5 banks %.3fx\n", b.variant.banks,
+                b.variant.lanes, b.seconds, b.fpga_busy_seconds, b.fpga_speedup_over_five_banks);
   }
 }
 
@@ -198,7 +196,7 @@ int run_paper(const PaperOptions& o) {
   std::filesystem::create_directories(o.out_dir);
   std::ofstream(o.out_dir + "/paper.json") << paper_json(document).dump(2) << "\n";
   write_csv(o.out_dir + "/paper.csv", document);
-  print_table(r);
+  print_table(document);
   std::printf("\n  average overall speedup %.2fx, largest scene %.2fx (software / concurrent)\n",
               document.summary.average_overall_speedup, document.summary.largest_scene_overall_speedup);
   if (!o.docs_dir.empty()) {

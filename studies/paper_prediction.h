@@ -36,8 +36,6 @@ struct BankVariant {
 };
 inline constexpr BankVariant kBankVariants[] = {{5, 2}, {6, 4}, {7, 4}};
 
-double fpga_busy(const TimingOutcome& o);  // 0 for a software run
-
 struct PaperPrediction {
   const std::vector<PaperScene>* scenes = nullptr;
   std::vector<TimingOutcome> outcomes;  // kPaperImplementations per scene, the bank variants, the spread

@@ -174,15 +174,6 @@ void append(Scene& scene, Scene part, const Material* override_material) {
   }
 }
 
-bool emits(const Scene& scene) {
-  for (const Face& f : scene.faces) {
-    for (double e : scene.materials[f.material].emission.band) {
-      if (e > 0) return true;
-    }
-  }
-  return false;
-}
-
 }  // namespace
 
 bool is_composition_file(const std::string& path) {
@@ -252,7 +243,7 @@ LoadedScene load_composition(const std::string& path) {
     append(out.scene, std::move(light), nullptr);
   }
   if (out.scene.faces.empty()) d.fail("(top level)", "the composed scene has no faces");
-  if (!emits(out.scene)) d.fail("light", "nothing in the composed scene emits light: add a light or an emissive material");
+  if (!out.scene.emits_light()) d.fail("light", "nothing in the composed scene emits light: add a light or an emissive material");
   return out;
 }
 

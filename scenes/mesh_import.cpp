@@ -141,13 +141,6 @@ const aiScene* read_capped(Assimp::Importer& importer, const std::string& path, 
   }
 }
 
-bool emits(const Material& m) {
-  for (double e : m.emission.band) {
-    if (e > 0) return true;
-  }
-  return false;
-}
-
 }  // namespace
 
 bool is_text_scene_file(const std::string& path) {
@@ -184,15 +177,12 @@ LoadedScene import_mesh_file(const std::string& path, const MeshImportOptions& o
   std::vector<std::string> warnings;
   SceneBuilder builder(path);
   std::vector<int> material_index(scene->mNumMaterials, -1);
-  bool any_emitter = false;
   std::size_t skipped = 0;
   for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
     const aiMesh& mesh = *scene->mMeshes[m];
     const unsigned mat = mesh.mMaterialIndex;
     if (mat < material_index.size() && material_index[mat] < 0) {
-      const Material material = material_from(*scene->mMaterials[mat], mat, o, warnings, path);
-      any_emitter = any_emitter || emits(material);
-      material_index[mat] = builder.add_material(material);
+      material_index[mat] = builder.add_material(material_from(*scene->mMaterials[mat], mat, o, warnings, path));
     }
     const std::string origin = path + ": mesh " + std::to_string(m) + (mesh.mName.length ? " '" + std::string(mesh.mName.C_Str()) + "'" : "");
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
@@ -215,7 +205,7 @@ LoadedScene import_mesh_file(const std::string& path, const MeshImportOptions& o
   } catch (const std::invalid_argument& e) {
     throw SceneFileError(path + ": " + e.what());
   }
-  if (o.require_emitter && !any_emitter) {
+  if (o.require_emitter && !out.scene.emits_light()) {
     throw SceneFileError(path + ": no material emits light (an emissive colour); add an emitter, e.g. by composing "
                                 "the mesh into the Cornell Box (docs/scenes.md)");
   }

@@ -16,6 +16,13 @@ struct Material {
   std::string name;
   Spectrum reflectance;  // diffuse albedo per band, in [0, 1)
   Spectrum emission;     // emitted radiosity per band (energy per unit area)
+
+  bool emits() const {
+    for (double e : emission.band) {
+      if (e > 0) return true;
+    }
+    return false;
+  }
 };
 
 struct Face {
@@ -50,6 +57,7 @@ struct Scene {
 
   const Material& material_of(const Patch& p) const { return materials[faces[p.face].material]; }
   std::vector<Triangle> face_triangles() const;
+  bool emits_light() const;  // some face's material emits
 };
 
 }  // namespace rc

@@ -76,6 +76,10 @@ Scene SceneBuilder::build() const {
   return scene_;
 }
 
+bool Scene::emits_light() const {
+  return std::any_of(faces.begin(), faces.end(), [&](const Face& f) { return materials[f.material].emits(); });
+}
+
 std::vector<Triangle> Scene::face_triangles() const {
   std::vector<Triangle> out;
   out.reserve(faces.size());

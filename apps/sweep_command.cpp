@@ -192,11 +192,9 @@ SweepSpec sweep_spec(const SweepOptions& o) {
 int run_sweep(const SweepOptions& o) {
   ProgressLine progress(!o.quiet);
   const SweepSpec spec = sweep_spec(o);
-  (void)parse_steps(o.steps);                              // a bad --steps fails before the scene is made
-  const ConfigChecker checker(spec.axes.devices, o.host);  // and so do unknown profiles
-  const Scene scene = prepare_scene(o.scene, [&](const std::string& what) { progress.update("%-60s", what.c_str()); }).scene;
   const SweepResult result =
-      run_sweep_study(scene, spec, [&](const std::string& what) { progress.update("%-60s", what.c_str()); });
+      run_sweep_study(spec, [&](const std::string& what) { progress.update("%-60s", what.c_str()); });
+  const Scene& scene = result.scene;
   progress.finish();
   const std::vector<SweepRow>& rows = result.rows;
   const std::map<int, WidthRun>& widths = result.widths;

@@ -145,11 +145,12 @@ std::map<std::string, std::uint64_t> bank_capacities(const std::vector<Planned>&
 
 }  // namespace
 
-SweepResult run_sweep_study(const Scene& scene, const SweepSpec& spec,
-                            const std::function<void(const std::string&)>& progress) {
+SweepResult run_sweep_study(const SweepSpec& spec, const std::function<void(const std::string&)>& progress) {
   (void)parse_steps(spec.steps);                              // a bad --steps fails before any work
   const ConfigChecker checker(spec.axes.devices, spec.host);  // and so do unknown profiles
   SweepResult r;
+  r.scene = prepare_scene(spec.scene, progress).scene;
+  const Scene& scene = r.scene;
   r.plan = plan_sweep(spec.axes, checker);
   r.valid = static_cast<std::size_t>(
       std::count_if(r.plan.begin(), r.plan.end(), [](const Planned& p) { return p.check.validity == Validity::ok; }));

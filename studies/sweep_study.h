@@ -43,6 +43,7 @@ struct Planned {
 };
 
 struct SweepResult {
+  Scene scene;                            // made from SweepSpec::scene
   std::vector<Planned> plan;              // every combination, in enumeration order
   std::size_t valid = 0;                  // combinations that can exist (simulated)
   std::map<int, WidthRun> widths;         // by fractional width
@@ -51,9 +52,8 @@ struct SweepResult {
   std::vector<SweepRow> rows;
 };
 
-// Runs the whole study on `scene` (once per process: it runs the timing study). `progress` gets
-// one line per phase.
-SweepResult run_sweep_study(const Scene& scene, const SweepSpec& spec,
-                            const std::function<void(const std::string&)>& progress);
+// Checks the spec (steps policy, profiles), makes the scene, then runs the whole study (once per
+// process: it runs the timing study). `progress` gets one line per phase.
+SweepResult run_sweep_study(const SweepSpec& spec, const std::function<void(const std::string&)>& progress);
 
 }  // namespace rc

@@ -12,9 +12,26 @@
 namespace rc::test {
 namespace {
 
-SolverResult cpu_fast(const Scene& scene, const SolverOptions& so) {
-  FastFixedVisibility v(15);
-  return ProgressiveRadiosity(scene, v, so).run();
+// What a one-lane board run with the real 4 MiB banks did, checked against the CPU kernel.
+struct RealSizeRun {
+  board::BankLayout layout;
+  BoardDriverStats stats;
+  SolverResult cpu;
+};
+
+RealSizeRun run_and_compare(const Scene& scene, const SolverOptions& so) {
+  FastFixedVisibility oracle(15);
+  BoardRunOptions o;
+  o.lanes = 1;
+  o.oracle = &oracle;
+  BoardSystem board("board", scene, so, setup(o));
+  run_all({&board});
+  FastFixedVisibility cpu_kernel(15);
+  RealSizeRun r{board.board.layout(), board.driver().stats(), ProgressiveRadiosity(scene, cpu_kernel, so).run()};
+  EXPECT_GT(r.cpu.blocked_segments, 0u);
+  EXPECT_EQ(board.result().blocked_segments, r.cpu.blocked_segments);
+  expect_identical(board.result().radiosity, r.cpu.radiosity);
+  return r;
 }
 
 // 38 x 4^6 = 155,648 faces: two face sets per step.
@@ -24,20 +41,10 @@ TEST(RealSizeBatching, MoreFacesThanOneBankHolds) {
   options.patch_levels = 0;
   const Scene scene = prepare_scene(options).scene;
   ASSERT_EQ(scene.faces.size(), 155648u);
-  const SolverOptions so = steps(2);
-  FastFixedVisibility oracle(15);
-  BoardRunOptions o;
-  o.lanes = 1;
-  o.oracle = &oracle;
-  BoardSystem board("board", scene, so, setup(o));
-  run_all({&board});
-  EXPECT_EQ(board.board.layout().max_faces_per_set, 116508u);  // floor(4 MiB / 4 / 9)
-  EXPECT_EQ(board.driver().stats().face_sets, 2u);
-  EXPECT_EQ(board.driver().stats().passes, 2u * 2u);  // every step: one batch against both sets
-  const SolverResult cpu = cpu_fast(scene, so);
-  EXPECT_GT(cpu.blocked_segments, 0u);
-  EXPECT_EQ(board.result().blocked_segments, cpu.blocked_segments);
-  expect_identical(board.result().radiosity, cpu.radiosity);
+  const RealSizeRun r = run_and_compare(scene, steps(2));
+  EXPECT_EQ(r.layout.max_faces_per_set, 116508u);  // floor(4 MiB / 4 / 9)
+  EXPECT_EQ(r.stats.face_sets, 2u);
+  EXPECT_EQ(r.stats.passes, 2u * 2u);  // every step: one batch against both sets
 }
 
 // 38 x 4^8 = 2,490,368 patches: a step's segments in three batches of at most 2^20 (one lane).
@@ -48,18 +55,10 @@ TEST(RealSizeBatching, MorePatchesThanOneBatchHolds) {
   ASSERT_EQ(scene.patches.size(), 2490368u);
   SolverOptions so = steps(1);
   so.cull_receivers = false;  // paper-faithful: a segment to every other patch
-  FastFixedVisibility oracle(15);
-  BoardRunOptions o;
-  o.lanes = 1;
-  o.oracle = &oracle;
-  BoardSystem board("board", scene, so, setup(o));
-  run_all({&board});
-  EXPECT_EQ(board.board.layout().max_rays_per_batch, std::uint64_t{1} << 20);
-  const SolverResult cpu = cpu_fast(scene, so);
-  ASSERT_GT(cpu.segments, std::uint64_t{1} << 21);  // more than two batches' worth
-  EXPECT_EQ(board.driver().stats().max_batches_per_step, (cpu.segments + (1u << 20) - 1) >> 20);
-  EXPECT_EQ(board.result().blocked_segments, cpu.blocked_segments);
-  expect_identical(board.result().radiosity, cpu.radiosity);
+  const RealSizeRun r = run_and_compare(scene, so);
+  EXPECT_EQ(r.layout.max_rays_per_batch, std::uint64_t{1} << 20);
+  ASSERT_GT(r.cpu.segments, std::uint64_t{1} << 21);  // more than two batches' worth
+  EXPECT_EQ(r.stats.max_batches_per_step, (r.cpu.segments + (1u << 20) - 1) >> 20);
 }
 
 }  // namespace

@@ -57,6 +57,24 @@ void write_json(const std::string& path, const nlohmann::ordered_json& json) {
   out << json.dump(2) << "\n";
 }
 
+void write_text_atomically(const std::string& path, const std::string& text) {
+  const std::string temporary = path + ".partial";
+  {
+    std::ofstream out(temporary, std::ios::binary);
+    if (!out) throw std::runtime_error(path + ": cannot open for writing");
+    out << text;
+    out.flush();
+    if (!out) {
+      std::remove(temporary.c_str());
+      throw std::runtime_error(path + ": write failed");
+    }
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    throw std::runtime_error(path + ": cannot rename " + temporary + " over it");
+  }
+}
+
 void write_patches_csv(const std::string& path, const Scene& scene, const std::vector<Spectrum>& radiosity) {
   std::ofstream out = open_output(path);
   out << "patch,face,centre_x,centre_y,centre_z,area";
@@ -89,8 +107,10 @@ nlohmann::ordered_json estimate_json(const board::PaperEstimate& e) {
 }
 
 LanesThatFit lanes_that_fit(const std::string& device, const std::string& host, int bits) {
-  const board::DeviceProfile profile = board::find_device_profile(device);
-  const HostProfile host_profile = find_host_profile(host);
+  return lanes_that_fit(board::find_device_profile(device), find_host_profile(host), bits);
+}
+
+LanesThatFit lanes_that_fit(const board::DeviceProfile& profile, const HostProfile& host_profile, int bits) {
   return {board::paper_rule_lanes_that_fit(profile, measured_peak_software_rate(load_paper_table(default_paper_table_path()))),
           board::model_lanes_that_fit(profile, 1.0 / host_profile.work[static_cast<int>(HostWork::IntersectionTest)].to_seconds(),
                                       bits)};

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "board/throughput_estimates.h"
+#include "host/host_cpu_model.h"
 #include "radiosity/radiosity.h"
 #include "scenes/scene.h"
 
@@ -16,6 +17,10 @@ nlohmann::ordered_json scene_json(const Scene& scene, const std::string& source,
                                   const std::vector<std::string>& warnings);
 nlohmann::ordered_json solver_json(const SolverResult& result);
 void write_json(const std::string& path, const nlohmann::ordered_json& json);
+// Writes `text` to a temporary file beside `path`, then renames it over `path`: a reader (or a
+// merge) never sees half a file, and a failed write leaves no file. Throws std::runtime_error
+// naming the path.
+void write_text_atomically(const std::string& path, const std::string& text);
 void write_patches_csv(const std::string& path, const Scene& scene, const std::vector<Spectrum>& radiosity);
 
 // One sec 5.6 estimate (board/throughput_estimates.h), as paper.json, report.json and sweep.json
@@ -29,6 +34,7 @@ struct LanesThatFit {
   board::PaperEstimate paper_rule, model;
 };
 LanesThatFit lanes_that_fit(const std::string& device, const std::string& host, int bits);
+LanesThatFit lanes_that_fit(const board::DeviceProfile& device, const HostProfile& host, int bits);
 nlohmann::ordered_json lanes_that_fit_json(const LanesThatFit& estimates);
 std::string lanes_that_fit_line(const LanesThatFit& estimates);  // one line for a summary
 

@@ -1,53 +1,36 @@
-// `rc2000sim sweep` (issue #5, what-if studies): lanes, banks, width, device and driver for one
-// scene, one CSV row per configuration. Configurations that cannot exist (lanes that do not fit
-// the device, too few banks to feed them) are reported with the reason and not simulated. The scene
-// is solved once per width (bit-exact visibility, recorded); every configuration that can exist
-// replays that recording through its own SystemC system, all in one simulation (timing_study.h),
-// beside one software-only system per width for the speedups. docs/results/sweep.md.
+// `rc2000sim sweep` (issues #5 and #13): design-space studies. A study (study.h) comes from a study
+// file (--study FILE, TOML, docs/studies.md) or from the command line's axes (--lanes, --banks,
+// --bits, --devices, --concurrent, --host), which stay as shorthands. Every combination is a row;
+// combinations that cannot exist get the reason and are not simulated. Each scene and width is
+// solved once and every configuration replays it (sweep_study.h).
+//
+//   rc2000sim sweep [--study FILE | axes...] [--out DIR]      the whole study on this machine
+//   rc2000sim sweep --study FILE --shard I/N --out DIR         one shard: DIR/shard-I-of-N.json
+//   rc2000sim sweep merge DIR... --out DIR                     the shards, as one machine writes them
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <memory>
+#include <regex>
+#include <sstream>
 
 #include "apps/cli_options.h"
-#include "studies/sweep_study.h"
-#include "studies/paper_workload.h"
 #include "apps/plot.h"
 #include "apps/progress.h"
 #include "apps/report.h"
-#include "studies/config_sweep.h"
+#include "board/profile_reader.h"
+#include "studies/study_file.h"
+#include "studies/sweep_study.h"
 
 namespace rc {
 
 namespace {
 
-// The study's settings (SweepSpec) and its axes as the command line spells them.
-struct SweepOptions : SweepSpec {
-  SweepOptions() { scene = paper_scene_options(280, 1120); }  // a Table 2 scene that sweeps in seconds
-  std::string lanes = "1-16";
-  std::string banks = "5-12";
-  std::string bits = "15";
-  std::string devices = "xc2v6000,virtex4-sx55,spartan3-5000";
-  std::string concurrent = "on";
-  std::string out_dir = "out/sweep";
-};
-
-// ---- output ---------------------------------------------------------------------------------------
-
-std::string cell(const SweepRow& r) {
-  char text[16];
-  if (r.validity == Validity::does_not_fit) return "fit";
-  if (r.validity == Validity::too_few_banks) return "banks";
-  if (r.validity != Validity::ok) return "-";
-  std::snprintf(text, sizeof text, "%.3f", r.simulated_seconds);
-  return text;
-}
-
 // 1,2,3,5 -> "1-3,5".
-std::string ranges(const std::vector<unsigned>& values) {
+template <class Int>
+std::string ranges(const std::vector<Int>& values) {
   std::string text;
   for (std::size_t i = 0; i < values.size();) {
     std::size_t j = i;
@@ -58,22 +41,108 @@ std::string ranges(const std::vector<unsigned>& values) {
   return text;
 }
 
-// One lanes x banks block of simulated seconds per device, width and driver (rows are enumerated
-// device, width, driver, lanes, banks: each block is contiguous).
-void print_blocks(const std::vector<SweepRow>& rows, const std::vector<int>& banks) {
-  const std::size_t block = banks.size();
+std::string names(const std::vector<std::string>& items) {
+  std::string text;
+  for (const std::string& s : items) text += (text.empty() ? "" : ",") + s;
+  return text;
+}
+
+// The command line's study, its defaults those of a study file (default_study()).
+struct SweepOptions {
+  SweepOptions() {
+    const Study d = default_study();
+    scene = d.scenes.front().options;
+    lanes = ranges(d.axes.lanes);
+    banks = ranges(d.axes.banks);
+    bits = ranges(d.axes.bits);
+    devices = names(d.axes.devices);
+    hosts = names(d.axes.hosts);
+    steps = d.steps;
+    convergence = d.convergence;
+  }
+  std::string study_file, shard;
+  SceneOptions scene;
+  std::string steps;
+  double convergence = 0;
+  std::string lanes, banks, bits, devices, hosts;
+  std::string concurrent = "on";
+  bool paper_faithful = true;
+  std::string visibility = "fast";
+  bool full_banks = false;
+  bool quiet = false;
+  std::string out_dir = "out/sweep";
+};
+
+struct MergeOptions {
+  std::vector<std::string> inputs;
+  std::string out_dir = "out/sweep";
+  bool quiet = false;
+};
+
+// The options a study file replaces: each is an error beside --study.
+const char* const kStudyOptions[] = {"--scene", "--faces", "--face-levels", "--patch-levels", "--patch-size",
+                                     "--steps", "--convergence", "--lanes", "--banks", "--bits", "--devices",
+                                     "--concurrent", "--paper-faithful", "--host", "--visibility", "--full-banks"};
+
+Study study_from_options(const SweepOptions& o) {
+  Study s = default_study();
+  s.name = "command-line";
+  s.scenes = {{default_scene_name(o.scene), o.scene}};
+  s.steps = o.steps;
+  s.convergence = o.convergence;
+  s.paper_faithful = o.paper_faithful;
+  s.visibility = o.visibility;
+  s.full_banks = o.full_banks;
+  s.axes.devices = parse_name_list(o.devices, "--devices");
+  s.axes.hosts = parse_name_list(o.hosts, "--host");
+  s.axes.bits = parse_int_list(o.bits, "--bits", 7, 31);
+  s.axes.concurrent = parse_concurrency(o.concurrent);
+  s.axes.lanes = parse_int_list(o.lanes, "--lanes", 1, 255);  // the CONFIG register holds 8 bits of each
+  s.axes.banks = parse_int_list(o.banks, "--banks", 1, 255);
+  check_study(s);
+  return s;
+}
+
+// ---- the summary ----------------------------------------------------------------------------------
+
+std::string cell(const SweepRow& r) {
+  char text[16];
+  if (r.validity == Validity::does_not_fit) return "fit";
+  if (r.validity == Validity::too_few_banks) return "banks";
+  if (r.validity != Validity::ok) return "-";
+  std::snprintf(text, sizeof text, "%.3f", r.simulated_seconds);
+  return text;
+}
+
+bool same_block(const SweepConfig& a, const SweepConfig& b) {
+  if (a.device != b.device || a.bits != b.bits || a.concurrent != b.concurrent || a.host != b.host) return false;
+  for (std::size_t i = 0; i < a.settings.size(); ++i)
+    if (a.settings[i].value != b.settings[i].value) return false;
+  return true;
+}
+
+std::string block_title(const SweepConfig& c, bool show_host) {
+  std::string title = c.device + ", " + std::to_string(c.bits) + "-bit, " + (c.concurrent ? "concurrent" : "serial") +
+                      " driver";
+  if (show_host) title += ", host " + c.host;
+  for (const ProfileSetting& s : c.settings) title += ", " + s.text();
+  return title;
+}
+
+// One lanes x banks block of simulated seconds per device, width, driver, host and profile values
+// (rows are enumerated in that order, lanes and banks last: each block is contiguous).
+void print_blocks(const std::vector<SweepRow>& rows, const SweepAxes& axes) {
+  const std::size_t block = axes.banks.size();
   for (std::size_t first = 0; first < rows.size();) {
     const SweepConfig& c = rows[first].config;
-    std::printf("\n%s, %d-bit, %s driver: simulated seconds (fit: lanes do not fit; banks: too few banks)\n",
-                c.device.c_str(), c.bits, c.concurrent ? "concurrent" : "serial");
+    std::printf("\n%s: simulated seconds (fit: lanes do not fit; banks: too few banks)\n",
+                block_title(c, axes.hosts.size() > 1).c_str());
     std::printf("  lanes \\ banks");
-    for (int b : banks) std::printf(" %8d", b);
+    for (int b : axes.banks) std::printf(" %8d", b);
     std::printf("\n");
     const SweepRow* best = nullptr;
     std::size_t end = first;
-    while (end < rows.size() && rows[end].config.device == c.device && rows[end].config.bits == c.bits &&
-           rows[end].config.concurrent == c.concurrent)
-      ++end;
+    while (end < rows.size() && same_block(rows[end].config, c)) ++end;
     std::vector<unsigned> unfit;  // lane counts whose whole line does not fit the device
     for (std::size_t r = first; r < end; r += block) {
       if (rows[r].validity == Validity::does_not_fit) {
@@ -98,45 +167,64 @@ void print_blocks(const std::vector<SweepRow>& rows, const std::vector<int>& ban
   }
 }
 
-// Sec 5.6's "lanes that fit" for every device and width swept, each rule.
+// ---- sec 5.6 --------------------------------------------------------------------------------------
+
+// Sec 5.6's "lanes that fit" for every device and width swept, each rule, on the profiles with the
+// study's fixed settings and the first host.
 struct SweptFit {
   int bits = 0;
   LanesThatFit estimates;
 };
 
-std::vector<SweptFit> swept_fits(const SweepSpec& spec) {
+std::vector<SweptFit> swept_fits(const Study& s) {
+  const std::string study = s.file.empty() ? s.name : s.file;
+  const HostProfile host = with_settings(find_host_profile(s.axes.hosts.front()), s.fixed, study);
   std::vector<SweptFit> fits;
-  for (const std::string& device : spec.axes.devices) {
-    for (int bits : spec.axes.bits) fits.push_back({bits, lanes_that_fit(device, spec.host, bits)});
+  for (const std::string& device : s.axes.devices) {
+    const board::DeviceProfile d = with_settings(board::find_device_profile(device), s.fixed, study);
+    for (int bits : s.axes.bits) fits.push_back({bits, lanes_that_fit(d, host, bits)});
   }
   return fits;
 }
 
-nlohmann::ordered_json sweep_json(const SweepOptions& o, const Scene& scene, const std::map<int, WidthRun>& widths,
-                                  const std::map<int, double>& software, const std::map<std::string, std::uint64_t>& capacity,
-                                  const std::vector<SweptFit>& fits, const std::vector<SweepRow>& rows) {
+bool sweeps_device_fields(const Study& s) {
+  return std::any_of(s.axes.profile.begin(), s.axes.profile.end(),
+                     [](const ProfileAxis& a) { return a.field.kind == ProfileKind::device; });
+}
+
+// ---- sweep.json -----------------------------------------------------------------------------------
+
+// The software-only seconds of one width: a number when the width has one software time (one host),
+// else an object by software key.
+nlohmann::ordered_json software_at(const SceneSweep& r, int bits) {
+  const std::string prefix = std::to_string(bits) + "-bit ";
+  nlohmann::ordered_json by_key = nlohmann::ordered_json::object();
+  for (const auto& [key, seconds] : r.software_seconds)
+    if (key.rfind(prefix, 0) == 0) by_key[key] = seconds;
+  return by_key.size() == 1 ? by_key.begin().value() : by_key;
+}
+
+nlohmann::ordered_json sweep_json(const Study& s, const SceneSweep& r, const std::vector<SweptFit>& fits) {
   nlohmann::ordered_json j;
   j["schema"] = "rc2000sim.sweep/1";
-  j["scene"] = {{"name", scene.name},
-                {"source", o.scene.file.empty() ? "embedded:cornell-box" : o.scene.file},
-                {"faces", scene.faces.size()},
-                {"patches", scene.patches.size()}};
-  j["solver"] = {{"paper_faithful", o.paper_faithful}, {"steps_policy", o.steps}, {"convergence", o.convergence},
-                 {"visibility", o.visibility}};
-  j["host_profile"] = o.host;
+  j["scene"] = {{"name", r.scene.name}, {"source", r.scene.source}, {"faces", r.scene.faces}, {"patches", r.scene.patches}};
+  j["solver"] = {{"paper_faithful", s.paper_faithful}, {"steps_policy", s.steps}, {"convergence", s.convergence},
+                 {"visibility", s.visibility}};
+  j["host_profile"] = s.axes.hosts.size() == 1 ? nlohmann::ordered_json(s.axes.hosts.front())
+                                               : nlohmann::ordered_json(s.axes.hosts);
   nlohmann::ordered_json w = nlohmann::ordered_json::array();
-  for (const auto& [bits, run] : widths) {
+  for (const auto& [bits, width] : r.widths) {
     w.push_back({{"bits", bits},
-                 {"steps", run.steps},
-                 {"convergence_step", run.functional.convergence_step > 0  // null: not within the replayed steps
-                                          ? nlohmann::ordered_json(run.functional.convergence_step)
+                 {"steps", width.steps},
+                 {"convergence_step", width.convergence_step > 0  // null: not within the replayed steps
+                                          ? nlohmann::ordered_json(width.convergence_step)
                                           : nlohmann::ordered_json()},
-                 {"max_segments_per_step", run.max_segments},
-                 {"software_seconds", software.at(bits)}});
+                 {"max_segments_per_step", width.max_segments},
+                 {"software_seconds", software_at(r, bits)}});
   }
   j["widths"] = w;
   nlohmann::ordered_json banks;
-  for (const auto& [device, bytes] : capacity) banks[device] = bytes;
+  for (const auto& [device, bytes] : r.bank_capacities) banks[device] = bytes;
   j["modelled_bank_capacity_bytes"] = banks;
   j["bank_capacity_note"] =
       "0: the profile's banks. Otherwise banks of this size, which change no pass, transfer or time for this "
@@ -148,19 +236,25 @@ nlohmann::ordered_json sweep_json(const SweepOptions& o, const Scene& scene, con
     estimates.push_back(e);
   }
   j["lanes_that_fit"] = estimates;
+  if (sweeps_device_fields(s)) {
+    j["lanes_that_fit_note"] = "on the device profiles with the study's fixed settings; the device fields swept as "
+                               "axes change each row's own clock_mhz and layout, not these estimates";
+  }
+  const std::vector<std::string> extra = extra_columns(s.axes);
   nlohmann::ordered_json records = nlohmann::ordered_json::array();
-  for (const SweepRow& r : rows) records.push_back(sweep_row_json(r));
+  for (const SweepRow& row : r.rows) records.push_back(sweep_row_json(row, extra));
   j["rows"] = records;
   return j;
 }
 
 // One line per key and per row: the file stays as diff-able as the CSV and a third of dump(2)'s size.
-void write_json(std::ostream& out, const nlohmann::ordered_json& j) {
+std::string json_text(const nlohmann::ordered_json& j) {
+  std::ostringstream out;
   out << "{\n";
   for (auto it = j.begin(); it != j.end(); ++it) {
     out << "  " << nlohmann::json(it.key()).dump() << ": ";
     if (it.key() != "rows") {
-      out << it.value().dump() << ",\n";
+      out << it.value().dump() << (std::next(it) != j.end() ? ",\n" : "\n");
       continue;
     }
     out << "[\n";
@@ -169,60 +263,138 @@ void write_json(std::ostream& out, const nlohmann::ordered_json& j) {
     out << "  ]" << (std::next(it) != j.end() ? ",\n" : "\n");
   }
   out << "}\n";
+  return out.str();
 }
 
-// ---- the command ----------------------------------------------------------------------------------
+// ---- writing a study ------------------------------------------------------------------------------
 
-SweepAxes parse_axes(const SweepOptions& o) {
-  SweepAxes a;
-  a.devices = parse_name_list(o.devices, "--devices");
-  a.bits = parse_int_list(o.bits, "--bits", 7, 31);
-  a.concurrent = parse_concurrency(o.concurrent);
-  a.lanes = parse_int_list(o.lanes, "--lanes", 1, 255);  // the CONFIG register holds 8 bits of each
-  a.banks = parse_int_list(o.banks, "--banks", 1, 255);
-  return a;
+// The study as run and the tool that ran it, in every output folder.
+std::string study_record(const StudyResult& r) {
+  nlohmann::ordered_json j;
+  j["tool"] = r.tool;
+  j["study"] = study_json(r.study);
+  return j.dump(2) + "\n";
 }
 
-SweepSpec sweep_spec(const SweepOptions& o) {
-  SweepSpec s = o;
-  s.axes = parse_axes(o);
-  return s;
-}
-
-int run_sweep(const SweepOptions& o) {
-  ProgressLine progress(!o.quiet);
-  const SweepSpec spec = sweep_spec(o);
-  const SweepResult result =
-      run_sweep_study(spec, [&](const std::string& what) { progress.update("%-60s", what.c_str()); });
-  const Scene& scene = result.scene;
-  progress.finish();
-  const std::vector<SweepRow>& rows = result.rows;
-  const std::map<int, WidthRun>& widths = result.widths;
-  const std::map<int, double>& software = result.software_seconds;
-  const std::vector<Planned>& plan = result.plan;
-  const std::size_t valid = result.valid;
-
-  const std::vector<SweptFit> fits = swept_fits(spec);
-  std::filesystem::create_directories(o.out_dir);
-  {
-    std::ofstream csv(o.out_dir + "/sweep.csv");
-    if (!csv) throw std::runtime_error(o.out_dir + "/sweep.csv: cannot open for writing");
-    write_sweep_csv(csv, rows);
-    std::ofstream json(o.out_dir + "/sweep.json");
-    write_json(json, sweep_json(o, scene, widths, software, result.bank_capacities, fits, rows));
+void print_scene(const Study& s, const SceneSweep& r, const std::vector<SweptFit>& fits) {
+  std::printf("rc2000sim sweep: %s, %llu faces, %llu patches, %s, host %s\n", r.scene.name.c_str(),
+              static_cast<unsigned long long>(r.scene.faces), static_cast<unsigned long long>(r.scene.patches),
+              s.paper_faithful ? "paper-faithful (every segment)" : "receivers culled", names(s.axes.hosts).c_str());
+  for (const auto& [bits, w] : r.widths) {
+    const nlohmann::ordered_json software = software_at(r, bits);
+    if (software.is_number()) {
+      std::printf("  %d-bit: %d steps replayed; software alone %.3f s\n", bits, w.steps, software.get<double>());
+    } else {
+      std::printf("  %d-bit: %d steps replayed; software alone:", bits, w.steps);
+      for (auto it = software.begin(); it != software.end(); ++it)
+        std::printf(" %s %.3f s;", it.key().c_str(), it.value().get<double>());
+      std::printf("\n");
+    }
   }
-  std::printf("rc2000sim sweep: %s, %zu faces, %zu patches, %s, host %s\n", scene.name.c_str(), scene.faces.size(),
-              scene.patches.size(), o.paper_faithful ? "paper-faithful (every segment)" : "receivers culled",
-              o.host.c_str());
-  for (const auto& [bits, w] : widths)
-    std::printf("  %d-bit: %d steps replayed; software alone %.3f s\n", bits, w.steps, software.at(bits));
-  std::printf("  %zu configurations: %zu simulated, %zu cannot exist\n", plan.size(), valid, plan.size() - valid);
-  print_blocks(rows, spec.axes.banks);
+  std::printf("  %zu configurations: %zu simulated, %zu cannot exist\n", r.rows.size(), r.valid, r.rows.size() - r.valid);
+  print_blocks(r.rows, s.axes);
   std::printf("\n  sec 5.6, lanes that fit at full rate (docs/calibration.md):\n");
   for (const SweptFit& f : fits) std::printf("    %d-bit %s\n", f.bits, lanes_that_fit_line(f.estimates).c_str());
-  plot("sweep.py", o.out_dir + "/sweep.csv", o.out_dir);
-  std::printf("\n  wrote %s/sweep.csv, sweep.json and plots (%.1f s)\n", o.out_dir.c_str(), progress.seconds());
+}
+
+// Each scene's sweep.csv, sweep.json and plots: in `out` itself for a one-scene study, else in a
+// folder per scene; study.json beside them.
+void write_study(const StudyResult& r, const std::string& out, const ProgressLine& clock) {
+  std::filesystem::create_directories(out);
+  write_text_atomically(out + "/study.json", study_record(r));
+  const std::vector<SweptFit> fits = swept_fits(r.study);
+  const std::vector<std::string> extra = extra_columns(r.study.axes);
+  for (std::size_t i = 0; i < r.scenes.size(); ++i) {
+    const SceneSweep& scene = r.scenes[i];
+    const std::string dir = r.scenes.size() == 1 ? out : out + "/" + r.study.scenes[i].name;
+    std::filesystem::create_directories(dir);
+    std::ostringstream csv;
+    write_sweep_csv(csv, scene.rows, extra);
+    write_text_atomically(dir + "/sweep.csv", csv.str());
+    write_text_atomically(dir + "/sweep.json", json_text(sweep_json(r.study, scene, fits)));
+    if (i > 0) std::printf("\n");
+    print_scene(r.study, scene, fits);
+    plot("sweep.py", dir + "/sweep.csv", dir);
+    std::printf("\n  wrote %s/sweep.csv, sweep.json and plots\n", dir.c_str());
+  }
+  std::printf("  wrote %s/study.json (%.1f s in all)\n", out.c_str(), clock.seconds());
+}
+
+std::string shard_path(const std::string& dir, const Shard& s) {
+  return dir + "/shard-" + std::to_string(s.index) + "-of-" + std::to_string(s.count) + ".json";
+}
+
+int run_sweep(const SweepOptions& o, const Study& study) {
+  ProgressLine progress(!o.quiet);
+  auto report = [&](const std::string& what) { progress.update("%-70s", what.c_str()); };
+  if (!o.shard.empty()) {
+    const Shard shard = parse_shard(o.shard);
+    const ShardResult result = run_study_shard(study, shard, report);
+    progress.finish();
+    std::filesystem::create_directories(o.out_dir);
+    const std::string path = shard_path(o.out_dir, shard);
+    write_text_atomically(path, shard_json(result).dump() + "\n");
+    std::printf("rc2000sim sweep: study %s, shard %s: %zu of %zu solve(s) (scene x width); wrote %s (%.1f s)\n",
+                study.name.c_str(), shard.text().c_str(), result.groups.size(), result.groups_in_study, path.c_str(),
+                progress.seconds());
+    if (result.groups.empty())
+      std::printf("  this shard has no solve: the study has %zu, fewer than %u shards\n", result.groups_in_study, shard.count);
+    return 0;
+  }
+  const StudyResult result = run_study(study, report);
+  progress.finish();
+  write_study(result, o.out_dir, progress);
   return 0;
+}
+
+// ---- merge ----------------------------------------------------------------------------------------
+
+bool is_shard_file(const std::filesystem::path& p) {
+  static const std::regex name(R"(shard-[0-9]+-of-[0-9]+\.json)");
+  return std::regex_match(p.filename().string(), name);
+}
+
+// The shard files named, or found in the folders named (in name order, so errors are stable).
+std::vector<std::string> shard_files(const std::vector<std::string>& inputs) {
+  std::vector<std::string> files;
+  for (const std::string& input : inputs) {
+    if (std::filesystem::is_directory(input)) {
+      std::vector<std::string> found;
+      for (const auto& entry : std::filesystem::directory_iterator(input))
+        if (entry.is_regular_file() && is_shard_file(entry.path())) found.push_back(entry.path().string());
+      if (found.empty()) throw std::invalid_argument(input + ": no shard files (shard-I-of-N.json) in this folder");
+      std::sort(found.begin(), found.end());
+      files.insert(files.end(), found.begin(), found.end());
+    } else if (std::filesystem::is_regular_file(input)) {
+      files.push_back(input);
+    } else {
+      throw std::invalid_argument(input + ": no such shard file or folder");
+    }
+  }
+  return files;
+}
+
+int run_merge(const MergeOptions& o) {
+  ProgressLine progress(!o.quiet);
+  const std::vector<std::string> files = shard_files(o.inputs);
+  std::vector<ShardResult> shards;
+  for (const std::string& f : files) shards.push_back(shard_from_json(board::read_json_file(f), f));
+  const StudyResult result = merge_shards(shards, files);
+  std::printf("rc2000sim sweep merge: study %s, %zu shard(s)\n", result.study.name.c_str(), shards.size());
+  write_study(result, o.out_dir, progress);
+  return 0;
+}
+
+void add_merge_command(CLI::App& sweep, int& exit_code) {
+  auto o = std::make_shared<MergeOptions>();
+  CLI::App* cmd = sweep.add_subcommand(
+      "merge", "Put the shards of a study together (shard files, or folders holding them): the same outputs as one "
+               "machine writes");
+  cmd->add_option("inputs", o->inputs, "Shard files (shard-I-of-N.json) or folders holding them")->required();
+  cmd->add_option("--out", o->out_dir, "Output folder for sweep.csv, sweep.json, study.json and the plots")
+      ->capture_default_str();
+  cmd->add_flag("--quiet", o->quiet, "No progress output");
+  cmd->callback([o, &exit_code] { exit_code = run_merge(*o); });
 }
 
 }  // namespace
@@ -230,8 +402,11 @@ int run_sweep(const SweepOptions& o) {
 void add_sweep_command(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<SweepOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "sweep", "What-if study: lanes x banks x width x device x driver for one scene (default: the paper's 280 faces, 1120 "
-      "patches), one CSV row per configuration");
+      "sweep", "Design-space study: lanes x banks x width x device x driver x host x any profile field, for one or "
+               "more scenes (default: the paper's 280 faces, 1120 patches), one CSV row per configuration");
+  cmd->add_option("--study", o->study_file, "Study file (TOML, docs/studies.md); replaces the scene, solver and axis options");
+  cmd->add_option("--shard", o->shard, "Run shard I of N (I/N, from 0) of the study: writes OUT/shard-I-of-N.json for "
+                                       "`sweep merge`");
   add_scene_options(*cmd, o->scene);
   cmd->add_option("--steps", o->steps,
                   "paper (Table 2's count for a paper scene, else converge), converge (steps to --convergence, per "
@@ -249,14 +424,30 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"on", "off", "both"}))->capture_default_str();
   cmd->add_flag("--paper-faithful,!--cull-receivers", o->paper_faithful,
                 "Segments to every other patch, as the paper (default); --cull-receivers: only to patches in front");
-  cmd->add_option("--host", o->host, "Host profile")->capture_default_str();
+  cmd->add_option("--host", o->hosts, "Host profiles (configs/hosts/NAME.json or paths), comma-separated")
+      ->capture_default_str();
   cmd->add_option("--visibility", o->visibility, "Bit-exact backend that answers visibility once per width: fixed or fast")
       ->check(CLI::IsMember({"fixed", "fast"}))->capture_default_str();
-  cmd->add_option("--out", o->out_dir, "Output folder for sweep.csv, sweep.json and the plots")->capture_default_str();
+  cmd->add_option("--out", o->out_dir, "Output folder for sweep.csv, sweep.json, study.json and the plots (with "
+                                       "--shard: for the shard file)")
+      ->capture_default_str();
   cmd->add_flag("--full-banks", o->full_banks,
                 "Model the profile's bank capacity even when smaller banks change nothing (more memory)");
   cmd->add_flag("--quiet", o->quiet, "No progress output");
+  add_merge_command(*cmd, exit_code);
+  cmd->require_subcommand(0, 1);
   cmd->callback([o, cmd, &exit_code] {
+    if (cmd->got_subcommand("merge")) return;  // merge ran its own callback
+    if (!o->study_file.empty()) {
+      for (const char* option : kStudyOptions) {
+        if (cmd->count(option) > 0) {
+          throw std::invalid_argument(std::string(option) + " does not apply with --study: the study file " +
+                                      o->study_file + " sets the scenes, solver and axes (edit it instead)");
+        }
+      }
+      exit_code = run_sweep(*o, load_study_file(o->study_file));
+      return;
+    }
     // A scene file is taken as it is unless refinement is asked for: the paper defaults are for
     // the embedded box.
     if (!o->scene.file.empty()) {
@@ -265,7 +456,7 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
       if (cmd->count("--face-levels") == 0) o->scene.face_levels = plain.face_levels;
       if (cmd->count("--patch-levels") == 0) o->scene.patch_levels = plain.patch_levels;
     }
-    exit_code = run_sweep(*o);
+    exit_code = run_sweep(*o, study_from_options(*o));
   });
 }
 

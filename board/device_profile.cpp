@@ -38,11 +38,13 @@ void read_clock(const ProfileReader& r, DeviceProfile& p) {
 
 }  // namespace
 
-DeviceProfile load_device_profile(const std::string& path) {
+DeviceProfile load_device_profile(const std::string& path) { return device_profile_from_json(read_json_file(path), path); }
+
+DeviceProfile device_profile_from_json(const nlohmann::ordered_json& json, const std::string& origin) {
   DeviceProfile p;
-  p.json = read_json_file(path);
-  p.file = path;
-  const ProfileReader r(p.json, path);
+  p.json = json;
+  p.file = origin;
+  const ProfileReader r(p.json, origin);
   p.name = r.text("name");
   p.part = r.text("fpga.part");
   p.slices = static_cast<int>(r.integer("fpga.slices", 1, 1u << 24));

@@ -51,6 +51,9 @@ struct DeviceProfile {
 
 // Loads and validates a profile; errors name the file and the field ("banks.clock_mhz: missing").
 DeviceProfile load_device_profile(const std::string& path);
+// The same checks on a profile already in memory (a study's profile with settings applied);
+// `origin` names it in errors and becomes its `file`.
+DeviceProfile device_profile_from_json(const nlohmann::ordered_json& json, const std::string& origin);
 // By name (configs/devices/NAME.json) or by path.
 DeviceProfile find_device_profile(const std::string& name_or_path);
 

@@ -25,7 +25,7 @@ const sc_core::sc_time kHostQuantum(100, sc_core::SC_MS);
 }  // namespace
 
 BoardSetup make_board_setup(const BoardRunOptions& o) {
-  const board::DeviceProfile device = board::find_device_profile(o.device);
+  const board::DeviceProfile device = o.device_profile ? *o.device_profile : board::find_device_profile(o.device);
   BoardSetup s;
   s.host = o.host_profile ? *o.host_profile : find_host_profile(o.host);
   board::BoardChoices c;

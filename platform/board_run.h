@@ -37,6 +37,7 @@ namespace rc {
 
 struct BoardRunOptions {
   std::string device = "xc2v6000";      // configs/devices/NAME.json, or a path to a profile
+  std::optional<board::DeviceProfile> device_profile;  // when set, this profile instead of `device` (studies)
   board::LaneCount lanes = 1;           // pipeline instances (1..255, checked when set)
   unsigned banks = 0;                   // 0: the profile's bank count
   pipeline::FracBits bits = 15;         // fractional bits (7..31), checked when set

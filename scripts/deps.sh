@@ -5,10 +5,12 @@ RC_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 RC_BUILD="${RC_BUILD:-$RC_ROOT/build}"
 RC_PACKAGES=(build-essential cmake ninja-build pkg-config libsystemc-dev libglm-dev libgtest-dev
              libbenchmark-dev nlohmann-json3-dev libcli11-dev libpng-dev libembree-dev python3-matplotlib
-             libassimp-dev)
+             libassimp-dev libtomlplusplus-dev)
 
-# Test data only, installed by scripts/test: real models in many formats (tests/scenes/mesh_import_test.cpp).
-RC_TEST_PACKAGES=(assimp-testmodels)
+# Installed by scripts/test only: real models in many formats (tests/scenes/mesh_import_test.cpp), and
+# the cluster engines the sweep scripts drive (scripts/sweep-slurm, scripts/sweep-parallel; their tests
+# in tests/scripts bring up a private single-node Slurm with its own munged).
+RC_TEST_PACKAGES=(assimp-testmodels parallel slurm-wlm munge)
 
 # Installs RC_PACKAGES and any packages given as arguments that are missing.
 rc_install_missing() {

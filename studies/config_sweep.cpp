@@ -104,27 +104,67 @@ StepsChoice parse_steps(const std::string& text) {
 // ---- configurations ---------------------------------------------------------------------------------
 
 std::string SweepConfig::label() const {
-  return device + " " + std::to_string(bits) + "-bit " + (concurrent ? "concurrent " : "serial ") +
-         std::to_string(lanes) + (lanes == 1 ? " lane " : " lanes ") + std::to_string(banks) + " banks";
+  std::string text = device + " " + std::to_string(bits) + "-bit " + (concurrent ? "concurrent " : "serial ") +
+                     std::to_string(lanes) + (lanes == 1 ? " lane " : " lanes ") + std::to_string(banks) + " banks";
+  for (const ProfileSetting& s : settings) text += " " + s.text();
+  return text;
 }
 
-std::vector<SweepConfig> enumerate_configs(const SweepAxes& a) {
-  if (a.devices.empty() || a.bits.empty() || a.concurrent.empty() || a.lanes.empty() || a.banks.empty()) {
-    throw std::invalid_argument("a sweep needs at least one device, width, driver, lane count and bank count");
+std::string software_key(int bits, const std::string& host, const std::vector<ProfileSetting>& settings) {
+  std::string key = std::to_string(bits) + "-bit " + host;
+  for (const ProfileSetting& s : settings)
+    if (s.field.kind == ProfileKind::host) key += " " + s.text();
+  return key;
+}
+
+std::string software_key(const SweepConfig& c) { return software_key(c.bits, c.host, c.settings); }
+
+namespace {
+
+// Every combination of the profile axes' values, the first axis varying slowest.
+std::vector<std::vector<ProfileSetting>> profile_combinations(const std::vector<ProfileAxis>& axes) {
+  std::vector<std::vector<ProfileSetting>> combos = {{}};
+  for (const ProfileAxis& axis : axes) {
+    std::vector<std::vector<ProfileSetting>> next;
+    for (const std::vector<ProfileSetting>& before : combos) {
+      for (const nlohmann::ordered_json& value : axis.values) {
+        next.push_back(before);
+        next.back().push_back({axis.field, value});
+      }
+    }
+    combos = std::move(next);
   }
-  const double count = static_cast<double>(a.devices.size()) * a.bits.size() * a.concurrent.size() * a.lanes.size() *
-                       a.banks.size();
+  return combos;
+}
+
+}  // namespace
+
+std::vector<SweepConfig> enumerate_configs(const SweepAxes& a) {
+  if (a.devices.empty() || a.bits.empty() || a.concurrent.empty() || a.hosts.empty() || a.lanes.empty() ||
+      a.banks.empty()) {
+    throw std::invalid_argument("a sweep needs at least one device, width, driver, host, lane count and bank count");
+  }
+  double count = static_cast<double>(a.devices.size()) * a.bits.size() * a.concurrent.size() * a.hosts.size() *
+                 a.lanes.size() * a.banks.size();
+  for (const ProfileAxis& axis : a.profile) {
+    if (axis.values.empty()) throw std::invalid_argument("profile axis '" + axis.field.path + "' has no values");
+    count *= static_cast<double>(axis.values.size());
+  }
   if (count > kMaxSweepConfigs) {
     throw std::invalid_argument("the sweep spans " + std::to_string(static_cast<long long>(count)) +
                                 " configurations (at most " + std::to_string(kMaxSweepConfigs) + "); narrow the lists");
   }
+  const std::vector<std::vector<ProfileSetting>> combos = profile_combinations(a.profile);
   std::vector<SweepConfig> configs;
   for (const std::string& device : a.devices)
     for (int bits : a.bits)
       for (bool concurrent : a.concurrent)
-        for (int lanes : a.lanes)
-          for (int banks : a.banks)
-            configs.push_back({device, bits, concurrent, static_cast<unsigned>(lanes), static_cast<unsigned>(banks)});
+        for (const std::string& host : a.hosts)
+          for (const std::vector<ProfileSetting>& settings : combos)
+            for (int lanes : a.lanes)
+              for (int banks : a.banks)
+                configs.push_back({device, bits, concurrent, static_cast<unsigned>(lanes), static_cast<unsigned>(banks),
+                                   host, settings});
   return configs;
 }
 
@@ -138,10 +178,13 @@ std::string to_string(Validity v) {
   return "other";
 }
 
-ConfigChecker::ConfigChecker(const std::vector<std::string>& devices, const std::string& host)
-    : resources_(pipeline::ResourceModel::load_default()), host_(host) {
-  (void)find_host_profile(host);  // an unknown host fails here, not as every configuration's reason
-  for (const std::string& d : devices) devices_.emplace(d, board::find_device_profile(d));
+ConfigChecker::ConfigChecker(const std::vector<std::string>& devices, const std::vector<std::string>& hosts,
+                             const std::vector<ProfileSetting>& fixed, const std::string& study)
+    : host_order_(hosts), resources_(pipeline::ResourceModel::load_default()), study_(study) {
+  if (hosts.empty()) throw std::invalid_argument("a sweep needs at least one host profile");
+  // An unknown profile or a rejected fixed setting fails here, not as every configuration's reason.
+  for (const std::string& h : hosts) hosts_.emplace(h, with_settings(find_host_profile(h), fixed, study));
+  for (const std::string& d : devices) devices_.emplace(d, with_settings(board::find_device_profile(d), fixed, study));
 }
 
 const board::DeviceProfile& ConfigChecker::device(const std::string& name) const {
@@ -150,11 +193,22 @@ const board::DeviceProfile& ConfigChecker::device(const std::string& name) const
   return it->second;
 }
 
+board::DeviceProfile ConfigChecker::device(const SweepConfig& c) const {
+  return c.settings.empty() ? device(c.device) : with_settings(device(c.device), c.settings, study_);
+}
+
+HostProfile ConfigChecker::host(const SweepConfig& c) const {
+  const auto it = hosts_.find(c.host.empty() ? first_host() : c.host);
+  if (it == hosts_.end()) throw std::invalid_argument("host '" + c.host + "' was not loaded by the checker");
+  return c.settings.empty() ? it->second : with_settings(it->second, c.settings, study_);
+}
+
 // The two checks of make_board_setup, in its order, so that each rejection gets its kind; then
 // make_board_setup itself, so that "ok" means what a timing case will accept.
 ConfigCheck ConfigChecker::check(const SweepConfig& c) const {
   ConfigCheck out;
-  const board::DeviceProfile& d = device(c.device);
+  const board::DeviceProfile d = device(c);  // a setting the profile rejects throws: a bad study
+  const HostProfile h = host(c);
   try {
     const board::DesignFit fit = board::fit_design(d, resources_, static_cast<int>(c.lanes), c.bits);
     if (!fit.fits) {
@@ -175,7 +229,9 @@ ConfigCheck ConfigChecker::check(const SweepConfig& c) const {
     out.options.banks = c.banks;
     out.options.bits = c.bits;
     out.options.concurrent = c.concurrent;
-    out.options.host = host_;
+    out.options.host = c.host.empty() ? first_host() : c.host;
+    out.options.host_profile = h;
+    out.options.device_profile = d;
     (void)make_board_setup(out.options);
   } catch (const std::invalid_argument& e) {
     out.validity = Validity::other;
@@ -191,9 +247,8 @@ ConfigCheck ConfigChecker::check(const SweepConfig& c) const {
 // W >= 10 F words holds F face records and their own-face table. When the profile's banks satisfy
 // both and a smaller power of two does too, passes, splits, transfers and times are identical with
 // the smaller banks; only the host memory the model allocates (every bank's bytes) shrinks.
-std::uint64_t ConfigChecker::compact_bank_capacity(const SweepConfig& c, std::uint64_t max_rays,
-                                                   std::uint64_t faces) const {
-  const board::DeviceProfile& d = device(c.device);
+std::uint64_t ConfigChecker::compact_bank_capacity(const board::DeviceProfile& d, std::uint64_t max_rays,
+                                                   std::uint64_t faces) {
   const std::uint64_t word_bytes = d.bank_word_bits / 8;
   const std::uint64_t words = std::max<std::uint64_t>({3 * max_rays, 10 * faces, 1});
   if (words * word_bytes > d.bank_capacity_bytes) return 0;  // the profile's banks batch: keep them
@@ -291,19 +346,31 @@ std::string bottleneck(const SweepRow& r) {
   return top == &parts[0] ? fpga_limit_kind(r.fpga_limit) : top->first;
 }
 
-void fill_speedups(std::vector<SweepRow>& rows, const std::map<int, double>& software_seconds) {
-  using Key = std::tuple<std::string, int, bool, unsigned>;
-  std::map<Key, double> one_lane;
+void fill_speedups(std::vector<SweepRow>& rows, const std::map<std::string, double>& software_seconds) {
+  // The same configuration but its lane count (the settings' texts stand for their values).
+  auto base_key = [](const SweepConfig& c) {
+    std::string key = c.device + "|" + std::to_string(c.bits) + "|" + (c.concurrent ? "1" : "0") + "|" +
+                      std::to_string(c.banks) + "|" + c.host;
+    for (const ProfileSetting& s : c.settings) key += "|" + s.text();
+    return key;
+  };
+  std::map<std::string, double> one_lane;
   for (const SweepRow& r : rows)
-    if (r.validity == Validity::ok && r.config.lanes == 1)
-      one_lane[{r.config.device, r.config.bits, r.config.concurrent, r.config.banks}] = r.simulated_seconds;
+    if (r.validity == Validity::ok && r.config.lanes == 1) one_lane[base_key(r.config)] = r.simulated_seconds;
   for (SweepRow& r : rows) {
     if (r.validity != Validity::ok) continue;
-    const auto base = one_lane.find({r.config.device, r.config.bits, r.config.concurrent, r.config.banks});
+    const auto base = one_lane.find(base_key(r.config));
     r.speedup_vs_one_lane = base != one_lane.end() ? ratio(base->second, r.simulated_seconds) : kNaN;
-    const auto sw = software_seconds.find(r.config.bits);
+    const auto sw = software_seconds.find(software_key(r.config));
     r.speedup_vs_software = sw != software_seconds.end() ? ratio(sw->second, r.simulated_seconds) : kNaN;
   }
+}
+
+std::vector<std::string> extra_columns(const SweepAxes& axes) {
+  std::vector<std::string> columns;
+  if (axes.hosts.size() > 1) columns.push_back("host");
+  for (const ProfileAxis& a : axes.profile) columns.push_back(a.field.path);
+  return columns;
 }
 
 // ---- output -----------------------------------------------------------------------------------------
@@ -355,15 +422,30 @@ std::string csv_number(double x) {
 
 nlohmann::ordered_json json_number(double x) { return std::isnan(x) ? nlohmann::ordered_json() : nlohmann::ordered_json(x); }
 
+constexpr std::size_t kConfigColumns = 5;  // device .. concurrent: the extra columns follow them
+
+std::vector<std::string> columns(const std::vector<std::string>& extra) {
+  std::vector<std::string> names(std::begin(kColumns), std::end(kColumns));
+  names.insert(names.begin() + kConfigColumns, extra.begin(), extra.end());
+  return names;
+}
+
+// The value of an extra column: the host, or the setting of the profile axis with that path.
+nlohmann::ordered_json extra_value(const SweepConfig& c, const std::string& column) {
+  if (column == "host") return c.host;
+  for (const ProfileSetting& s : c.settings)
+    if (s.field.path == column) return s.value;
+  throw std::logic_error("sweep column '" + column + "' has no value in " + c.label());
+}
+
 // Every column's value as a JSON value (strings, integers, numbers or null), in column order.
-std::vector<nlohmann::ordered_json> row_values(const SweepRow& r) {
+std::vector<nlohmann::ordered_json> row_values(const SweepRow& r, const std::vector<std::string>& extra) {
   const bool ok = r.validity == Validity::ok;
   const nlohmann::ordered_json none;
-  return {r.config.device,
-          r.config.lanes,
-          r.config.banks,
-          r.config.bits,
-          r.config.concurrent ? 1 : 0,
+  std::vector<nlohmann::ordered_json> values = {r.config.device, r.config.lanes, r.config.banks, r.config.bits,
+                                                r.config.concurrent ? 1 : 0};
+  for (const std::string& column : extra) values.push_back(extra_value(r.config, column));
+  std::vector<nlohmann::ordered_json> rest = {
           ok ? "ok" : "invalid",
           ok ? std::string() : to_string(r.validity),
           r.reason,
@@ -387,6 +469,8 @@ std::vector<nlohmann::ordered_json> row_values(const SweepRow& r) {
           r.bottleneck,
           json_number(r.speedup_vs_one_lane),
           json_number(r.speedup_vs_software)};
+  values.insert(values.end(), rest.begin(), rest.end());
+  return values;
 }
 
 std::string csv_field(const nlohmann::ordered_json& v) {
@@ -398,22 +482,72 @@ std::string csv_field(const nlohmann::ordered_json& v) {
 
 }  // namespace
 
-void write_sweep_csv(std::ostream& out, const std::vector<SweepRow>& rows) {
-  for (std::size_t i = 0; i < std::size(kColumns); ++i) out << (i ? "," : "") << kColumns[i];
+void write_sweep_csv(std::ostream& out, const std::vector<SweepRow>& rows, const std::vector<std::string>& extra) {
+  const std::vector<std::string> names = columns(extra);
+  for (std::size_t i = 0; i < names.size(); ++i) out << (i ? "," : "") << csv_text(names[i]);
   out << "\n";
   for (const SweepRow& r : rows) {
-    const std::vector<nlohmann::ordered_json> values = row_values(r);
+    const std::vector<nlohmann::ordered_json> values = row_values(r, extra);
     for (std::size_t i = 0; i < values.size(); ++i) out << (i ? "," : "") << csv_field(values[i]);
     out << "\n";
   }
 }
 
-nlohmann::ordered_json sweep_row_json(const SweepRow& r) {
-  const std::vector<nlohmann::ordered_json> values = row_values(r);
+nlohmann::ordered_json sweep_row_json(const SweepRow& r, const std::vector<std::string>& extra) {
+  const std::vector<std::string> names = columns(extra);
+  const std::vector<nlohmann::ordered_json> values = row_values(r, extra);
   nlohmann::ordered_json j;
-  for (std::size_t i = 0; i < values.size(); ++i) j[kColumns[i]] = values[i];
+  for (std::size_t i = 0; i < values.size(); ++i) j[names[i]] = values[i];
   j["concurrent"] = r.config.concurrent;  // a JSON boolean; the CSV writes 1 or 0
   return j;
+}
+
+namespace {
+
+double number_from(const nlohmann::ordered_json& j, const char* key) {
+  const nlohmann::ordered_json& v = j.at(key);
+  return v.is_null() ? kNaN : v.get<double>();
+}
+
+Validity validity_from(const std::string& status, const std::string& kind) {
+  if (status == "ok") return Validity::ok;
+  for (Validity v : {Validity::does_not_fit, Validity::too_few_banks, Validity::other})
+    if (kind == to_string(v)) return v;
+  throw std::invalid_argument("sweep row: unknown invalid_kind '" + kind + "'");
+}
+
+}  // namespace
+
+SweepRow sweep_row_from_json(const nlohmann::ordered_json& j, const SweepConfig& config) {
+  SweepRow r;
+  r.config = config;
+  const bool same = j.at("lanes").get<unsigned>() == config.lanes && j.at("banks").get<unsigned>() == config.banks &&
+                    j.at("bits").get<int>() == config.bits && j.at("concurrent").get<bool>() == config.concurrent;
+  if (!same) throw std::invalid_argument("sweep row " + j.dump() + " is not the plan's " + config.label());
+  r.config.device = j.at("device").get<std::string>();  // the profile's name (the plan may hold a path)
+  r.validity = validity_from(j.at("status").get<std::string>(), j.at("invalid_kind").get<std::string>());
+  r.reason = j.at("reason").get<std::string>();
+  r.steps = j.at("steps").get<int>();
+  r.clock_mhz = number_from(j, "clock_mhz");
+  r.nominal_rays_per_cycle = number_from(j, "nominal_rays_per_cycle");
+  r.simulated_seconds = number_from(j, "simulated_seconds");
+  r.fpga_busy_seconds = number_from(j, "fpga_busy_seconds");
+  r.host_compute_seconds = number_from(j, "host_compute_seconds");
+  r.driver_cpu_seconds = number_from(j, "driver_cpu_seconds");
+  r.pci_transfer_seconds = number_from(j, "pci_transfer_seconds");
+  r.waiting_seconds = number_from(j, "waiting_seconds");
+  r.pci_utilisation = number_from(j, "pci_utilisation");
+  r.max_bank_utilisation = number_from(j, "max_bank_utilisation");
+  r.busiest_bank = j.at("busiest_bank").is_null() ? -1 : j.at("busiest_bank").get<int>();
+  r.busiest_bank_role = j.at("busiest_bank_role").get<std::string>();
+  r.mean_lane_utilisation = number_from(j, "mean_lane_utilisation");
+  r.intersections_per_second_while_busy = number_from(j, "intersections_per_second_while_busy");
+  r.fpga_limit = j.at("fpga_limit").get<std::string>();
+  r.fpga_limit_share = number_from(j, "fpga_limit_share");
+  r.bottleneck = j.at("bottleneck").get<std::string>();
+  r.speedup_vs_one_lane = number_from(j, "speedup_vs_one_lane");
+  r.speedup_vs_software = number_from(j, "speedup_vs_software");
+  return r;
 }
 
 }  // namespace rc

@@ -22,6 +22,7 @@
 #include "board/device_profile.h"
 #include "platform/board_run.h"
 #include "pipeline/resource_model.h"
+#include "studies/profile_setting.h"
 
 namespace rc {
 
@@ -53,10 +54,18 @@ StepsChoice parse_steps(const std::string& text);
 
 // ---- configurations ---------------------------------------------------------------------------------
 
+// A profile field swept by its path (profile_setting.h), with its values in the order given.
+struct ProfileAxis {
+  ProfileField field;
+  std::vector<nlohmann::ordered_json> values;
+};
+
 struct SweepAxes {
   std::vector<std::string> devices;  // profile names or paths, in the order given
   std::vector<int> bits;
   std::vector<bool> concurrent;
+  std::vector<std::string> hosts = {"athlon-mp-2600-calibrated"};  // host profiles, in the order given
+  std::vector<ProfileAxis> profile;  // profile fields, in the order given (the first varies slowest)
   std::vector<int> lanes;
   std::vector<int> banks;
 };
@@ -67,14 +76,22 @@ struct SweepConfig {
   bool concurrent = false;
   unsigned lanes = 1;
   unsigned banks = 6;
-  std::string label() const;  // "xc2v6000 15-bit concurrent 2 lanes 6 banks"
+  std::string host;                      // empty: the checker's first host
+  std::vector<ProfileSetting> settings;  // this configuration's value of each profile axis, in axis order
+  // "xc2v6000 15-bit concurrent 2 lanes 6 banks", then each setting ("banks.clock_mhz=133").
+  std::string label() const;
 };
+
+// The software-only time a configuration's speedup is taken against depends on its width, its host
+// profile and the host settings among its profile axes: this names that combination.
+std::string software_key(int bits, const std::string& host, const std::vector<ProfileSetting>& settings);
+std::string software_key(const SweepConfig& config);
 
 // A sweep bigger than this is almost certainly a typo (and would take hours); narrow the lists.
 constexpr std::size_t kMaxSweepConfigs = 20000;
 
-// Device-major, then width, driver (serial first), lanes, banks: one lanes x banks block per device,
-// width and driver. Throws std::invalid_argument for an empty axis or more than kMaxSweepConfigs.
+// Device-major, then width, driver (serial first), host, profile axes, lanes, banks: one lanes x
+// banks block per device, width, driver, host and profile values. Throws std::invalid_argument for an empty axis or more than kMaxSweepConfigs.
 std::vector<SweepConfig> enumerate_configs(const SweepAxes& axes);
 
 enum class Validity {
@@ -89,7 +106,8 @@ struct ConfigCheck {
   Validity validity = Validity::ok;
   std::string reason;      // the exception's message when not ok
   double clock_mhz = 0;    // the design clock when the lanes fit the device (0 when they do not)
-  BoardRunOptions options; // the board to simulate (validity ok)
+  BoardRunOptions options; // the board to simulate (validity ok): its device_profile and host_profile
+                           // are the profiles with the study's settings applied
 };
 
 // Says whether configurations can exist, exactly as make_board_setup (the function every board run
@@ -97,22 +115,37 @@ struct ConfigCheck {
 // the banks must feed them. Profiles are loaded once.
 class ConfigChecker {
  public:
-  // Throws std::invalid_argument for an unknown device or host profile: that is a bad option, not a
-  // configuration that cannot exist.
-  ConfigChecker(const std::vector<std::string>& devices, const std::string& host);
+  // Throws std::invalid_argument for an unknown device or host profile, or a fixed setting the
+  // profiles reject: that is a bad option, not a configuration that cannot exist. `fixed` applies
+  // to every configuration before its own settings; `study` names the study in errors and sources.
+  ConfigChecker(const std::vector<std::string>& devices, const std::vector<std::string>& hosts,
+                const std::vector<ProfileSetting>& fixed = {}, const std::string& study = "command line");
+  ConfigChecker(const std::vector<std::string>& devices, const std::string& host)
+      : ConfigChecker(devices, std::vector<std::string>{host}) {}
 
+  // A setting the profiles reject (a value out of range) is a bad study, not a configuration that
+  // cannot exist: it throws std::invalid_argument.
   ConfigCheck check(const SweepConfig& config) const;
 
   // A bank capacity that changes nothing for a run whose steps have at most `max_rays` segments
   // and whose scene has `faces` faces, or 0 (keep the profile's). See config_sweep.cpp.
-  std::uint64_t compact_bank_capacity(const SweepConfig& config, std::uint64_t max_rays, std::uint64_t faces) const;
+  static std::uint64_t compact_bank_capacity(const board::DeviceProfile& device, std::uint64_t max_rays,
+                                             std::uint64_t faces);
+  std::uint64_t compact_bank_capacity(const SweepConfig& config, std::uint64_t max_rays, std::uint64_t faces) const {
+    return compact_bank_capacity(device(config), max_rays, faces);
+  }
 
-  const board::DeviceProfile& device(const std::string& name) const;
+  const board::DeviceProfile& device(const std::string& name) const;  // as loaded, with the fixed settings
+  board::DeviceProfile device(const SweepConfig& config) const;       // with the configuration's settings too
+  HostProfile host(const SweepConfig& config) const;
+  const std::string& first_host() const { return host_order_.front(); }
 
  private:
   std::map<std::string, board::DeviceProfile> devices_;
+  std::map<std::string, HostProfile> hosts_;
+  std::vector<std::string> host_order_;
   pipeline::ResourceModel resources_;
-  std::string host_;
+  std::string study_;
 };
 
 // ---- results ----------------------------------------------------------------------------------------
@@ -155,12 +188,19 @@ std::string fpga_limit_kind(const std::string& limit);
 // host_compute, host_driver, pci, fpga_lanes, fpga_result_bank, fpga_ray_bank, fpga_other.
 std::string bottleneck(const SweepRow& row);
 
-// speedup_vs_one_lane from the 1-lane rows of the same device, width, driver and banks;
-// speedup_vs_software from software seconds per width (widths missing from the map: NaN).
-void fill_speedups(std::vector<SweepRow>& rows, const std::map<int, double>& software_seconds);
+// speedup_vs_one_lane from the 1-lane rows of the same configuration but lanes; speedup_vs_software
+// from software seconds by software_key (keys missing from the map: NaN).
+void fill_speedups(std::vector<SweepRow>& rows, const std::map<std::string, double>& software_seconds);
+
+// The columns beyond the classic ones that a sweep over `axes` adds: "host" when more than one
+// host is swept, then each profile axis's path. They follow "concurrent".
+std::vector<std::string> extra_columns(const SweepAxes& axes);
 
 // The CSV header and rows (stable column names; numbers with enough digits to round-trip).
-void write_sweep_csv(std::ostream& out, const std::vector<SweepRow>& rows);
-nlohmann::ordered_json sweep_row_json(const SweepRow& row);
+void write_sweep_csv(std::ostream& out, const std::vector<SweepRow>& rows, const std::vector<std::string>& extra = {});
+nlohmann::ordered_json sweep_row_json(const SweepRow& row, const std::vector<std::string>& extra = {});
+// The numbers and texts of a row back from sweep_row_json; the configuration is `config` (the
+// plan's), and the row's own config columns must agree with it (std::invalid_argument otherwise).
+SweepRow sweep_row_from_json(const nlohmann::ordered_json& json, const SweepConfig& config);
 
 }  // namespace rc

@@ -7,6 +7,13 @@ lanes_b<bits>_<driver>.png        simulated time (solid) and FPGA busy time (das
 heatmap_<device>_b<bits>_<driver>.png
                                   simulated time over lanes x banks, bottleneck letter in each cell,
                                   configurations that cannot exist in grey
+axis_<path>.png                   for each swept profile field (and host), the fastest configuration
+                                  (over lanes and banks) against the field's value, one line per
+                                  device, width, driver and the other fields' values; marker: its
+                                  bottleneck
+
+A study's extra axes (docs/studies.md) are the columns between "concurrent" and "status"; each
+combination of their values gets its own lanes and heat-map files, named with the values.
 """
 import csv
 import math
@@ -159,15 +166,82 @@ def heatmap(rows, device, bits, drv, out):
     plt.close(fig)
 
 
+def extra_columns(header):
+    """The study's own axes: the columns between "concurrent" and "status"."""
+    return header[header.index("concurrent") + 1:header.index("status")]
+
+
+def as_number(text):
+    try:
+        return float(text)
+    except ValueError:
+        return None
+
+
+def axis_plot(rows, axis, extras, out):
+    """The fastest configuration over lanes and banks against one swept field's value."""
+    others = [e for e in extras if e != axis]
+    lines = ordered((r["device"], r["bits"], driver(r)) + tuple(r[e] for e in others) for r in rows)
+    values = ordered(r[axis] for r in rows)
+    numeric = all(as_number(v) is not None for v in values)
+    if numeric:
+        values = sorted(values, key=float)
+    position = {v: (float(v) if numeric else i) for i, v in enumerate(values)}
+    fig, ax = plt.subplots(figsize=(7.5, 4.4))
+    used = set()
+    for line in lines:
+        xs, ys, kinds = [], [], []
+        for v in values:
+            ok = [r for r in rows if (r["device"], r["bits"], driver(r)) + tuple(r[e] for e in others) == line
+                  and r[axis] == v and r["status"] == "ok"]
+            if not ok:
+                continue
+            best = min(ok, key=lambda r: float(r["simulated_seconds"]))
+            xs.append(position[v])
+            ys.append(float(best["simulated_seconds"]))
+            kinds.append(best["bottleneck"])
+        if not xs:
+            continue
+        label = f"{line[0]}, {line[1]}-bit, {line[2]}" + "".join(f", {e}={v}" for e, v in zip(others, line[3:]))
+        style = ["-", "--", ":", "-."][len(ax.get_lines()) % 4]  # lines that coincide stay visible
+        (handle,) = ax.plot(xs, ys, style, lw=1.2, label=label)
+        for x, y, kind in zip(xs, ys, kinds):
+            used.add(kind)
+            ax.plot(x, y, BOTTLENECKS.get(kind, ("?", "*", kind))[1], color=handle.get_color(), ms=6, mec="k", mew=0.4)
+    if not numeric:
+        ax.set_xticks(range(len(values)))
+        ax.set_xticklabels(values)
+    ax.set_xlabel(axis)
+    ax.set_ylabel("fastest simulated seconds (over lanes and banks)")
+    ax.set_ylim(bottom=0)
+    ax.grid(True, lw=0.3)
+    handles, _ = ax.get_legend_handles_labels()
+    handles += [Line2D([], [], ls="", marker=BOTTLENECKS[k][1], color="w", mec="k", label=BOTTLENECKS[k][2])
+                for k in BOTTLENECKS if k in used]
+    ax.legend(handles=handles, fontsize=7)
+    ax.set_title(f"The fastest configuration against {axis}; marker: its bottleneck", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, f"axis_{slug(axis)}.png"), dpi=110)
+    plt.close(fig)
+
+
 def main(csv_path, out):
-    rows = list(csv.DictReader(open(csv_path)))
+    with open(csv_path) as f:
+        reader = csv.DictReader(f)
+        rows = list(reader)
+        extras = extra_columns(reader.fieldnames)
     for bits in ordered(r["bits"] for r in rows):
         for drv in ordered(driver(r) for r in rows):
-            block = [r for r in rows if r["bits"] == bits and driver(r) == drv]
-            if any(r["status"] == "ok" for r in block):
-                lanes_plot(block, bits, drv, out)
-            for device in ordered(r["device"] for r in block):
-                heatmap([r for r in block if r["device"] == device], device, bits, drv, out)
+            for values in ordered(tuple(r[e] for e in extras) for r in rows):
+                block = [r for r in rows if r["bits"] == bits and driver(r) == drv
+                         and tuple(r[e] for e in extras) == values]
+                name = drv + "".join(f"_{slug(e)}={slug(v)}" for e, v in zip(extras, values))
+                if any(r["status"] == "ok" for r in block):
+                    lanes_plot(block, bits, name, out)
+                for device in ordered(r["device"] for r in block):
+                    heatmap([r for r in block if r["device"] == device], device, bits, name, out)
+    for axis in extras:
+        axis_plot(rows, axis, extras, out)
 
 
 if __name__ == "__main__":

@@ -92,7 +92,13 @@ TEST(ConfigSweep, RefusesEmptyAxesAndRunawaySweeps) {
 // ---- validity ---------------------------------------------------------------------------------------
 
 SweepConfig config(const std::string& device, unsigned lanes, unsigned banks, int bits = 15) {
-  return {device, bits, true, lanes, banks};
+  SweepConfig c;
+  c.device = device;
+  c.bits = bits;
+  c.concurrent = true;
+  c.lanes = lanes;
+  c.banks = banks;
+  return c;
 }
 
 TEST(ConfigSweep, TheRc2000ConfigurationsThePaperBuiltAreValid) {
@@ -254,7 +260,7 @@ TEST(ConfigSweep, SpeedupsAndCsvAreStable) {
   rows.push_back(row_from_report(config("xc2v6000", 2, 6), synthetic_report(3.0, 2.0), 10));
   rows.push_back(row_from_report(config("xc2v6000", 2, 7), synthetic_report(3.0, 2.0), 10));  // no 1-lane row at 7 banks
   rows.push_back(invalid_row(config("xc2v6000", 12, 6), checker.check(config("xc2v6000", 12, 6)), 10));
-  fill_speedups(rows, {{15, 19.0}});
+  fill_speedups(rows, {{software_key(rows[0].config), 19.0}});
   EXPECT_DOUBLE_EQ(rows[0].speedup_vs_one_lane, 1.0);
   EXPECT_DOUBLE_EQ(rows[1].speedup_vs_one_lane, 9.5 / 6.5);
   EXPECT_TRUE(std::isnan(rows[2].speedup_vs_one_lane));

@@ -1,0 +1,182 @@
+#include "studies/study.h"
+
+#include <filesystem>
+#include <set>
+#include <stdexcept>
+
+#include "rc_version.h"
+#include "studies/paper_workload.h"
+
+namespace rc {
+
+namespace {
+
+std::string where(const Study& s) { return "study " + (s.file.empty() ? s.name : s.file); }
+
+// Every value of every profile axis, on every device and host swept, through the profile's own
+// loader (with the fixed settings), so a bad value fails before any work with its path named.
+void check_profile_values(const Study& s) {
+  const std::string study = s.file.empty() ? s.name : s.file;
+  for (const std::string& d : s.axes.devices) {
+    const board::DeviceProfile base = with_settings(board::find_device_profile(d), s.fixed, study);
+    for (const ProfileAxis& a : s.axes.profile) {
+      if (a.field.kind != ProfileKind::device) continue;
+      for (const nlohmann::ordered_json& v : a.values) (void)with_settings(base, {{a.field, v}}, study);
+    }
+  }
+  for (const std::string& h : s.axes.hosts) {
+    const HostProfile base = with_settings(find_host_profile(h), s.fixed, study);
+    for (const ProfileAxis& a : s.axes.profile) {
+      if (a.field.kind != ProfileKind::host) continue;
+      for (const nlohmann::ordered_json& v : a.values) (void)with_settings(base, {{a.field, v}}, study);
+    }
+  }
+}
+
+nlohmann::ordered_json scene_json(const StudyScene& s) {
+  return {{"name", s.name},
+          {"file", s.options.file},
+          {"faces", s.options.face_target},
+          {"face_levels", s.options.face_levels},
+          {"patch_levels", s.options.patch_levels},
+          {"patch_size", s.options.patch_size}};
+}
+
+StudyScene scene_from_json(const nlohmann::ordered_json& j) {
+  StudyScene s;
+  s.name = j.at("name").get<std::string>();
+  s.options.file = j.at("file").get<std::string>();
+  s.options.face_target = j.at("faces").get<int>();
+  s.options.face_levels = j.at("face_levels").get<int>();
+  s.options.patch_levels = j.at("patch_levels").get<int>();
+  s.options.patch_size = j.at("patch_size").get<double>();
+  return s;
+}
+
+nlohmann::ordered_json setting_json(const ProfileSetting& s) { return {{"path", s.field.path}, {"value", s.value}}; }
+
+}  // namespace
+
+ProfileField resolve_study_field(const std::string& path, const std::vector<std::string>& devices,
+                                 const std::vector<std::string>& hosts) {
+  if (devices.empty() || hosts.empty()) throw std::invalid_argument("profile path '" + path + "': no profile to resolve it in");
+  const board::DeviceProfile d = board::find_device_profile(devices.front());
+  const HostProfile h = find_host_profile(hosts.front());
+  return resolve_profile_field(path, d.json, d.file, h.json, h.file);
+}
+
+std::string default_scene_name(const SceneOptions& o) {
+  if (!o.file.empty()) return std::filesystem::path(o.file).stem().string();
+  for (const PaperRow& row : load_paper_table(default_paper_table_path())) {
+    try {
+      const SceneOptions p = paper_scene_options(row.faces, row.patches);
+      if (p.face_target == o.face_target && p.face_levels == o.face_levels && p.patch_levels == o.patch_levels &&
+          o.patch_size == 0)
+        return "paper-" + std::to_string(row.faces) + "-" + std::to_string(row.patches);
+    } catch (const std::invalid_argument&) {
+    }
+  }
+  return "cornell-box";
+}
+
+void check_study(const Study& s) {
+  if (s.scenes.empty()) throw std::invalid_argument(where(s) + ": no scenes");
+  std::set<std::string> names;
+  for (const StudyScene& scene : s.scenes) {
+    if (scene.name.empty() || scene.name.find_first_of("/\\") != std::string::npos || scene.name == "." ||
+        scene.name == "..")
+      throw std::invalid_argument(where(s) + ": scene name '" + scene.name + "' cannot name a folder");
+    if (!names.insert(scene.name).second) {
+      throw std::invalid_argument(where(s) + ": two scenes are named '" + scene.name +
+                                  "'; give each a distinct name (scenes.name)");
+    }
+  }
+  try {
+    (void)parse_steps(s.steps);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(where(s) + ": solver.steps: " + e.what());
+  }
+  if (s.visibility != "fixed" && s.visibility != "fast")
+    throw std::invalid_argument(where(s) + ": solver.visibility: expected fixed or fast, got '" + s.visibility + "'");
+  if (!(s.convergence > 0 && s.convergence < 1))
+    throw std::invalid_argument(where(s) + ": solver.convergence: must lie strictly between 0 and 1");
+  std::set<std::string> paths;
+  for (const ProfileAxis& a : s.axes.profile) {
+    if (!paths.insert(a.field.field + to_string(a.field.kind)).second)
+      throw std::invalid_argument(where(s) + ": the profile field " + a.field.path + " is swept twice");
+    for (const ProfileSetting& f : s.fixed)
+      if (f.field.field == a.field.field && f.field.kind == a.field.kind)
+        throw std::invalid_argument(where(s) + ": " + a.field.path + " is both an axis and fixed");
+  }
+  (void)enumerate_configs(s.axes);  // empty axes and oversized sweeps
+  check_profile_values(s);
+}
+
+nlohmann::ordered_json study_json(const Study& s) {
+  nlohmann::ordered_json j;
+  j["schema"] = "rc2000sim.study/1";
+  j["name"] = s.name;
+  j["description"] = s.description;
+  j["file"] = s.file;
+  nlohmann::ordered_json scenes = nlohmann::ordered_json::array();
+  for (const StudyScene& scene : s.scenes) scenes.push_back(scene_json(scene));
+  j["scenes"] = scenes;
+  j["solver"] = {{"steps", s.steps},
+                 {"convergence", s.convergence},
+                 {"paper_faithful", s.paper_faithful},
+                 {"visibility", s.visibility},
+                 {"full_banks", s.full_banks}};
+  nlohmann::ordered_json profile = nlohmann::ordered_json::array();
+  for (const ProfileAxis& a : s.axes.profile) profile.push_back({{"path", a.field.path}, {"values", a.values}});
+  nlohmann::ordered_json concurrent = nlohmann::ordered_json::array();
+  for (bool c : s.axes.concurrent) concurrent.push_back(c);
+  j["axes"] = {{"devices", s.axes.devices}, {"bits", s.axes.bits},   {"concurrent", concurrent},
+               {"hosts", s.axes.hosts},     {"profile", profile},    {"lanes", s.axes.lanes},
+               {"banks", s.axes.banks}};
+  nlohmann::ordered_json fixed = nlohmann::ordered_json::array();
+  for (const ProfileSetting& f : s.fixed) fixed.push_back(setting_json(f));
+  j["fixed"] = fixed;
+  return j;
+}
+
+Study study_from_json(const nlohmann::ordered_json& j) {
+  if (j.value("schema", "") != "rc2000sim.study/1")
+    throw std::invalid_argument("not a resolved study (schema rc2000sim.study/1)");
+  Study s;
+  try {
+    s.name = j.at("name").get<std::string>();
+    s.description = j.at("description").get<std::string>();
+    s.file = j.at("file").get<std::string>();
+    for (const auto& scene : j.at("scenes")) s.scenes.push_back(scene_from_json(scene));
+    const auto& solver = j.at("solver");
+    s.steps = solver.at("steps").get<std::string>();
+    s.convergence = solver.at("convergence").get<double>();
+    s.paper_faithful = solver.at("paper_faithful").get<bool>();
+    s.visibility = solver.at("visibility").get<std::string>();
+    s.full_banks = solver.at("full_banks").get<bool>();
+    const auto& axes = j.at("axes");
+    s.axes.devices = axes.at("devices").get<std::vector<std::string>>();
+    s.axes.bits = axes.at("bits").get<std::vector<int>>();
+    s.axes.concurrent = axes.at("concurrent").get<std::vector<bool>>();
+    s.axes.hosts = axes.at("hosts").get<std::vector<std::string>>();
+    s.axes.lanes = axes.at("lanes").get<std::vector<int>>();
+    s.axes.banks = axes.at("banks").get<std::vector<int>>();
+    for (const auto& a : axes.at("profile")) {
+      ProfileAxis axis{resolve_study_field(a.at("path").get<std::string>(), s.axes.devices, s.axes.hosts), {}};
+      for (const auto& v : a.at("values")) axis.values.push_back(v);
+      s.axes.profile.push_back(axis);
+    }
+    for (const auto& f : j.at("fixed")) {
+      s.fixed.push_back({resolve_study_field(f.at("path").get<std::string>(), s.axes.devices, s.axes.hosts),
+                         f.at("value")});
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw std::invalid_argument(std::string("resolved study: ") + e.what());
+  }
+  check_study(s);
+  return s;
+}
+
+std::string tool_version() { return std::string("rc2000sim ") + RC_VERSION + " (" + RC_GIT_COMMIT + ")"; }
+
+}  // namespace rc

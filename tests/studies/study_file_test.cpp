@@ -1,0 +1,146 @@
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "studies/study_file.h"
+
+namespace rc {
+namespace {
+
+const std::string kSource = RC_SOURCE_DIR;
+
+Study parse(const std::string& text) { return parse_study_text(text, kSource + "/tests/studies/data/inline.toml"); }
+
+// The error of parsing `text`, or "" when it parses.
+std::string error_of(const std::string& text) {
+  try {
+    (void)parse(text);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(StudyFile, TheDefaultStudyFileIsWhatSweepRunsWithoutOptions) {
+  const Study file = load_study_file(kSource + "/configs/studies/default.toml");
+  nlohmann::ordered_json a = study_json(file), b = study_json(default_study());
+  for (const char* key : {"description", "file"}) a.erase(key), b.erase(key);
+  EXPECT_EQ(a.dump(2), b.dump(2));
+  ASSERT_EQ(file.scenes.size(), 1u);
+  EXPECT_EQ(file.scenes[0].name, "paper-280-1120");
+}
+
+TEST(StudyFile, ProfileFieldsAreAxesByPathInTheFileOrder) {
+  const Study s = parse(R"(
+[axes]
+devices = ["xc2v6000"]
+"pci.clock_mhz" = [33.333, 66.667]
+banks.clock_mhz = { from = 100, to = 200, step = 50 }
+host.segment_pack = [1e-7]
+"host.driver_model.transfer" = ["dma", "pio"]
+pipeline = { latency_cycles = { from = 30, to = 31 } }
+[fixed]
+"device.wrapper.face_setup_cycles" = 2
+)");
+  ASSERT_EQ(s.axes.profile.size(), 5u);
+  const ProfileAxis& pci = s.axes.profile[0];
+  EXPECT_EQ(pci.field.field, "pci.clock_mhz");
+  EXPECT_EQ(pci.field.kind, ProfileKind::device);
+  const ProfileAxis& banks = s.axes.profile[1];
+  EXPECT_EQ(banks.field.path, "banks.clock_mhz");
+  EXPECT_EQ(banks.values, (std::vector<nlohmann::ordered_json>{100, 150, 200}));
+  EXPECT_TRUE(banks.values[0].is_number_integer());  // a whole range stays whole
+  const ProfileAxis& pack = s.axes.profile[2];
+  EXPECT_EQ(pack.field.kind, ProfileKind::host);
+  EXPECT_EQ(pack.field.field, "driver_seconds.segment_pack");  // the leaf name is unique
+  EXPECT_EQ(s.axes.profile[3].field.field, "driver_model.transfer");
+  EXPECT_FALSE(s.axes.profile[3].field.numeric);
+  EXPECT_EQ(s.axes.profile[4].values, (std::vector<nlohmann::ordered_json>{30, 31}));
+  ASSERT_EQ(s.fixed.size(), 1u);
+  EXPECT_EQ(s.fixed[0].field.field, "wrapper.face_setup_cycles");
+  // The resolved record reads back to the same study.
+  EXPECT_EQ(study_json(study_from_json(study_json(s))).dump(), study_json(s).dump());
+}
+
+TEST(StudyFile, ClassicAxesTakeListsRangesAndTheCommandLineSpelling) {
+  const Study s = parse(R"(
+name = "spelled"
+[[scenes]]
+file = "../../../scenes/examples/two-rooms.scene"
+patch_levels = 1
+[solver]
+steps = 12
+[axes]
+devices = "xc2v6000, virtex4-sx55"
+bits = [19, 15, 19]
+lanes = "1-3,8"
+banks = { from = 6, to = 12, step = 3 }
+concurrent = "both"
+)");
+  EXPECT_EQ(s.name, "spelled");
+  EXPECT_EQ(s.steps, "12");
+  EXPECT_EQ(s.axes.devices, (std::vector<std::string>{"xc2v6000", "virtex4-sx55"}));
+  EXPECT_EQ(s.axes.bits, (std::vector<int>{15, 19}));  // ascending and distinct, as on the command line
+  EXPECT_EQ(s.axes.lanes, (std::vector<int>{1, 2, 3, 8}));
+  EXPECT_EQ(s.axes.banks, (std::vector<int>{6, 9, 12}));
+  EXPECT_EQ(s.axes.concurrent, (std::vector<bool>{false, true}));
+  ASSERT_EQ(s.scenes.size(), 1u);
+  EXPECT_EQ(s.scenes[0].options.file, kSource + "/scenes/examples/two-rooms.scene");  // relative to the study file
+  EXPECT_EQ(s.scenes[0].name, "two-rooms");
+}
+
+TEST(StudyFile, BadStudiesNameTheFileTheLineTheKeyAndTheLimit) {
+  struct Case {
+    const char* text;
+    std::vector<const char*> expected;
+  };
+  const Case cases[] = {
+      {"[axes]\n\"banks.clok_mhz\" = [1]\n", {"inline.toml:2", "banks.clok_mhz", "no sourced field", "banks.clock_mhz"}},
+      {"[axes]\nclock_mhz = [1]\n", {"inline.toml:2", "names several fields", "pci.clock_mhz"}},
+      {"[axes]\nbanks.clock_mhz = [0]\n", {"banks.clock_mhz=0", "banks.clock_mhz", "outside"}},
+      {"[axes]\nbanks.clock_mhz = [\"fast\"]\n", {"inline.toml:2", "expected a number"}},
+      {"[axes]\n\"host.transfer\" = [\"usb\"]\n", {"host.transfer=usb", "not one of dma, pio"}},
+      {"[axes]\n\"host.transfer\" = [3]\n", {"inline.toml:2", "expected a name"}},
+      {"[axes]\nlanes = \"0-3\"\n", {"inline.toml:2", "axes.lanes", "1..255"}},
+      {"[axes]\nbits = [40]\n", {"inline.toml:2", "axes.bits", "7..31"}},
+      {"[axes]\nlanes = []\n", {"inline.toml:2", "empty list"}},
+      {"[axes]\nconcurrent = \"maybe\"\n", {"inline.toml:2", "axes.concurrent", "on, off or both"}},
+      {"[axes]\ndevices = [\"no-such-device\"]\n", {"no devices profile 'no-such-device'"}},
+      {"[axes]\nhosts = [\"no-such-host\"]\n", {"no hosts profile 'no-such-host'"}},
+      {"[axes]\nbanks.clock_mhz = { from = 200, to = 100 }\n", {"inline.toml:2", "below from"}},
+      {"[axes]\nbanks.clock_mhz = { from = 1, to = 1e9, step = 1 }\n", {"at most 10000"}},
+      {"[axes]\n\"banks.clock_mhz\" = [100]\n[fixed]\n\"banks.clock_mhz\" = 90\n", {"both an axis and fixed"}},
+      {"[solver]\nsteps = 0\n", {"inline.toml:2", "solver.steps", "1..10000000"}},
+      {"[solver]\nsteps = \"often\"\n", {"inline.toml:2", "solver.steps"}},
+      {"[solver]\nconvergence = 1.5\n", {"inline.toml:2", "strictly between 0 and 1"}},
+      {"[solver]\nvisibility = \"exact\"\n", {"inline.toml:2", "fixed or fast"}},
+      {"[solver]\nspeed = 3\n", {"inline.toml:2", "solver.speed", "unknown key"}},
+      {"colour = 3\n", {"inline.toml:1", "colour", "unknown key"}},
+      {"[[scenes]]\npaper = { faces = 280, patches = 1000 }\n", {"inline.toml:2", "no paper-like scene"}},
+      {"[[scenes]]\npaper = { faces = 70, patches = 280 }\nfaces = 70\n", {"does not apply to a paper scene"}},
+      {"[[scenes]]\npaper = { faces = 70, patches = 280 }\n[[scenes]]\npaper = { faces = 70, patches = 280 }\n",
+       {"two scenes are named 'paper-70-280'"}},
+      {"[[scenes]]\nname = \"../x\"\n", {"cannot name a folder"}},
+      {"[axes]\nlanes = \"1-255\"\nbanks = \"1-255\"\n", {"configurations (at most 20000)"}},
+      {"[axes\n", {"inline.toml:1", "not valid TOML"}},
+  };
+  for (const Case& c : cases) {
+    const std::string e = error_of(c.text);
+    ASSERT_FALSE(e.empty()) << "accepted:\n" << c.text;
+    for (const char* part : c.expected) EXPECT_NE(e.find(part), std::string::npos) << "'" << part << "' not in: " << e;
+  }
+}
+
+TEST(StudyFile, FilesThatAreNotStudiesAreRefusedBeforeReading) {
+  EXPECT_THROW(load_study_file("/no/such/study.toml"), std::invalid_argument);
+  try {
+    load_study_file("/dev/zero");  // not a regular file: never read
+    ADD_FAILURE();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("/dev/zero"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace rc

@@ -87,7 +87,7 @@ const char* const kStudyOptions[] = {"--scene", "--faces", "--face-levels", "--p
 Study study_from_options(const SweepOptions& o) {
   Study s = default_study();
   s.name = "command-line";
-  s.scenes = {{default_scene_name(o.scene), o.scene}};
+  s.scenes = {{default_scene_name(o.scene), o.scene, o.scene.file}};
   s.steps = o.steps;
   s.convergence = o.convergence;
   s.paper_faithful = o.paper_faithful;
@@ -177,7 +177,7 @@ struct SweptFit {
 };
 
 std::vector<SweptFit> swept_fits(const Study& s) {
-  const std::string study = s.file.empty() ? s.name : s.file;
+  const std::string study = s.name;  // as run_study_shard names it
   const HostProfile host = with_settings(find_host_profile(s.axes.hosts.front()), s.fixed, study);
   std::vector<SweptFit> fits;
   for (const std::string& device : s.axes.devices) {

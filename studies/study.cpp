@@ -1,6 +1,9 @@
 #include "studies/study.h"
 
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <set>
 #include <stdexcept>
 
@@ -33,9 +36,64 @@ void check_profile_values(const Study& s) {
   }
 }
 
+// ---- settings that would change nothing --------------------------------------------------------
+// A setting the model never reads in this study is an error, not a silent no-op: the sweep would
+// print identical rows for every value and look like a finding.
+
+// The names a host driver_model choice takes in this study: its values swept or fixed, else each
+// host profile's own.
+std::set<std::string> driver_choices(const Study& s, const std::string& choice) {
+  std::set<std::string> values;
+  const std::string field = "driver_model." + choice;
+  for (const ProfileAxis& a : s.axes.profile)
+    if (a.field.kind == ProfileKind::host && a.field.field == field)
+      for (const auto& v : a.values) values.insert(v.get<std::string>());
+  for (const ProfileSetting& f : s.fixed)
+    if (f.field.kind == ProfileKind::host && f.field.field == field) values = {f.value.get<std::string>()};
+  if (!values.empty()) return values;
+  for (const std::string& h : s.axes.hosts) values.insert(find_host_profile(h).json["driver_model"][choice]["value"].get<std::string>());
+  return values;
+}
+
+// Why a profile field is never read in this study, or "" when it is.
+std::string unused_because(const Study& s, const ProfileField& f) {
+  const auto starts = [&](const char* prefix) { return f.field.rfind(prefix, 0) == 0; };
+  if (f.kind == ProfileKind::device) {
+    if (f.field == "banks.count") return "a sweep sets the bank count of every configuration: use the banks axis";
+    if (starts("clock.mhz_by_lanes.")) {
+      const int lanes = std::atoi(f.field.c_str() + std::string("clock.mhz_by_lanes.").size());
+      if (std::find(s.axes.lanes.begin(), s.axes.lanes.end(), lanes) == s.axes.lanes.end())
+        return "the study sweeps no configuration with " + std::to_string(lanes) + " lane(s)";
+    }
+    return "";
+  }
+  static const std::map<std::string, std::string> per_unit = {
+      {"driver_seconds.segment_pack", "per_segment"},      {"driver_seconds.result_unpack", "per_segment"},
+      {"driver_seconds.face_pack", "per_segment"},         {"driver_seconds.coordinate_convert", "per_word"},
+      {"driver_seconds.word_store", "per_word"},           {"driver_seconds.word_load", "per_word"}};
+  const auto unit = per_unit.find(f.field);
+  if (unit != per_unit.end() && driver_choices(s, "cost_unit").count(unit->second) == 0) {
+    return "the driver model charges it only with cost unit " + unit->second +
+           ", which no configuration of this study has (sweep or fix host.driver_model.cost_unit)";
+  }
+  if (f.field == "driver_model.pio_read_round_trip_seconds" && driver_choices(s, "transfer").count("pio") == 0)
+    return "only programmed I/O reads wait for it, and no configuration transfers by pio (host.driver_model.transfer)";
+  return "";
+}
+
+void check_settings_apply(const Study& s) {
+  std::vector<const ProfileField*> fields;
+  for (const ProfileAxis& a : s.axes.profile) fields.push_back(&a.field);
+  for (const ProfileSetting& f : s.fixed) fields.push_back(&f.field);
+  for (const ProfileField* f : fields) {
+    const std::string why = unused_because(s, *f);
+    if (!why.empty()) throw std::invalid_argument(where(s) + ": " + f->path + " changes nothing here: " + why);
+  }
+}
+
 nlohmann::ordered_json scene_json(const StudyScene& s) {
   return {{"name", s.name},
-          {"file", s.options.file},
+          {"file", s.source},
           {"faces", s.options.face_target},
           {"face_levels", s.options.face_levels},
           {"patch_levels", s.options.patch_levels},
@@ -45,7 +103,8 @@ nlohmann::ordered_json scene_json(const StudyScene& s) {
 StudyScene scene_from_json(const nlohmann::ordered_json& j) {
   StudyScene s;
   s.name = j.at("name").get<std::string>();
-  s.options.file = j.at("file").get<std::string>();
+  s.source = j.at("file").get<std::string>();
+  s.options.file = s.source;  // a recorded study is merged, not solved: nothing loads it
   s.options.face_target = j.at("faces").get<int>();
   s.options.face_levels = j.at("face_levels").get<int>();
   s.options.patch_levels = j.at("patch_levels").get<int>();
@@ -110,6 +169,7 @@ void check_study(const Study& s) {
   }
   (void)enumerate_configs(s.axes);  // empty axes and oversized sweeps
   check_profile_values(s);
+  check_settings_apply(s);
 }
 
 nlohmann::ordered_json study_json(const Study& s) {
@@ -117,7 +177,7 @@ nlohmann::ordered_json study_json(const Study& s) {
   j["schema"] = "rc2000sim.study/1";
   j["name"] = s.name;
   j["description"] = s.description;
-  j["file"] = s.file;
+  j["file"] = std::filesystem::path(s.file).filename().string();  // where it lay is not part of the study
   nlohmann::ordered_json scenes = nlohmann::ordered_json::array();
   for (const StudyScene& scene : s.scenes) scenes.push_back(scene_json(scene));
   j["scenes"] = scenes;

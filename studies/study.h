@@ -18,13 +18,16 @@ namespace rc {
 
 struct StudyScene {
   std::string name;      // the scene's output folder when the study has several scenes
-  SceneOptions options;  // how it is made (prepare_scene)
+  SceneOptions options;  // how it is made (prepare_scene); options.file is resolved for this machine
+  // The scene file as the study wrote it (relative to the study file) or the command line gave it;
+  // empty for the embedded box. Outputs record this, so they do not depend on where a shard ran.
+  std::string source;
 };
 
 struct Study {
   std::string name = "command-line";
   std::string description;
-  std::string file;  // the study file; empty for a command line
+  std::string file;  // the study file as given; empty for a command line (recorded by its name only)
   std::vector<StudyScene> scenes;
   std::string steps = "paper";  // parse_steps: "paper", "converge" or a count
   double convergence = SolverOptions{}.convergence;

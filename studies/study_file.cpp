@@ -192,7 +192,10 @@ StudyScene read_scene(const Reader& r, const toml::table& t, const std::string& 
       r.fail(*paper, key + ".paper", e.what());
     }
   } else {
-    if (const toml::node* f = t.get("file")) s.options.file = relative_to(r.file(), r.text(*f, key + ".file"));
+    if (const toml::node* f = t.get("file")) {
+      s.source = r.text(*f, key + ".file");
+      s.options.file = relative_to(r.file(), s.source);
+    }
     if (const toml::node* n = t.get("faces")) s.options.face_target = r.integer(*n, key + ".faces", 0, 1 << 24);
     if (const toml::node* n = t.get("face_levels")) s.options.face_levels = r.integer(*n, key + ".face_levels", 0, 8);
     if (const toml::node* n = t.get("patch_levels")) s.options.patch_levels = r.integer(*n, key + ".patch_levels", 0, 8);
@@ -341,7 +344,7 @@ const toml::table& table_at(const Reader& r, const toml::table& root, const char
 Study default_study() {
   Study s;
   s.name = "default";
-  s.scenes = {{"", paper_scene_options(280, 1120)}};
+  s.scenes = {{"", paper_scene_options(280, 1120), ""}};
   s.scenes.front().name = default_scene_name(s.scenes.front().options);
   s.axes.devices = {"xc2v6000", "virtex4-sx55", "spartan3-5000"};
   s.axes.bits = {15};

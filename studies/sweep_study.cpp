@@ -202,11 +202,12 @@ GroupResult collect(const std::vector<Planned>& plan, const ConfigChecker& check
 }
 
 SceneSummary summary(const StudyScene& s, const Scene& scene) {
-  return {scene.name, s.options.file.empty() ? "embedded:cornell-box" : s.options.file, scene.faces.size(),
-          scene.patches.size()};
+  return {scene.name, s.source.empty() ? "embedded:cornell-box" : s.source, scene.faces.size(), scene.patches.size()};
 }
 
-std::string study_name(const Study& s) { return s.file.empty() ? s.name : s.file; }
+// The study's name, not its path: profile sources written by the settings reach outputs, and where the
+// study file lay must not change them.
+std::string study_name(const Study& s) { return s.name; }
 
 }  // namespace
 

@@ -124,6 +124,12 @@ TEST(StudyFile, BadStudiesNameTheFileTheLineTheKeyAndTheLimit) {
       {"[[scenes]]\nname = \"../x\"\n", {"cannot name a folder"}},
       {"[axes]\nlanes = \"1-255\"\nbanks = \"1-255\"\n", {"configurations (at most 20000)"}},
       {"[axes\n", {"inline.toml:1", "not valid TOML"}},
+      {"[axes]\nbanks = [6]\nbanks.clock_mhz = [1]\n", {"inline.toml:3", "not valid TOML", "must be quoted"}},
+      {"[axes]\n\"banks.count\" = [6, 8]\n", {"banks.count changes nothing", "use the banks axis"}},
+      {"[axes]\ndevices = [\"xc2v6000\"]\nlanes = [1]\n\"clock.mhz_by_lanes.2\" = [50]\n", {"no configuration with 2 lane(s)"}},
+      {"[axes]\n\"host.word_store\" = [1e-9]\n", {"host.word_store changes nothing", "per_word"}},
+      {"[fixed]\n\"host.driver_model.transfer\" = \"dma\"\n\"host.pio_read_round_trip_seconds\" = 1e-6\n",
+       {"changes nothing", "programmed I/O"}},
   };
   for (const Case& c : cases) {
     const std::string e = error_of(c.text);

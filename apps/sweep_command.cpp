@@ -70,6 +70,7 @@ struct SweepOptions {
   std::string visibility = "fast";
   bool full_banks = false;
   bool quiet = false;
+  bool list_fields = false;
   std::string out_dir = "out/sweep";
 };
 
@@ -347,6 +348,34 @@ int run_sweep(const SweepOptions& o, const Study& study) {
   return 0;
 }
 
+// ---- --list-fields --------------------------------------------------------------------------------
+
+void list_fields(const std::string& title, const std::string& prefix, const nlohmann::ordered_json& profile) {
+  std::printf("%s\n", title.c_str());
+  for (const std::string& f : sourced_fields(profile)) {
+    const nlohmann::ordered_json* node = &profile;
+    for (std::size_t from = 0, dot = 0; dot != std::string::npos; from = dot + 1) {
+      dot = f.find('.', from);
+      node = &(*node)[f.substr(from, dot == std::string::npos ? std::string::npos : dot - from)];
+    }
+    std::printf("  %-48s %s\n", (prefix + f).c_str(), (*node)["value"].dump().c_str());
+  }
+}
+
+// Every field a study can sweep or fix, with its value in each profile (a path's home in one step).
+int run_list_fields(const Study& s) {
+  for (const std::string& d : s.axes.devices) {
+    const board::DeviceProfile p = board::find_device_profile(d);
+    list_fields("device profile " + p.file + " (paths as written in [axes] or [fixed]):", "", p.json);
+  }
+  for (const std::string& h : s.axes.hosts) {
+    const HostProfile p = find_host_profile(h);
+    list_fields("host profile " + p.file + ":", "host.", p.json);
+  }
+  std::printf("A leaf name that is unique within its profile may stand for its path (host.segment_pack).\n");
+  return 0;
+}
+
 // ---- merge ----------------------------------------------------------------------------------------
 
 bool is_shard_file(const std::filesystem::path& p) {
@@ -434,6 +463,9 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--full-banks", o->full_banks,
                 "Model the profile's bank capacity even when smaller banks change nothing (more memory)");
   cmd->add_flag("--quiet", o->quiet, "No progress output");
+  cmd->add_flag("--list-fields", o->list_fields,
+                "List the profile fields a study can sweep or fix, with their values, for --devices and --host (or "
+                "the study's), and exit");
   add_merge_command(*cmd, exit_code);
   cmd->require_subcommand(0, 1);
   cmd->callback([o, cmd, &exit_code] {
@@ -445,7 +477,8 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
                                       o->study_file + " sets the scenes, solver and axes (edit it instead)");
         }
       }
-      exit_code = run_sweep(*o, load_study_file(o->study_file));
+      const Study study = load_study_file(o->study_file);
+      exit_code = o->list_fields ? run_list_fields(study) : run_sweep(*o, study);
       return;
     }
     // A scene file is taken as it is unless refinement is asked for: the paper defaults are for
@@ -456,7 +489,8 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
       if (cmd->count("--face-levels") == 0) o->scene.face_levels = plain.face_levels;
       if (cmd->count("--patch-levels") == 0) o->scene.patch_levels = plain.patch_levels;
     }
-    exit_code = run_sweep(*o, study_from_options(*o));
+    const Study study = study_from_options(*o);
+    exit_code = o->list_fields ? run_list_fields(study) : run_sweep(*o, study);
   });
 }
 

@@ -60,6 +60,12 @@ std::string unused_because(const Study& s, const ProfileField& f) {
   const auto starts = [&](const char* prefix) { return f.field.rfind(prefix, 0) == 0; };
   if (f.kind == ProfileKind::device) {
     if (f.field == "banks.count") return "a sweep sets the bank count of every configuration: use the banks axis";
+    if (f.field == "pci.master_abort_cycles")
+      return "a master abort ends only an access no target claims, and the driver makes none";
+    if (f.field == "clock.design_bits") {
+      return "it records the width the profile's clocks were measured at; the design clock is the lower of the "
+             "profile's and the pipeline's at the run's width (board/design_fit.cpp), so sweep bits instead";
+    }
     if (starts("clock.mhz_by_lanes.")) {
       const int lanes = std::atoi(f.field.c_str() + std::string("clock.mhz_by_lanes.").size());
       if (std::find(s.axes.lanes.begin(), s.axes.lanes.end(), lanes) == s.axes.lanes.end())
@@ -67,6 +73,8 @@ std::string unused_because(const Study& s, const ProfileField& f) {
     }
     return "";
   }
+  if (f.field == "clock_mhz")
+    return "the host's costs are seconds per unit of work; its clock is recorded in reports, not used in timing";
   static const std::map<std::string, std::string> per_unit = {
       {"driver_seconds.segment_pack", "per_segment"},      {"driver_seconds.result_unpack", "per_segment"},
       {"driver_seconds.face_pack", "per_segment"},         {"driver_seconds.coordinate_convert", "per_word"},

@@ -128,6 +128,8 @@ TEST(StudyFile, BadStudiesNameTheFileTheLineTheKeyAndTheLimit) {
       {"[axes]\n\"banks.count\" = [6, 8]\n", {"banks.count changes nothing", "use the banks axis"}},
       {"[axes]\ndevices = [\"xc2v6000\"]\nlanes = [1]\n\"clock.mhz_by_lanes.2\" = [50]\n", {"no configuration with 2 lane(s)"}},
       {"[axes]\n\"host.word_store\" = [1e-9]\n", {"host.word_store changes nothing", "per_word"}},
+      {"[axes]\n\"host.clock_mhz\" = [1000, 3000]\n", {"host.clock_mhz changes nothing", "not used in timing"}},
+      {"[fixed]\n\"clock.design_bits\" = 19\n", {"clock.design_bits changes nothing", "sweep bits"}},
       {"[fixed]\n\"host.driver_model.transfer\" = \"dma\"\n\"host.pio_read_round_trip_seconds\" = 1e-6\n",
        {"changes nothing", "programmed I/O"}},
   };

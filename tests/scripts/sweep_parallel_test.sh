@@ -9,64 +9,22 @@
 #      shard 1 with its stderr and the commands that re-run it, and not merge.
 # Exit 0 pass, 1 fail, 77 skipped (a "SKIP: reason" line on stdout) when GNU parallel is missing.
 set -euo pipefail
-
-if [ $# -ne 3 ]; then
-  echo "usage: $0 RC2000SIM STUDY_FILE REPO_ROOT" >&2
-  exit 2
-fi
-sim="$1"; study="$2"; repo="$3"
-
-t0="$EPOCHREALTIME"
-step() { echo "[$(awk -v a="${EPOCHREALTIME/,/.}" -v b="${t0/,/.}" 'BEGIN { printf "%6.1f s", a - b }')] $*"; }
-fail() { echo "FAIL: $*"; exit 1; }
-skip() { echo "SKIP: $*"; exit 77; }
-
-[[ "$sim" = /* ]] || fail "RC2000SIM must be an absolute path, not '$sim'"
-[ -f "$sim" ] && [ -x "$sim" ] || fail "RC2000SIM is not an executable file: $sim"
-[ -f "$study" ] || fail "study file not found: $study"
-study="$(realpath "$study")"
+# shellcheck source=tests/scripts/sweep_test_lib.sh
+source "$(dirname "${BASH_SOURCE[0]}")/sweep_test_lib.sh"
 sweep_parallel="$repo/scripts/sweep-parallel"
 [ -x "$sweep_parallel" ] || fail "not executable: $sweep_parallel"
 command -v parallel >/dev/null || skip "GNU parallel not installed (Debian package parallel)"
 parallel --will-cite --version 2>/dev/null | grep -q 'GNU parallel' ||
   skip "'parallel' is not GNU parallel (moreutils' parallel?): $(command -v parallel)"
-export SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1
 
 tmp="$(mktemp -d "${TMPDIR:-/tmp}/sweep-parallel-test.XXXXXX")"
-child=""  # the command run() is waiting for
-run() {  # COMMAND...: runs it in the background and waits, so that a signal reaches the trap at once
-  "$@" &
-  child=$!
-  local rc=0
-  wait "$child" || rc=$?
-  child=""
-  return "$rc"
-}
 cleanup() {
   local rc=$?
   trap - EXIT
-  if [ -n "$child" ]; then kill -TERM "$child" 2>/dev/null || true; wait "$child" 2>/dev/null || true; fi
-  rm -rf "$tmp"
-  step "done (exit $rc)"
-  exit "$rc"
+  stop_child
+  remove_work_folder_and_exit "$rc"
 }
-trap cleanup EXIT
-trap 'exit 130' INT
-trap 'exit 143' TERM
-
-compare_trees() {  # SHARDED SINGLE: SHARDED (less its shards/ and logs/) and SINGLE are identical
-  local nested files
-  nested="$(find "$2" \( -name shards -o -name logs \) -print -quit)"
-  [ -z "$nested" ] || fail "the single-machine output has an entry named like the script's own folders: $nested"
-  nested="$(find "$1" -mindepth 2 \( -name shards -o -name logs \) -print -quit)"
-  [ -z "$nested" ] || fail "the sharded output has a nested entry named shards or logs: $nested"
-  files="$(find "$2" -type f | wc -l)"
-  [ "$files" -gt 0 ] || fail "the single-machine run wrote no files into $2"
-  if ! diff -r -q -x shards -x logs "$1" "$2"; then
-    fail "the outputs differ (lines above: $1 against $2)"
-  fi
-  step "identical: $files files"
-}
+trap_cleanup
 
 step "the study on one machine ($(basename "$study"), work folder $tmp)"
 single="$tmp/single"
@@ -93,15 +51,7 @@ fi
 
 step "scripts/sweep-parallel with a simulator that fails for shard 1: must report it and not merge"
 failing="$tmp/failing-rc2000sim"
-cat > "$failing" <<EOF
-#!/bin/sh
-# Fails for shard 1 of 3, otherwise runs the real simulator.
-for a in "\$@"; do
-  if [ "\$a" = 1/3 ]; then echo "deliberate failure of shard 1 (sweep_parallel_test.sh)" >&2; exit 7; fi
-done
-exec $(printf '%q' "$sim") "\$@"
-EOF
-chmod +x "$failing"
+write_failing_simulator "$failing" sweep_parallel_test.sh
 out="$tmp/parallel-fail"
 rc=0
 run "$sweep_parallel" "$study" "$out" --shards 3 --jobs 2 --rc2000sim "$failing" > "$tmp/fail.log" 2>&1 || rc=$?

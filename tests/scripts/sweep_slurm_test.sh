@@ -13,29 +13,14 @@
 # Exit 0 pass, 1 fail, 77 skipped (a "SKIP: reason" line on stdout): not root, Slurm or munge
 # missing, or no free ports. On exit it stops the daemons by their pids and removes the folder.
 set -euo pipefail
-
-if [ $# -ne 3 ]; then
-  echo "usage: $0 RC2000SIM STUDY_FILE REPO_ROOT" >&2
-  exit 2
-fi
-sim="$1"; study="$2"; repo="$3"
-
-t0="$EPOCHREALTIME"
-step() { echo "[$(awk -v a="${EPOCHREALTIME/,/.}" -v b="${t0/,/.}" 'BEGIN { printf "%6.1f s", a - b }')] $*"; }
-fail() { echo "FAIL: $*"; exit 1; }
-skip() { echo "SKIP: $*"; exit 77; }
-
-[[ "$sim" = /* ]] || fail "RC2000SIM must be an absolute path, not '$sim'"
-[ -f "$sim" ] && [ -x "$sim" ] || fail "RC2000SIM is not an executable file: $sim"
-[ -f "$study" ] || fail "study file not found: $study"
-study="$(realpath "$study")"
+# shellcheck source=tests/scripts/sweep_test_lib.sh
+source "$(dirname "${BASH_SOURCE[0]}")/sweep_test_lib.sh"
 sweep_slurm="$repo/scripts/sweep-slurm"
 [ -x "$sweep_slurm" ] || fail "not executable: $sweep_slurm"
 
 # --- skip conditions --------------------------------------------------------------------------
 [ "$(id -u)" -eq 0 ] || skip "not root (the test starts its own munged, slurmctld and slurmd)"
 export PATH="$PATH:/usr/sbin:/sbin"
-export SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1
 for tool in munged slurmctld slurmd sbatch squeue sinfo scancel; do
   command -v "$tool" >/dev/null || skip "$tool not installed (Debian packages slurm-wlm, munge)"
 done
@@ -79,20 +64,10 @@ stop_pid() {  # PID NAME: TERM, wait up to 10 s, then KILL; only if it is still 
   wait "$pid" 2>/dev/null || true
 }
 
-child=""  # the command run() is waiting for
-run() {  # COMMAND...: runs it in the background and waits, so that a signal reaches the trap at once
-  "$@" &
-  child=$!
-  local rc=0
-  wait "$child" || rc=$?
-  child=""
-  return "$rc"
-}
-
 cleanup() {
   local rc=$? pid name i
   trap - EXIT
-  if [ -n "$child" ]; then kill -TERM "$child" 2>/dev/null || true; wait "$child" 2>/dev/null || true; fi
+  stop_child
   if [ -n "${SLURM_CONF:-}" ] && [ -f "$tmp/slurmctld.pid" ]; then
     # Jobs still queued or running on the private cluster (a failed or interrupted test).
     if [ -n "$(squeue -h -o %i 2>/dev/null)" ]; then
@@ -122,13 +97,9 @@ cleanup() {
     echo "  stopping slurmstepd $pid left by the private slurmd"
     stop_pid "$pid" slurmstepd
   done
-  rm -rf "$tmp"
-  step "done (exit $rc)"
-  exit "$rc"
+  remove_work_folder_and_exit "$rc"
 }
-trap cleanup EXIT
-trap 'exit 130' INT
-trap 'exit 143' TERM
+trap_cleanup
 
 show_logs() {
   local f
@@ -206,20 +177,6 @@ done
 step "node $node idle"
 
 # --- the comparison ----------------------------------------------------------------------------
-compare_trees() {  # SHARDED SINGLE: SHARDED (less its shards/ and logs/) and SINGLE are identical
-  local nested files
-  nested="$(find "$2" \( -name shards -o -name logs \) -print -quit)"
-  [ -z "$nested" ] || fail "the single-machine output has an entry named like the scripts' own folders: $nested"
-  nested="$(find "$1" -mindepth 2 \( -name shards -o -name logs \) -print -quit)"
-  [ -z "$nested" ] || fail "the sharded output has a nested entry named shards or logs: $nested"
-  files="$(find "$2" -type f | wc -l)"
-  [ "$files" -gt 0 ] || fail "the single-machine run wrote no files into $2"
-  if ! diff -r -q -x shards -x logs "$1" "$2"; then
-    fail "the outputs differ (lines above: $1 against $2)"
-  fi
-  step "identical: $files files"
-}
-
 out="$tmp/slurm-out"
 single="$tmp/single"
 step "scripts/sweep-slurm $(basename "$study") --shards 3 --wait"
@@ -260,15 +217,7 @@ compare_trees "$tmp/remerged" "$single"
 # --- a failing shard through Slurm -------------------------------------------------------------
 step "scripts/sweep-slurm with a simulator that fails for shard 1: must report it and not merge"
 failing="$tmp/failing-rc2000sim"
-cat > "$failing" <<EOF
-#!/bin/sh
-# Fails for shard 1 of 3, otherwise runs the real simulator.
-for a in "\$@"; do
-  if [ "\$a" = 1/3 ]; then echo "deliberate failure of shard 1 (sweep_slurm_test.sh)" >&2; exit 7; fi
-done
-exec $(printf '%q' "$sim") "\$@"
-EOF
-chmod +x "$failing"
+write_failing_simulator "$failing" sweep_slurm_test.sh
 rc=0
 run timeout 150 "$sweep_slurm" "$study" "$tmp/slurm-fail" --shards 3 --rc2000sim "$failing" --wait \
   > "$tmp/slurm-fail.log" 2>&1 || rc=$?

@@ -28,6 +28,7 @@ int sc_main(int argc, char** argv) {
   rc::add_paper_command(app, exit_code);
   rc::add_sweep_command(app, exit_code);
   rc::add_bench_command(app, exit_code);
+  rc::add_adaptive_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,5 +1,7 @@
 #include "studies/solution_error.h"
 
+#include <algorithm>
+
 #include "radiosity/render.h"
 
 #include <cmath>
@@ -41,6 +43,37 @@ std::vector<Spectrum> coarsen_solution(const std::vector<Spectrum>& fine, std::s
     coarse[c] = sum * (1.0 / static_cast<double>(group));
   }
   return coarse;
+}
+
+namespace {
+
+// Whether `p` (in the triangle's plane) lies in the triangle, edges included up to rounding.
+bool contains(const Triangle& t, const Vec3& p) {
+  const Vec3 n = glm::cross(t.v1 - t.v0, t.v2 - t.v0);
+  const double scale = glm::dot(n, n);
+  const double slack = -1e-9 * scale;
+  return glm::dot(glm::cross(t.v1 - t.v0, p - t.v0), n) >= slack && glm::dot(glm::cross(t.v2 - t.v1, p - t.v1), n) >= slack &&
+         glm::dot(glm::cross(t.v0 - t.v2, p - t.v2), n) >= slack;
+}
+
+}  // namespace
+
+std::vector<Spectrum> sample_at_finer(const Scene& coarse, const std::vector<Spectrum>& solution, const Scene& fine) {
+  if (solution.size() != coarse.patches.size()) throw std::invalid_argument("sample_at_finer: one value per coarse patch");
+  if (coarse.faces.size() != fine.faces.size()) throw std::invalid_argument("sample_at_finer: the scenes' faces differ");
+  std::vector<std::vector<std::size_t>> by_face(coarse.faces.size());
+  for (std::size_t i = 0; i < coarse.patches.size(); ++i) by_face[static_cast<std::size_t>(coarse.patches[i].face)].push_back(i);
+  std::vector<Spectrum> out;
+  out.reserve(fine.patches.size());
+  for (const Patch& p : fine.patches) {
+    const std::vector<std::size_t>& candidates = by_face[static_cast<std::size_t>(p.face)];
+    const auto holder = std::find_if(candidates.begin(), candidates.end(),
+                                     [&](std::size_t c) { return contains(coarse.patches[c].tri, p.centre); });
+    if (holder == candidates.end())
+      throw std::invalid_argument("sample_at_finer: a patch centre of face " + std::to_string(p.face) + " is in no coarse patch");
+    out.push_back(solution[*holder]);
+  }
+  return out;
 }
 
 double image_difference(const HdrImage& image, const HdrImage& reference) {

@@ -3,6 +3,7 @@
 
 #include <vector>
 
+#include "scenes/scene.h"
 #include "scenes/spectrum.h"
 
 namespace rc {
@@ -24,6 +25,12 @@ SolutionError compare_solutions(const std::vector<Spectrum>& solution, const std
 // split uniformly and in order (scenes/subdivide.h), so coarse patch c of a face covers fine
 // patches c*4^d .. c*4^d + 4^d - 1 of it, all of equal area. `faces` faces, `levels` deeper by d.
 std::vector<Spectrum> coarsen_solution(const std::vector<Spectrum>& fine, std::size_t faces, int levels_deeper);
+
+// A solution on patches of a scene evaluated at the patches of a finer scene with the same faces,
+// whose every patch lies inside one coarse patch of its face (uniform or adaptive splits of the
+// same faces, scenes/adaptive_patches.h): each fine patch gets the value of the coarse patch that
+// holds its centre. Throws std::invalid_argument if a fine patch's centre is in no patch of its face.
+std::vector<Spectrum> sample_at_finer(const Scene& coarse, const std::vector<Spectrum>& solution, const Scene& fine);
 
 // Relative RMSE of two linear images over the pixels both cover, against the reference's mean.
 struct HdrImage;

@@ -4,6 +4,7 @@
 
 #include "radiosity/fast_visibility.h"
 #include "radiosity/fixed_visibility.h"
+#include "radiosity/float_pipeline_visibility.h"
 #include "radiosity/float_visibility.h"
 #include "radiosity/needed_only_visibility.h"
 #include "radiosity/shooter_memo_visibility.h"
@@ -14,7 +15,11 @@ std::unique_ptr<VisibilityBackend> make_software_visibility(const std::string& n
   if (name == "float") return std::make_unique<FloatVisibility>();
   if (name == "fixed") return std::make_unique<FixedPointVisibility>(bits);
   if (name == "fast") return std::make_unique<FastFixedVisibility>(bits, threads);
-  throw std::invalid_argument("unknown visibility backend '" + name + "' (expected float, fixed or fast)");
+  if (pipeline::names_float_format(name)) {
+    return std::make_unique<FloatPipelineVisibility>(pipeline::parse_float_format(name));
+  }
+  throw std::invalid_argument("unknown visibility backend '" + name +
+                              "' (expected float, fixed, fast or float:E,M)");
 }
 
 std::unique_ptr<VisibilityBackend> make_functional_answer(const std::string& name, int bits, int threads) {

@@ -9,9 +9,11 @@
 namespace rc {
 
 // "float" (double precision), "fixed" (the bit-exact pipeline arithmetic at `bits` fractional bits,
-// every segment against every face, on the CPU) or "fast" (the same answers bit for bit, testing only
-// the faces that could hit, on every core; docs/fast-visibility.md). Throws std::invalid_argument
-// with the accepted names otherwise.
+// every segment against every face, on the CPU), "fast" (the same answers bit for bit, testing only
+// the faces that could hit, on every core; docs/fast-visibility.md) or "float:E,M" (the
+// floating-point pipeline's bit-exact arithmetic in that format, every segment against every face,
+// on the CPU; `bits` is ignored; pipeline/float_format.h). Throws std::invalid_argument with the
+// accepted names otherwise, or with the format error for a malformed or unsupported "float:E,M".
 // `threads` (fast only): 0 = every core.
 std::unique_ptr<VisibilityBackend> make_software_visibility(const std::string& name, int bits, int threads = 0);
 

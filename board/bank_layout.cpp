@@ -36,6 +36,13 @@ double BankLayout::nominal_rays_per_cycle() const {
   return r;
 }
 
+const std::vector<std::string>& result_store_names() {
+  static const std::vector<std::string> names = {"bank", "on_chip"};
+  return names;
+}
+
+const char* to_string(ResultStore store) { return result_store_names()[static_cast<std::size_t>(store)].c_str(); }
+
 namespace {
 
 std::string lanes_text(unsigned lanes) { return std::to_string(lanes) + (lanes == 1 ? " lane" : " lanes"); }
@@ -52,6 +59,20 @@ std::uint64_t max_rays(const BankLayout& layout) {
     (split_rays(layout, mid).fits ? lo : hi) = mid;
   }
   return lo;
+}
+
+// Largest R such that every batch of at most R rays fits the block RAM. A split gives every group but
+// the last one it fills a whole number of packets (split_rays: each takes lanes * packets), so the
+// store holds a batch's rays plus at most (lanes - 1) unused slots of one packet: every r <= bits -
+// pad fits, and the few counts above are tried one by one (the first that does not fit ends it,
+// so no smaller batch is ever refused).
+std::uint64_t max_rays_on_chip(const BankLayout& layout) {
+  unsigned pad = 0;
+  for (const RayGroup& g : layout.groups) pad = std::max(pad, g.lanes - 1);
+  const std::uint64_t bits = layout.result_store_bits;
+  std::uint64_t r = bits > pad ? bits - pad : 0;
+  while (r < bits && result_store_bits(layout, split_rays(layout, r + 1)) <= bits) ++r;
+  return r;
 }
 
 }  // namespace
@@ -106,6 +127,26 @@ BankLayout make_bank_layout(LaneCount lanes, unsigned banks, pipeline::FracBits 
   return L;
 }
 
+BankLayout place_results(BankLayout layout, ResultStore store, std::uint64_t store_bits) {
+  if (store == ResultStore::on_chip && store_bits == 0)
+    throw std::invalid_argument("results on chip need block RAM, and the design has none left for them");
+  layout.results = ResultStore::bank;  // the banks' own limit first (split_rays ignores the store)
+  layout.result_store_bits = 0;
+  layout.max_rays_per_batch = max_rays(layout);
+  if (store == ResultStore::on_chip) {
+    layout.result_store_bits = store_bits;
+    layout.max_rays_per_batch = std::min(layout.max_rays_per_batch, max_rays_on_chip(layout));
+    layout.results = ResultStore::on_chip;
+  }
+  return layout;
+}
+
+std::uint64_t result_store_bits(const BankLayout& layout, const RaySplit& split) {
+  std::uint64_t bits = 0;
+  for (std::size_t g = 0; g < layout.groups.size(); ++g) bits += split.packets[g] * layout.groups[g].lanes;
+  return bits;
+}
+
 RaySplit split_rays(const BankLayout& layout, std::uint64_t rays) {
   const std::size_t G = layout.groups.size();
   // Rays group g can take in n cycles at its nominal rate, within its capacity.
@@ -149,6 +190,7 @@ RaySplit split_rays(const BankLayout& layout, std::uint64_t rays) {
   }
   s.result_words = words;
   if (left != 0 || words > layout.bank_words) s.fits = false;
+  if (layout.results == ResultStore::on_chip && result_store_bits(layout, s) > layout.result_store_bits) s.fits = false;
   return s;
 }
 

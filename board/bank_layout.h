@@ -5,6 +5,8 @@
 //                              spare bank is left, the own-face table (one word per face)
 //   banks 1 .. 3G (or fewer)   end-point coordinates, in G ray groups (below)
 //   next bank                  results, one word per packet of a group
+//                              (with results on chip, the wrapper accumulates a pass's blocked bits in
+//                              block RAM and writes each result word here once, at the end of the pass)
 //   remaining banks            spare; the first one holds the own-face table
 //
 // A coordinate is a `bits`-bit unsigned 0.N code; a bank word of W bits holds c = floor(W / bits)
@@ -27,6 +29,14 @@
 #include "pipeline/fixed_format.h"
 
 namespace rc::board {
+
+// Where the wrapper accumulates a pass's blocked bits (docs/board.md, "Results on chip"):
+//   bank     in the result bank, one read-modify-write (or write) per packet and face (paper sec 4.1, 4.2)
+//   on_chip  in the FPGA's block RAM, one entry per packet; each result word is written to the result
+//            bank once, at the end of the pass
+enum class ResultStore { bank, on_chip };
+const char* to_string(ResultStore store);  // "bank", "on_chip": the profile's spelling
+const std::vector<std::string>& result_store_names();  // in enum order
 
 struct RayGroup {
   std::vector<unsigned> banks;  // k = 1, 2 or 3 banks
@@ -54,7 +64,9 @@ struct BankLayout {
   std::vector<unsigned> spare_banks;  // unused by the wrapper (the mask bank excluded)
   std::vector<RayGroup> groups;
   std::uint64_t max_faces_per_set = 0;
-  std::uint64_t max_rays_per_batch = 0;
+  std::uint64_t max_rays_per_batch = 0;  // the smaller of what the banks and (on chip) the block RAM hold
+  ResultStore results = ResultStore::bank;
+  std::uint64_t result_store_bits = 0;   // on chip: block RAM bits the design leaves for the results
 
   unsigned banks_used() const;
   unsigned face_words() const { return 9; }
@@ -66,8 +78,12 @@ struct BankLayout {
 
 // Throws std::invalid_argument for zero lanes, a width outside 7..31, a word narrower than a
 // coordinate, or more banks needed than available (naming lanes, banks needed and available).
+// Results in the bank unless placed on chip (below, or board_params.h's make_bank_layout(BoardParams)).
 BankLayout make_bank_layout(LaneCount lanes, unsigned banks, pipeline::FracBits bits, unsigned word_bits,
                             std::uint64_t bank_capacity_bytes);
+// The layout with its results kept `store` (on chip: in `store_bits` bits of block RAM), its batch
+// limit recomputed. Idempotent. Throws std::invalid_argument for results on chip with no bits.
+BankLayout place_results(BankLayout layout, ResultStore store, std::uint64_t store_bits);
 
 // The rays of one pass divided over the groups: contiguous ranges in ray order, each group filled
 // up to what it can do in the smallest number of cycles that covers all rays at the groups'
@@ -79,9 +95,11 @@ struct RaySplit {
   std::vector<std::uint64_t> packets;      // ceil(rays / lanes)
   std::vector<std::uint64_t> result_base;  // first result word of the group
   std::uint64_t result_words = 0;
-  bool fits = true;                        // within every bank's capacity
+  bool fits = true;                        // within every bank's capacity (and, on chip, the block RAM)
 };
 RaySplit split_rays(const BankLayout& layout, std::uint64_t rays);
+// Block RAM bits a split's results take on chip: one entry per packet, as wide as its group's lanes.
+std::uint64_t result_store_bits(const BankLayout& layout, const RaySplit& split);
 
 // split_rays for one layout, remembered for the last ray count: a run's passes mostly share one,
 // and a split holds four vectors. The host (packing) and the wrapper (reading) each keep one.

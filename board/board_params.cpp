@@ -1,6 +1,8 @@
 #include "board/board_params.h"
 
+#include <algorithm>
 #include <stdexcept>
+#include <string>
 
 #include "board/design_fit.h"
 #include "tlm/timing.h"
@@ -37,7 +39,19 @@ BoardParams make_board_params(const DeviceProfile& p, const BoardChoices& c) {
   b.bridge_latency_cycles = p.bridge_latency_cycles;
   b.irq_latency = c.irq_latency;
   b.model = c.model;
+  b.results = p.results;
+  b.result_store_bits = b.fit.block_ram_bits_available - std::min(b.fit.block_ram_bits, b.fit.block_ram_bits_available);
+  if (b.results == ResultStore::on_chip && b.result_store_bits == 0) {
+    throw std::invalid_argument(p.file + ": wrapper.results is on_chip, but " + p.name + " has " +
+                                std::to_string(b.fit.block_ram_bits_available) + " block RAM bits and the design uses " +
+                                std::to_string(b.fit.block_ram_bits) + ": none left for the results");
+  }
   return b;
+}
+
+BankLayout make_bank_layout(const BoardParams& p) {
+  return place_results(make_bank_layout(p.lanes, p.banks, p.bits, p.word_bits, p.bank_capacity_bytes), p.results,
+                       p.result_store_bits);
 }
 
 }  // namespace rc::board

@@ -30,6 +30,8 @@ struct BoardParams {
   unsigned bridge_latency_cycles = 2;  // PCI cycles through the bridge to the local bus
   sc_core::sc_time irq_latency = sc_core::SC_ZERO_TIME;  // device raises -> host thread runs
   WrapperModel model = WrapperModel::fast;
+  ResultStore results = ResultStore::bank;  // where a pass's blocked bits accumulate (bank_layout.h)
+  std::uint64_t result_store_bits = 0;  // on chip: block RAM bits left for them (device's minus the design's)
   bool report_at_end = false;          // print the tlm parts' summaries at sc_stop()
   DesignFit fit;                       // resources and clock of the design (make_board_params)
 };
@@ -43,8 +45,11 @@ struct BoardChoices {
   sc_core::sc_time irq_latency = sc_core::SC_ZERO_TIME;
 };
 
-// Throws std::invalid_argument if the lanes do not fit the device (design_fit.h) or the profile
-// has no clock for the lane count.
+// Throws std::invalid_argument if the lanes do not fit the device (design_fit.h), the profile
+// has no clock for the lane count, or results on chip find no block RAM left.
 BoardParams make_board_params(const DeviceProfile& profile, const BoardChoices& choices);
+
+// The bank layout of a board with these parameters, results placed as they say (bank_layout.h).
+BankLayout make_bank_layout(const BoardParams& params);
 
 }  // namespace rc::board

@@ -51,6 +51,12 @@ void CycleWrapper::begin() {
   m_mask_lo = m_in.mask_start;
   m_pipe.clear();
   stream_cycles(m_layout, m_timing, m_in.split, false, &m_limit);
+  if (m_layout.results == ResultStore::on_chip) {
+    m_store.assign(m_in.split.result_words, 0);
+    m_word_group.assign(m_in.split.result_words, 0);
+    for (unsigned g = 0; g < m_layout.groups.size(); ++g)
+      for (std::uint64_t p = 0; p < m_in.split.packets[g]; ++p) m_word_group[m_in.split.result_base[g] + p] = g;
+  }
 }
 
 // One cycle of the wrapper's state machine. Phases of zero length fall through without a cycle.
@@ -66,6 +72,13 @@ void CycleWrapper::controller() {
         return;
       case Phase::NextFace:
         if (m_face == m_in.faces) {
+          if (m_layout.results == ResultStore::on_chip && m_in.faces > 0 && !m_store.empty()) {
+            m_phase = Phase::Drain;  // from the cycle after the last packet's write into block RAM
+            m_drain_first = m_cycle + m_timing.pipeline_latency;
+            m_phase_cycle = 0;
+            m_drain_word = m_drain_used = 0;
+            return;
+          }
           m_phase = Phase::Tail;
           m_done_cycle = m_cycle + m_timing.pipeline_latency + m_timing.pass_finish;
           return;
@@ -122,10 +135,44 @@ void CycleWrapper::controller() {
         if (all_issued()) next_face();
         return;
       }
+      case Phase::Drain:
+        if (m_cycle < m_drain_first) return;  // packets still in the pipeline
+        if (drain()) {
+          m_phase = Phase::Tail;
+          m_done_cycle = m_cycle + 1 + m_timing.pass_finish;
+        }
+        return;
       case Phase::Tail:
         return;
     }
   }
+}
+
+// One cycle of the write-out: every next word whose accesses the phase's bank budget covers.
+bool CycleWrapper::drain() {
+  ++m_phase_cycle;
+  std::uint8_t* results = bank(m_layout.result_bank);
+  BankTraffic& traffic = m_traffic[m_layout.result_bank];
+  while (m_drain_word < m_store.size()) {
+    const RayGroup& group = m_layout.groups[m_word_group[m_drain_word]];
+    const bool rmw = !m_in.clear && group.result_accesses() == 2;
+    const unsigned accesses = rmw ? 2 : 1;
+    if (m_drain_used + accesses > allowed(m_phase_cycle)) return false;  // the result bank's rate
+    m_drain_used += accesses;
+    const std::uint64_t at = m_drain_word, bits = m_store[at];
+    if (m_in.clear) {
+      store_word(results, at, m_word_bytes, bits);
+    } else if (rmw) {
+      store_word(results, at, m_word_bytes, load_word(results, at, m_word_bytes) | bits);  // shared word: OR onto it
+      ++traffic.reads;
+    } else if (bits != 0) {
+      store_word(results, at, m_word_bytes, bits);  // one lane per word: write the 1 only when blocked
+    }
+    ++traffic.writes;  // the write slot is taken either way
+    traffic.busy_bank_cycles = traffic.reads + traffic.writes;
+    ++m_drain_word;
+  }
+  return true;
 }
 
 bool CycleWrapper::try_issue(unsigned g) {
@@ -137,9 +184,11 @@ bool CycleWrapper::try_issue(unsigned g) {
   for (unsigned j = 0; j < group.k(); ++j)
     if (group_bank_words(group, j, q + 1) > allowed(t)) return false;  // a ray bank stalls
   const bool clearing = m_in.clear && m_face == 0;
-  const unsigned accesses = clearing ? 1 : group.result_accesses();
-  if (m_result_used + accesses > allowed(t)) return false;  // the result bank stalls
-  m_result_used += accesses;
+  if (m_layout.results == ResultStore::bank) {
+    const unsigned accesses = clearing ? 1 : group.result_accesses();
+    if (m_result_used + accesses > allowed(t)) return false;  // the result bank stalls
+    m_result_used += accesses;
+  }
 
   Packet p;
   p.issued = m_cycle;
@@ -203,8 +252,14 @@ void CycleWrapper::write_back(const Packet& p) {
     const Lane& lane = p.lanes[slot];
     if (lane.valid && !lane.masked && lane.s3.hit) hits |= std::uint64_t(1) << slot;
   }
-  std::uint8_t* results = bank(m_layout.result_bank);
   const std::uint64_t at = m_in.split.result_base[p.group] + p.index;
+  if (m_layout.results == ResultStore::on_chip) {
+    // Block RAM, cleared at START: the entry is read through one port as the packet nears the end of
+    // the pipeline and written through the other; no bank access (CLEAR matters only to the drain).
+    m_store[at] |= hits;
+    return;
+  }
+  std::uint8_t* results = bank(m_layout.result_bank);
   BankTraffic& traffic = m_traffic[m_layout.result_bank];
   if (p.clearing) {
     store_word(results, at, m_word_bytes, hits);  // first face of a clearing pass: write, no read

@@ -12,6 +12,12 @@
 // accesses, reserved at issue because the pipeline's fixed latency moves the whole pattern 37 cycles
 // later. Groups are served in index order (fixed priority).
 //
+// Results on chip (layout.results == on_chip): a packet's bits are ORed into a block RAM image of the
+// pass's result words as it leaves the pipeline (no result-bank access, no result-bank budget at
+// issue); once the last packet has left, a drain phase writes the words to the result bank in order,
+// each when the bank's budget of the phase covers its accesses (a write, or a read and a write when
+// a pass that does not clear ORs onto a word shared by lanes), then DONE follows `finish` cycles later.
+//
 // Stage positions (assumption: the paper gives only the total, 37): the direction end - start is
 // formed in the input cycle (age 0); stage 1 completes at age 12, stage 2 at age 24, stage 3 (and the
 // decision) at age 36, and the result is written at age 37, i.e. ages (L-1)/3, 2(L-1)/3, L-1, L.
@@ -35,7 +41,7 @@ class CycleWrapper : public WrapperBase {
                std::vector<std::uint64_t> bank_addresses, WrapperSignals signals = {});
 
  private:
-  enum class Phase { Start, NextFace, Setup, Fetch, Stream, Tail };
+  enum class Phase { Start, NextFace, Setup, Fetch, Stream, Drain, Tail };
 
   struct Lane {  // one slot of a packet, i.e. one lane's pipeline register contents
     bool valid = false, masked = false;
@@ -60,6 +66,7 @@ class CycleWrapper : public WrapperBase {
   bool try_issue(unsigned g);
   void advance_pipeline();
   void write_back(const Packet& p);
+  bool drain();  // one drain cycle; true when every result word has been written
   void finish();
   std::uint64_t allowed(std::uint64_t t) const;  // bank accesses by the end of phase cycle t
 
@@ -78,6 +85,11 @@ class CycleWrapper : public WrapperBase {
   std::uint64_t m_result_used = 0;      // result-bank accesses reserved this face
   std::deque<Packet> m_pipe;
   std::string m_limit;
+  // Results on chip: the block RAM's result words of the pass, and the drain's progress.
+  std::vector<std::uint64_t> m_store;
+  std::uint64_t m_drain_first = 0;  // cycle of the drain's first cycle (the pipeline is empty by then)
+  std::uint64_t m_drain_word = 0, m_drain_used = 0;  // next word to write, bank accesses so far
+  std::vector<unsigned> m_word_group;  // group of each result word
 };
 
 }  // namespace rc::board

@@ -35,6 +35,8 @@ DesignFit fit_design(const DeviceProfile& device, const pipeline::ResourceModel&
   f.slices = wrapper.fixed_slices + lanes * wrapper.per_lane_slices + f.hard_lanes * hard.slices +
              f.soft_lanes * soft.slices;
   f.block_multipliers = wrapper.block_multipliers + f.hard_lanes * hard.block_multipliers;
+  f.block_ram_bits = 0;  // assumption, see design_fit.h
+  f.block_ram_bits_available = device.block_ram_bits;
   f.fits = f.slices <= device.slices && f.block_multipliers <= device.block_multipliers;
 
   f.pipeline_clock_mhz = std::min(f.hard_lanes > 0 ? hard.clock_mhz : soft.clock_mhz,

@@ -24,6 +24,13 @@ struct DesignFit {
   int block_multipliers = 0;  // needed
   int slices_available = 0;
   int block_multipliers_available = 0;
+  // Block RAM: the design's own use (lanes and wrapper, results on chip excluded) and the device's.
+  // pipeline/resource_model has no block RAM figure: the paper's synthesis results (table 1, sec 5.4,
+  // 5.5) list slices and block multipliers only, and the pipeline (System Generator adders,
+  // multipliers, registers) and the Handel-C wrapper (counters, registers) hold no memories, so the
+  // design is taken to use none (assumption). What is left holds results on chip (bank_layout.h).
+  std::uint64_t block_ram_bits = 0;
+  std::uint64_t block_ram_bits_available = 0;
   double pipeline_clock_mhz = 0;  // the slowest lane implementation used, at this width
   double clock_mhz = 0;           // min(the profile's design clock for this lane count, pipeline clock)
   bool modelled = false;          // any resource figure interpolated or extrapolated (not synthesised)

@@ -49,6 +49,7 @@ DeviceProfile device_profile_from_json(const nlohmann::ordered_json& json, const
   p.part = r.text("fpga.part");
   p.slices = static_cast<int>(r.integer("fpga.slices", 1, 1u << 24));
   p.block_multipliers = static_cast<int>(r.integer("fpga.block_multipliers", 0, 1u << 20));
+  p.block_ram_bits = r.integer("fpga.block_ram_bits", 0, std::uint64_t(1) << 40);
   read_clock(r, p);
   p.pipeline_latency_cycles = static_cast<unsigned>(r.integer("pipeline.latency_cycles", 1, 1000));
 
@@ -73,6 +74,7 @@ DeviceProfile device_profile_from_json(const nlohmann::ordered_json& json, const
   p.face_setup_cycles = static_cast<unsigned>(r.integer("wrapper.face_setup_cycles", 0, 1u << 20));
   p.pass_finish_cycles = static_cast<unsigned>(r.integer("wrapper.pass_finish_cycles", 0, 1u << 20));
   p.register_access_cycles = static_cast<unsigned>(r.integer("wrapper.register_access_cycles", 1, 1u << 20));
+  p.results = static_cast<ResultStore>(r.choice("wrapper.results", result_store_names()));
   return p;
 }
 

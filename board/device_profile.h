@@ -10,6 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "board/bank_layout.h"
+
 namespace rc::board {
 
 struct DeviceProfile {
@@ -18,6 +20,7 @@ struct DeviceProfile {
   std::string file;          // where it was loaded from
   int slices = 0;            // FPGA logic slices
   int block_multipliers = 0; // 18x18 block multipliers
+  std::uint64_t block_ram_bits = 0;  // block RAM, all blocks (fpga.block_ram_bits)
   std::map<int, double> clock_mhz_by_lanes;   // measured clocks (paper sec 5.4, 5.5)
   std::optional<double> clock_mhz_default;    // for lane counts not listed
   int clock_bits = 15;       // fractional width the clocks were measured or assumed for
@@ -42,6 +45,7 @@ struct DeviceProfile {
   unsigned face_setup_cycles = 1;
   unsigned pass_finish_cycles = 1;
   unsigned register_access_cycles = 1;  // device cycles per control/status register access
+  ResultStore results = ResultStore::bank;  // wrapper.results: where a pass's blocked bits accumulate
 
   nlohmann::ordered_json json;  // the file as loaded, sources included (for reports)
 

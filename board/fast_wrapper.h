@@ -2,7 +2,10 @@
 // event it reads the pass's data from the banks through DMI and computes every result with
 // pipeline::occlude_face (face-outer, ray-inner, as the hardware streams, sec 4.1), then waits
 // until the pass's completion time from pass_timing.h (first device clock edge at or after START,
-// plus the pass's cycles), writes the result words, sets DONE and raises the interrupt.
+// plus the pass's cycles), writes the result words, sets DONE and raises the interrupt. The result
+// words are the same whether the results accumulate in the bank or on chip (docs/board.md, "Results
+// on chip"); only the pass's time and the result bank's traffic differ, and both come from
+// pass_timing.h.
 #pragma once
 
 #include <cstdint>

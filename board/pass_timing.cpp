@@ -44,8 +44,23 @@ std::uint64_t stream_cycles(const BankLayout& layout, const WrapperTiming& t, co
     }
     result += P * result_accesses(group, clearing);
   }
-  b.add(t.to_device(result), [&] { return "bank " + std::to_string(layout.result_bank) + " (results)"; });
+  // On chip the lanes' bits go to block RAM, which keeps up with every group (a read and a write
+  // port per group at the device clock); the result bank sees the pass only at its end (drain).
+  if (layout.results == ResultStore::bank)
+    b.add(t.to_device(result), [&] { return "bank " + std::to_string(layout.result_bank) + " (results)"; });
   return b.best;
+}
+
+std::uint64_t drain_accesses(const BankLayout& layout, const RaySplit& split, bool clear) {
+  if (layout.results != ResultStore::on_chip) return 0;
+  std::uint64_t accesses = 0;
+  for (std::size_t g = 0; g < layout.groups.size(); ++g)
+    accesses += split.packets[g] * result_accesses(layout.groups[g], clear);
+  return accesses;
+}
+
+std::uint64_t drain_cycles(const BankLayout& layout, const WrapperTiming& t, const RaySplit& split, bool clear) {
+  return t.to_device(drain_accesses(layout, split, clear));
 }
 
 std::uint64_t fetch_cycles(const BankLayout& layout, const WrapperTiming& t) {
@@ -65,9 +80,10 @@ PassTiming pass_timing(const BankLayout& layout, const WrapperTiming& t, const R
   p.stream_first = stream_cycles(layout, t, split, clear);
   p.stream_rest = stream_cycles(layout, t, split, false, &p.limit);
   p.latency = t.pipeline_latency;
+  p.drain = faces > 0 ? drain_cycles(layout, t, split, clear) : 0;
   p.finish = t.pass_finish;
   p.total = p.start + faces * (p.face_setup + p.face_fetch) +
-            (faces > 0 ? p.stream_first + (faces - 1) * p.stream_rest : 0) + p.latency + p.finish;
+            (faces > 0 ? p.stream_first + (faces - 1) * p.stream_rest : 0) + p.latency + p.drain + p.finish;
 
   // Bank traffic of the whole pass (the fast model reports it to the banks through DMI accounting).
   p.banks.assign(layout.banks_available, BankTraffic{});
@@ -87,6 +103,12 @@ PassTiming pass_timing(const BankLayout& layout, const WrapperTiming& t, const R
       p.banks[group.banks[j]].busy_bank_cycles += words;
     }
     BankTraffic& r = p.banks[layout.result_bank];
+    if (layout.results == ResultStore::on_chip) {  // the write-out: each word once
+      if (faces == 0) continue;
+      r.writes += P;
+      if (group.result_accesses() == 2 && !clear) r.reads += P;
+      continue;
+    }
     r.writes += faces * P;
     if (group.result_accesses() == 2 && faces > 0) r.reads += (faces - (clear ? 1 : 0)) * P;
   }

@@ -81,6 +81,23 @@ std::optional<double> ProfileReader::optional_number(const std::string& path, do
 
 std::string ProfileReader::source(const std::string& path) const { return sourced(path)["source"].get<std::string>(); }
 
+std::size_t ProfileReader::choice(const std::string& path, const std::vector<std::string>& allowed) const {
+  std::string names;
+  for (std::size_t i = 0; i < allowed.size(); ++i) names += (i ? ", " : "") + allowed[i];
+  const nlohmann::ordered_json* node = find(path);
+  if (node == nullptr) fail(path, "missing (one of " + names + ")");
+  if (!node->is_object() || !node->contains("value"))
+    fail(path, "must be an object {\"value\": name, \"source\": \"where it came from\"} (one of " + names + ")");
+  const auto& source = (*node)["source"];
+  if (!source.is_string() || source.get<std::string>().empty())
+    fail(path, "has no \"source\" string (every choice must say where it came from)");
+  if (!(*node)["value"].is_string()) fail(path, "\"value\" must be a name, one of " + names);
+  const std::string value = (*node)["value"].get<std::string>();
+  for (std::size_t i = 0; i < allowed.size(); ++i)
+    if (value == allowed[i]) return i;
+  fail(path, "'" + value + "' is not one of " + names);
+}
+
 std::string ProfileReader::text(const std::string& path) const {
   const nlohmann::ordered_json* node = find(path);
   if (node == nullptr) fail(path, "missing");

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -34,6 +35,9 @@ class ProfileReader {
   std::optional<double> optional_number(const std::string& path, double min, double max) const;
   std::string source(const std::string& path) const;  // the "source" string next to a number
   std::string text(const std::string& path) const;    // a plain string field
+  // A sourced name {"value": "bank", "source": "..."} that must be one of `allowed`; returns its index.
+  // Errors name the file, the field and the allowed names.
+  std::size_t choice(const std::string& path, const std::vector<std::string>& allowed) const;
   bool has(const std::string& path) const { return find(path) != nullptr; }
   const nlohmann::ordered_json* find(const std::string& path) const;
 

@@ -42,13 +42,14 @@ tlmx::PciBusConfig pci_config(const BoardParams& p) {
 }  // namespace
 
 Rc2000::Rc2000(const sc_core::sc_module_name& name, const BoardParams& params)
-    : Rc2000(name, params,
-             make_bank_layout(params.lanes, params.banks, params.bits, params.word_bits, params.bank_capacity_bytes)) {}
+    : Rc2000(name, params, make_bank_layout(params)) {}
 
 Rc2000::Rc2000(const sc_core::sc_module_name& name, const BoardParams& params, BankLayout layout)
     : sc_core::sc_module(name),
       m_params(params),
-      m_layout(std::move(layout)),
+      // A caller that made the layout from the banks alone (results in the bank) gets the results
+      // placed as the parameters say (place_results is idempotent).
+      m_layout(place_results(std::move(layout), params.results, params.result_store_bits)),
       m_stride(stride_for(params.bank_capacity_bytes)),
       pci("pci", pci_config(params)),
       dma("dma", tlmx::DmaConfig{params.pci.max_burst_bytes, params.report_at_end}),

@@ -45,7 +45,8 @@ class Rc2000 : public sc_core::sc_module {
 
   Rc2000(const sc_core::sc_module_name& name, const BoardParams& params);
   // With the layout of these parameters already made (and so checked) by the caller: it is not
-  // made twice. Throws std::logic_error if it is not the layout of `params`.
+  // made twice; its results are placed as `params` say (place_results). Throws std::logic_error if
+  // it is not the layout of `params`.
   Rc2000(const sc_core::sc_module_name& name, const BoardParams& params, BankLayout layout);
 
   const BoardParams& params() const { return m_params; }

@@ -37,7 +37,7 @@ constexpr std::uint32_t kNoFace = 0xFFFFFFFFu;
 
 enum ErrorCode : std::uint32_t {
   kOk = 0,
-  kTooManyRays = 1,     // RAY_COUNT beyond the ray or result banks
+  kTooManyRays = 1,     // RAY_COUNT beyond the ray or result banks (or, results on chip, the block RAM)
   kTooManyFaces = 2,    // FACE_COUNT beyond the face bank
   kMaskOverrun = 3,     // MASK_START + table entries exceed RAY_COUNT
   kStartWhileBusy = 4,

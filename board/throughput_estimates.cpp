@@ -75,15 +75,17 @@ StreamRate long_pass_rate(const DeviceProfile& device, int lanes, int bits) {
   choices.banks = 3 * groups + 2;
   choices.bits = bits;
   const BoardParams params = make_board_params(device, choices);
-  const BankLayout layout =
-      make_bank_layout(params.lanes, params.banks, bits, params.word_bits, params.bank_capacity_bytes);
+  const BankLayout layout = make_bank_layout(params);  // results where the profile keeps them
   const std::uint64_t rays = std::min<std::uint64_t>(layout.max_rays_per_batch, std::uint64_t{1} << 20);
   const RaySplit split = split_rays(layout, rays);
   StreamRate r;
   const std::uint64_t cycles = stream_cycles(layout, params.timing, split, false, &r.limit);
   double words = 0;
   for (std::size_t g = 0; g < layout.groups.size(); ++g) {
-    words += double(split.packets[g]) * (3 + layout.groups[g].result_accesses());
+    // On chip the result words reach the bank once a pass, not once a face: over a long pass's faces
+    // that vanishes, and a ray moves only its three coordinate words.
+    const unsigned result = layout.results == ResultStore::on_chip ? 0 : layout.groups[g].result_accesses();
+    words += double(split.packets[g]) * (3 + result);
   }
   r.rays_per_cycle = double(rays) / double(cycles);
   r.bytes_per_ray = words * (layout.word_bits / 8.0) / double(rays);

@@ -9,7 +9,8 @@
 // * Our design-fit estimate: lanes that fit with the wrapper counted and slice-multiplier lanes
 //   beyond the block multipliers (design_fit.h), on a board with as many 100 MHz banks as the lanes
 //   need at full rate, streaming at the rate the pass-timing formula gives for a long pass, result
-//   bank included (a result word shared by two lanes is read and written).
+//   bank included (a result word shared by two lanes is read and written), or, when the profile keeps
+//   results on chip (wrapper.results), without it.
 #pragma once
 
 #include <string>

@@ -38,8 +38,7 @@ BoardSetup make_board_setup(const BoardRunOptions& o) {
   s.board = board::make_board_params(device, c);
   s.board.report_at_end = o.print_summaries;
   // The layout, made once: a bad configuration fails here, before elaboration, and the board uses it.
-  s.layout = board::make_bank_layout(s.board.lanes, s.board.banks, s.board.bits, s.board.word_bits,
-                                     s.board.bank_capacity_bytes);
+  s.layout = board::make_bank_layout(s.board);  // results placed as the profile says (bank or on chip)
   s.driver.concurrent = o.concurrent;
   s.driver.allow_batching = o.allow_batching;
   s.driver.oracle = o.oracle;

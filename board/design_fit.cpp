@@ -53,4 +53,43 @@ int max_lanes(const DeviceProfile& device, const pipeline::ResourceModel& resour
   return lanes;
 }
 
+FloatDesignFit fit_float_design(const DeviceProfile& device, const pipeline::ResourceModel& resources,
+                                LaneCount lane_count, pipeline::FloatFormat format) {
+  const int lanes = static_cast<int>(lane_count.value());
+  const pipeline::FloatFamily& family = resources.float_family_of_part(device.part);
+  const pipeline::FloatPipelineResources hard = resources.float_pipeline(format, family, true);
+  const pipeline::FloatPipelineResources soft = resources.float_pipeline(format, family, false);
+  const pipeline::WrapperCost wrapper = resources.wrapper();
+
+  FloatDesignFit f;
+  f.format = format;
+  f.family = family.name;
+  f.block_multiplier = family.block_multiplier;
+  f.device = device.name;
+  f.bits = format.bits_per_value();
+  f.lanes = lanes;
+  f.slices_available = device.slices;
+  f.block_multipliers_available = device.block_multipliers;
+  const int spare_multipliers = std::max(0, device.block_multipliers - wrapper.block_multipliers);
+  f.hard_lanes = hard.block_multipliers > 0 ? std::min(lanes, spare_multipliers / hard.block_multipliers) : lanes;
+  f.soft_lanes = lanes - f.hard_lanes;
+  f.slices = wrapper.fixed_slices + lanes * wrapper.per_lane_slices + f.hard_lanes * hard.slices +
+             f.soft_lanes * soft.slices;
+  f.block_multipliers = wrapper.block_multipliers + f.hard_lanes * hard.block_multipliers;
+  f.block_ram_bits = 0;  // assumption, as for fixed point (design_fit.h)
+  f.block_ram_bits_available = device.block_ram_bits;
+  f.fits = f.slices <= device.slices && f.block_multipliers <= device.block_multipliers;
+  f.pipeline_clock_mhz = std::min(f.hard_lanes > 0 ? hard.clock_mhz : soft.clock_mhz,
+                                  f.soft_lanes > 0 ? soft.clock_mhz : hard.clock_mhz);
+  f.clock_mhz = std::min(device.clock_mhz(lanes), f.pipeline_clock_mhz);
+  f.modelled = true;
+  return f;
+}
+
+int max_float_lanes(const DeviceProfile& device, const pipeline::ResourceModel& resources, pipeline::FloatFormat format) {
+  int lanes = 0;
+  while (lanes < static_cast<int>(LaneCount::kMax) && fit_float_design(device, resources, lanes + 1, format).fits) ++lanes;
+  return lanes;
+}
+
 }  // namespace rc::board

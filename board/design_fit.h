@@ -47,4 +47,18 @@ DesignFit fit_design(const DeviceProfile& device, const pipeline::ResourceModel&
 // The largest lane count that fits (0 if not even one does).
 int max_lanes(const DeviceProfile& device, const pipeline::ResourceModel& resources, pipeline::FracBits bits);
 
+// The same for lanes of the floating-point pipeline in `format` (pipeline::ResourceModel::float_pipeline,
+// an ESTIMATE throughout: `modelled` is always true). The device's family comes from its part
+// (XC2V, XC4V, XC3S); lanes are built as for fixed point: block-multiplier lanes while the blocks
+// last, the rest with slice multipliers; the same Handel-C wrapper; the clock is min(the profile's
+// clock for this lane count, the float lane's clock). `bits` holds the word width 1+E+M.
+struct FloatDesignFit : DesignFit {
+  pipeline::FloatFormat format{8, 23};
+  std::string family;            // "Virtex-II", ...
+  std::string block_multiplier;  // "MULT18X18" or "DSP48"
+};
+FloatDesignFit fit_float_design(const DeviceProfile& device, const pipeline::ResourceModel& resources, LaneCount lanes,
+                                pipeline::FloatFormat format);
+int max_float_lanes(const DeviceProfile& device, const pipeline::ResourceModel& resources, pipeline::FloatFormat format);
+
 }  // namespace rc::board

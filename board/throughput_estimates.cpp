@@ -150,6 +150,66 @@ PaperEstimate model_lanes_that_fit(const DeviceProfile& device, double software_
   return e;
 }
 
+double bytes_per_intersection(pipeline::FloatFormat number_format) {
+  constexpr int kWordBits = 32;
+  const int width = number_format.bits_per_value();
+  const int per_word = kWordBits / width;
+  const int field_bits = per_word > 0 ? kWordBits / per_word : kWordBits * ((width + kWordBits - 1) / kWordBits);
+  return 3.0 * field_bits / 8.0 + 1.0 / 8.0;
+}
+
+namespace {
+
+double rc2000_bandwidth() {
+  const DeviceProfile rc2000 = find_device_profile("xc2v6000");
+  return rc2000.bank_count * (rc2000.bank_word_bits / 8.0) * rc2000.bank_clock_mhz * 1e6;
+}
+
+FullRateFit full_rate(const DesignFit& fit, const std::string& arithmetic, double bytes) {
+  FullRateFit r;
+  r.device = fit.device;
+  r.arithmetic = arithmetic;
+  r.lanes = fit.fits ? fit.lanes : 0;
+  r.hard_lanes = fit.fits ? fit.hard_lanes : 0;
+  r.soft_lanes = fit.fits ? fit.soft_lanes : 0;
+  r.slices = fit.fits ? fit.slices : 0;
+  r.block_multipliers = fit.fits ? fit.block_multipliers : 0;
+  r.clock_mhz = fit.fits ? fit.clock_mhz : 0;
+  r.intersections_per_s = r.lanes * r.clock_mhz * 1e6;
+  r.bytes_per_intersection = bytes;
+  r.gb_per_s_needed = r.intersections_per_s * bytes / 1e9;
+  r.rc2000_gb_per_s = rc2000_bandwidth() / 1e9;
+  r.modelled = fit.modelled;
+  return r;
+}
+
+}  // namespace
+
+FullRateFit fixed_full_rate_fit(const DeviceProfile& device, int bits) {
+  const pipeline::ResourceModel model = pipeline::ResourceModel::load_default();
+  const int lanes = max_lanes(device, model, bits);
+  const DesignFit fit = fit_design(device, model, std::max(lanes, 1), bits);
+  return full_rate(fit, "fixed:" + std::to_string(bits), bytes_per_intersection(bits));
+}
+
+FullRateFit float_full_rate_fit(const DeviceProfile& device, pipeline::FloatFormat number_format) {
+  const pipeline::ResourceModel model = pipeline::ResourceModel::load_default();
+  const int lanes = max_float_lanes(device, model, number_format);
+  const FloatDesignFit fit = fit_float_design(device, model, std::max(lanes, 1), number_format);
+  return full_rate(fit, number_format.to_string(), bytes_per_intersection(number_format));
+}
+
+PaperEstimate float_lanes_that_fit(const DeviceProfile& device, double software_rate,
+                                   pipeline::FloatFormat number_format) {
+  const FullRateFit f = float_full_rate_fit(device, number_format);
+  PaperEstimate e = at_rate("lanes that fit (" + f.arithmetic + ")", EstimateRule::Model, device.name, f.lanes, f.clock_mhz,
+                            f.intersections_per_s, f.bytes_per_intersection, software_rate);
+  e.note = format("%g with block multipliers, %g with slice multipliers, wrapper counted; full rate, estimate; ",
+                       f.hard_lanes, f.soft_lanes) +
+           format("needs %.3g GB/s of the RC2000's %.3g", f.gb_per_s_needed, f.rc2000_gb_per_s);
+  return e;
+}
+
 std::string why_estimates_differ(const PaperEstimate& paper, const PaperEstimate& model) {
   if (paper.estimate == "RC2000 bandwidth limit") {
     return "same arithmetic; the speedups differ only by the software rate (paper: Table 2's peak, model: the "

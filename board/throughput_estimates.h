@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "board/device_profile.h"
+#include "pipeline/float_format.h"
 
 namespace rc::board {
 
@@ -54,6 +55,33 @@ std::vector<PaperEstimate> model_estimates(double software_rate, int bits);
 // a sweep's device would do at full rate. The paper's rule is Table 1's 15-bit pipeline at 176.9 MHz.
 PaperEstimate paper_rule_lanes_that_fit(const DeviceProfile& device, double software_peak_rate);
 PaperEstimate model_lanes_that_fit(const DeviceProfile& device, double software_rate, int bits);
+
+// Floating point (docs/pipeline.md, "Resources, clock and lanes that fit"): bytes one intersection
+// moves as sec 5.6(a) counts them for coordinates of 1+E+M bits packed into the bank words as the
+// fixed-point coordinates are (floor(32 / width) fields per 32-bit word, each 32 / that wide; two
+// words per coordinate above 32 bits), one result bit written.
+double bytes_per_intersection(pipeline::FloatFormat format);
+
+// Lanes that fit at full rate, fixed or float, beside each other: lanes (design_fit.h, wrapper
+// counted), their clock, lanes x clock intersections per second, bytes per intersection, and the
+// bandwidth that rate needs against the RC2000's banks (6 x 4 bytes x 100 MHz, sec 5.6(a)).
+struct FullRateFit {
+  std::string device, arithmetic;  // "fixed:15", "float:8,23"
+  int lanes = 0, hard_lanes = 0, soft_lanes = 0;
+  int slices = 0, block_multipliers = 0;
+  double clock_mhz = 0;
+  double intersections_per_s = 0;
+  double bytes_per_intersection = 0;
+  double gb_per_s_needed = 0;
+  double rc2000_gb_per_s = 0;
+  bool modelled = false;
+};
+FullRateFit fixed_full_rate_fit(const DeviceProfile& device, int bits);
+FullRateFit float_full_rate_fit(const DeviceProfile& device, pipeline::FloatFormat format);
+
+// The float counterpart of model_lanes_that_fit: the full-rate figures above as a PaperEstimate
+// (EstimateRule::Model), with the speedup over `software_rate`.
+PaperEstimate float_lanes_that_fit(const DeviceProfile& device, double software_rate, pipeline::FloatFormat format);
 
 // Why the two rules give different lane counts and rates for `device`, in one sentence.
 std::string why_estimates_differ(const PaperEstimate& paper, const PaperEstimate& model);

@@ -1,6 +1,7 @@
 #include "pipeline/resource_model.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -136,6 +137,33 @@ ResourceModel ResourceModel::from_json_text(const std::string& text, const std::
   }
   // The design clocks are far below the pipeline's own: they are the wrapper's clock.
   m.wrapper_clock_ = {number(*lane[0], "clock_mhz", origin), number(*lane[1], "clock_mhz", origin)};
+
+  // Floating point: constants of the counting rules, each {"value", "source"}.
+  const json& fp = field(j, "float_pipeline", origin);
+  const auto sourced = [&](const char* key) {
+    const json& v = field(fp, key, origin);
+    require_source(v, origin);
+    const int x = integer(v, "value", origin);
+    if (x < 0) fail(origin, std::string("float_pipeline.") + key + " is negative");
+    return x;
+  };
+  m.float_multipliers_ = sourced("multipliers");
+  m.float_sign_flips_ = sourced("sign_flips");
+  m.float_add_subs_ = sourced("add_subs");
+  m.float_comparators_ = sourced("comparators");
+  m.guard_bits_ = sourced("guard_bits");
+  m.luts_per_slice_ = sourced("luts_per_slice");
+  m.flip_flops_per_slice_ = sourced("flip_flops_per_slice");
+  if (m.luts_per_slice_ < 1 || m.flip_flops_per_slice_ < 1) fail(origin, "a slice needs at least one LUT and one flip-flop");
+  if (m.float_comparators_ % 2 != 0) fail(origin, "float_pipeline.comparators: three against 0 and three against |det|");
+  for (const json& f : field(fp, "families", origin)) {
+    require_source(f, origin);
+    FloatFamily family{field(f, "name", origin).get<std::string>(), field(f, "part_prefix", origin).get<std::string>(),
+                       field(f, "block_multiplier", origin).get<std::string>(), integer(f, "operand_bits", origin)};
+    if (family.operand_bits < 2) fail(origin, "family " + family.name + ": operand_bits below 2");
+    m.families_.push_back(family);
+  }
+  if (m.families_.empty()) fail(origin, "float_pipeline.families is empty");
   return m;
 }
 
@@ -245,6 +273,172 @@ DesignResources ResourceModel::design(int bits, bool use_block_multipliers, int 
   d.interpolated = !(bits == design_bits_ && use_block_multipliers == design_block_multipliers_ &&
                      lanes <= static_cast<int>(wrapper_clock_.size()));
   return d;
+}
+
+// ---- Floating point ----------------------------------------------------------------------------
+//
+// ESTIMATES, by documented rules (docs/pipeline.md, "Resources, clock and lanes that fit"); p = M + 1
+// significant bits, w = p + guard bits (guard, round, sticky), L(x) = ceil(log2 x). Counting
+// conventions: one 4-input LUT per bit of an adder, subtractor, comparator or incrementer (the
+// carry chain rides along in the slice), one LUT per bit per 2:1 multiplexer stage of a shifter,
+// w/3 LUTs for a w-input OR (LUT4 tree), every LUT output registered (the operator is fully
+// pipelined, as the Floating-Point Operator is at its maximum latency), and a slice holds
+// luts_per_slice LUTs and flip_flops_per_slice flip-flops.
+
+namespace {
+
+int ceil_log2(int x) {
+  int l = 0;
+  while ((1 << l) < x) ++l;
+  return l;
+}
+
+int ceil_div(int a, int b) { return (a + b - 1) / b; }
+
+bool starts_with_nocase(const std::string& text, const std::string& prefix) {
+  if (text.size() < prefix.size()) return false;
+  for (std::size_t i = 0; i < prefix.size(); ++i) {
+    if (std::toupper(static_cast<unsigned char>(text[i])) != std::toupper(static_cast<unsigned char>(prefix[i]))) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+int ResourceModel::slices_for(int luts, int flip_flops) const {
+  return std::max(ceil_div(luts, luts_per_slice_), ceil_div(flip_flops, flip_flops_per_slice_));
+}
+
+const FloatFamily& ResourceModel::float_family_of_part(const std::string& part) const {
+  for (const FloatFamily& f : families_) {
+    if (starts_with_nocase(part, f.part_prefix)) return f;
+  }
+  throw std::invalid_argument("no floating-point resource figures for the family of part \"" + part +
+                              "\" (known: XC2V Virtex-II, XC4V Virtex-4, XC3S Spartan-3)");
+}
+
+const FloatFamily& ResourceModel::float_family(const std::string& name) const {
+  for (const FloatFamily& f : families_) {
+    if (f.name == name) return f;
+  }
+  throw std::invalid_argument("unknown FPGA family \"" + name + "\"");
+}
+
+int ResourceModel::float_multiplier_blocks(FloatFormat format, int block_bits) {
+  const int pieces = ceil_div(format.precision(), block_bits - 1);
+  return pieces * pieces;
+}
+
+// Add/subtract, the classic single-path architecture (swap, align, add, normalise, round):
+//   exponent compare and difference 2(E+1), operand swap 2p, alignment shifter w L(w), sticky
+//   OR ceil(w/3), significand add/sub w+1, leading-zero count w, normalisation shifter w L(w),
+//   rounding incrementer p+1, exponent adjust E+2, special values (zero/inf/NaN in, flush and
+//   overflow out) 2E.
+FloatOperatorCost ResourceModel::float_adder(FloatFormat format) const {
+  const int e = format.exponent_bits(), p = format.precision(), w = p + guard_bits_, l = ceil_log2(w);
+  FloatOperatorCost c;
+  c.luts = 2 * (e + 1) + 2 * p + 2 * w * l + ceil_div(w, 3) + (w + 1) + w + (p + 1) + (e + 2) + 2 * e;
+  c.flip_flops = c.luts;
+  c.slices = slices_for(c.luts, c.flip_flops);
+  return c;
+}
+
+// Multiply: exponent add and bias subtract 2(E+2), normalisation (one-place shift) p, rounding
+// incrementer p+1, sign XOR 1, special values 2E; the p x p significand product either on
+// ceil(p/17)^2 blocks, whose partial products are summed by (blocks - 1) adders of 2p bits, or in
+// slices at soft_multiplier_slices_per_bit_product() slices per bit of p^2.
+FloatOperatorCost ResourceModel::float_multiplier(FloatFormat format, bool use_block_multipliers, int block_bits) const {
+  const int e = format.exponent_bits(), p = format.precision();
+  FloatOperatorCost c;
+  c.luts = 2 * (e + 2) + p + (p + 1) + 1 + 2 * e;
+  if (use_block_multipliers) {
+    c.block_multipliers = float_multiplier_blocks(format, block_bits);
+    c.luts += (c.block_multipliers - 1) * 2 * p;
+    c.flip_flops = c.luts;
+    c.slices = slices_for(c.luts, c.flip_flops);
+  } else {
+    c.flip_flops = c.luts;  // of the logic around the array; the array is counted in slices
+    c.slices = slices_for(c.luts, c.flip_flops) +
+               static_cast<int>(std::ceil(soft_multiplier_slices_per_bit_product() * p * p));
+  }
+  return c;
+}
+
+// Table 1 (15 bits, block multipliers) against sec 5.2 (15 bits, slice multipliers): the same
+// lane but for its 27 multipliers, so the slices the slice multipliers cost over the blocks,
+// divided by the partial-product bits sum(a_i * b_i) of the 27 products (widths from bit_bounds.h).
+double ResourceModel::soft_multiplier_slices_per_bit_product() const {
+  const Point& hard = hard_.back();
+  const Point* soft = find(soft_, hard.frac_bits);
+  const double extra = (soft ? soft->slices : soft_slices_(hard.frac_bits)) - hard.slices;
+  double bit_products = 0;
+  for (int m = 0; m < kMultiplierCount; ++m) {
+    const MultiplierOperands ops = operands_of(static_cast<Multiplier>(m));
+    bit_products += double(signed_bits(ops.a, hard.frac_bits)) * signed_bits(ops.b, hard.frac_bits);
+  }
+  return extra / bit_products;
+}
+
+// The fixed lane's arithmetic counted by the same rules: its 18 add/subs and the three direction
+// subtractors at their register widths, |det| (negate and select, 2 LUTs per bit), the three
+// comparisons with |det| (one LUT per bit of the wider operand) and the three with 0 (zero detect
+// of a signed-dot-wide word, ceil(w/3)).
+int ResourceModel::fixed_arithmetic_luts(FracBits bits) {
+  int luts = 0;
+  for (int a = 0; a < kAddSubCount; ++a) luts += signed_bits(result_of(static_cast<AddSub>(a)), bits);
+  luts += 3 * signed_bits(Quantity::Difference, bits);
+  luts += 2 * signed_bits(Quantity::AbsDet, bits);
+  luts += 2 * signed_bits(Quantity::SignedDot, bits) + signed_bits(Quantity::UvSum, bits);
+  luts += 3 * ceil_div(signed_bits(Quantity::SignedDot, bits), 3);
+  return luts;
+}
+
+// What the paper's measured block-multiplier lanes (Table 1, 7 and 15 bits) hold beyond that
+// counted arithmetic -- pipeline registers and delay lines over 37 stages, the blocks' interface,
+// System Generator glue -- is linear in the width (two points); the float lane carries values of
+// 1+E+M bits through the same data flow, so it gets this line at N = 1+E+M (the fixed lane's
+// coordinates are N bits wide).
+double ResourceModel::glue_slices(int word_bits) const {
+  std::vector<Point> glue;
+  for (const Point* p : {&hard_.front(), &hard_.back()}) {
+    glue.push_back({p->frac_bits, p->clock_mhz,
+                    p->slices - ceil_div(fixed_arithmetic_luts(p->frac_bits), luts_per_slice_)});
+  }
+  return interpolate(glue, word_bits, &Point::slices);
+}
+
+FloatPipelineResources ResourceModel::float_pipeline(FloatFormat format, const FloatFamily& family,
+                                                     bool use_block_multipliers) const {
+  FloatPipelineResources r;
+  r.exponent_bits = format.exponent_bits();
+  r.fraction_bits = format.fraction_bits();
+  r.family = family.name;
+  r.block_multiplier = family.block_multiplier;
+  r.block_multipliers_used = use_block_multipliers;
+  r.multiplier = float_multiplier(format, use_block_multipliers, family.operand_bits);
+  r.adder = float_adder(format);
+  r.multipliers = float_multipliers_;
+  r.add_subs = float_add_subs_;
+  r.sign_flips = float_sign_flips_;
+  r.comparators = float_comparators_;
+  r.operator_slices = r.multipliers * r.multiplier.slices + r.add_subs * r.adder.slices;
+  // Sign flips: one LUT each. Half the comparators test x < |det| on sign and magnitude (E+M+1
+  // LUTs), half test 0 < x (sign clear and exponent field nonzero: ceil(E/3)+1); AND of all six: 2.
+  const int e = format.exponent_bits(), m = format.fraction_bits();
+  const int decision_luts = r.sign_flips + (r.comparators / 2) * (e + m + 1) + (r.comparators / 2) * (ceil_div(e, 3) + 1) + 2;
+  r.decision_slices = slices_for(decision_luts, decision_luts);
+  r.glue_slices = static_cast<int>(std::lround(glue_slices(format.bits_per_value())));
+  r.slices = r.operator_slices + r.decision_slices + r.glue_slices;
+  r.block_multipliers = r.multipliers * r.multiplier.block_multipliers;
+  // Clock: the paper's fixed lane at the width whose values carry as many significant bits as the
+  // significand (N = p, within 7..31): the same carry chains (the significand adder is p+3+1 bits,
+  // the fixed lane's add/subs N+1..N+5) and multipliers of the same block tiling.
+  r.clock_frac_bits = std::clamp(format.precision(), kMinFracBits, kMaxFracBits);
+  const PipelineResources fixed = pipeline(r.clock_frac_bits, use_block_multipliers);
+  r.clock_mhz = fixed.clock_mhz;
+  r.clock_interpolated = fixed.interpolated;
+  r.clock_extrapolated = fixed.extrapolated;
+  return r;
 }
 
 }  // namespace rc::pipeline

@@ -9,12 +9,17 @@
 //     soft-multiplier clock by the ratio measured at 15 bits; the block multiplier count from
 //     splitting each product into 18x18 pieces (reproduces the paper's 27 and 30);
 //   * wrapper: a fixed part plus a per-lane part, solved from the 1- and 2-lane designs.
+// Floating-point lanes (float_pipeline, docs/pipeline.md "Resources, clock and lanes that fit"):
+// ESTIMATES only -- operator logic counted by documented rules, the lane's registers and glue and
+// the slice-multiplier cost scaled from the paper's fixed-point figures, the clock taken from the
+// fixed lane at the significand width -- for Virtex-II, Virtex-4 and Spartan-3.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "pipeline/fixed_format.h"
+#include "pipeline/float_format.h"
 
 namespace rc::pipeline {
 
@@ -51,6 +56,45 @@ struct Device {
   int block_multipliers = 0;
 };
 
+// ---- Floating-point lanes (docs/pipeline.md, "Resources, clock and lanes that fit") ----------
+// Every figure is an ESTIMATE (no vendor data for the Floating-Point Operator on these families
+// was reachable): see resource_model.cpp for the counting rules and the calibration on the
+// paper's fixed-point lanes.
+
+// The FPGA families of the paper's devices; the family of a part from its prefix (XC2V, XC4V, XC3S).
+struct FloatFamily {
+  std::string name;              // "Virtex-II", "Virtex-4", "Spartan-3"
+  std::string part_prefix;       // "XC2V", "XC4V", "XC3S"
+  std::string block_multiplier;  // "MULT18X18" or "DSP48"
+  int operand_bits = 18;         // signed operand width of the block multiplier
+};
+
+// One floating-point operator.
+struct FloatOperatorCost {
+  int luts = 0;        // counted 4-input LUTs of its logic
+  int flip_flops = 0;  // fully pipelined: every LUT output registered
+  int slices = 0;
+  int block_multipliers = 0;
+};
+
+// One floating-point lane.
+struct FloatPipelineResources {
+  int exponent_bits = 0, fraction_bits = 0;
+  std::string family, block_multiplier;
+  bool block_multipliers_used = false;
+  FloatOperatorCost multiplier, adder;  // one of each
+  int multipliers = 0, add_subs = 0, sign_flips = 0, comparators = 0;
+  int operator_slices = 0;  // multipliers + add/subs
+  int decision_slices = 0;  // sign flips, comparators, the final AND (|det| is wiring: clear the sign bit)
+  int glue_slices = 0;      // registers and glue of the data flow, scaled from the paper's fixed lanes
+  int slices = 0;
+  int block_multipliers = 0;
+  double clock_mhz = 0;
+  int clock_frac_bits = 0;    // the fixed-point width whose (paper or modelled) clock is used
+  bool clock_interpolated = false;   // that clock was not measured by the paper
+  bool clock_extrapolated = false;   // block multipliers above the paper's synthesis limit
+};
+
 class ResourceModel {
  public:
   // Reads the JSON file; throws std::runtime_error naming the file and the problem.
@@ -72,6 +116,26 @@ class ResourceModel {
   static int blocks_per_product(int a_bits, int b_bits, int block_bits = 18);
   // Sum over the 27 multipliers, with operand widths from bit_bounds.h.
   static int block_multipliers_needed(FracBits bits, int block_bits = 18);
+
+  // ---- Floating point (estimates) ----
+  const std::vector<FloatFamily>& float_families() const { return families_; }
+  // The family whose part_prefix starts `part` (case-insensitive); throws std::invalid_argument.
+  const FloatFamily& float_family_of_part(const std::string& part) const;
+  const FloatFamily& float_family(const std::string& name) const;  // by name; throws
+  // Blocks for one p x p significand product: ceil(p / (block_bits - 1))^2 (unsigned p-bit
+  // significands cut into 17-bit pieces for 18x18 signed blocks).
+  static int float_multiplier_blocks(FloatFormat format, int block_bits = 18);
+  FloatOperatorCost float_adder(FloatFormat format) const;
+  FloatOperatorCost float_multiplier(FloatFormat format, bool use_block_multipliers, int block_bits = 18) const;
+  FloatPipelineResources float_pipeline(FloatFormat format, const FloatFamily& family, bool use_block_multipliers) const;
+  // Calibrations on the paper's fixed-point figures (see resource_model.cpp):
+  // slices per partial-product bit of a slice multiplier (sec 5.2 vs Table 1 at 15 bits),
+  double soft_multiplier_slices_per_bit_product() const;
+  // counted LUTs of the fixed lane's add/subs, direction subtractors, |det| and comparators,
+  static int fixed_arithmetic_luts(FracBits bits);
+  // the rest of the measured fixed lane (registers, glue), linear in the width and evaluated at
+  // `word_bits` (the fixed lane's coordinate is `bits` wide).
+  double glue_slices(int word_bits) const;
 
  private:
   struct Point {
@@ -97,6 +161,12 @@ class ResourceModel {
   std::vector<double> wrapper_clock_;  // index lanes - 1
   int design_bits_ = 0;                // the pipeline of the paper's measured designs
   bool design_block_multipliers_ = false;
+
+  // Floating point.
+  std::vector<FloatFamily> families_;
+  int float_multipliers_ = 24, float_add_subs_ = 21, float_sign_flips_ = 3, float_comparators_ = 6;
+  int guard_bits_ = 3, luts_per_slice_ = 2, flip_flops_per_slice_ = 2;
+  int slices_for(int luts, int flip_flops) const;
 };
 
 }  // namespace rc::pipeline

@@ -2,6 +2,8 @@
 
 #include "board/design_fit.h"
 
+#include <algorithm>
+
 namespace rc::board {
 namespace {
 
@@ -72,6 +74,44 @@ TEST(LaneCount, IsValidByConstruction) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("at least one lane"), std::string::npos) << e.what();
   }
+}
+
+}  // namespace
+}  // namespace rc::board
+
+// Floating-point lanes (estimates): hand-computed lane counts on the three devices, from the lane
+// costs of PipelineResourcesFloat.LanesByHand and the wrapper (1116 + 247 per lane).
+namespace rc::board {
+namespace {
+
+TEST(DesignFit, FloatLanesThatFitByHand) {
+  const pipeline::ResourceModel model = pipeline::ResourceModel::load_default();
+  struct Row { const char* device; int e, m, lanes, hard, slices, mults; };
+  for (const Row& r : {Row{"xc2v6000", 8, 23, 2, 1, 1116 + 2 * 247 + 10867 + 16651, 96},
+                       Row{"virtex4-sx55", 8, 23, 2, 2, 1116 + 2 * 247 + 2 * 10867, 192},
+                       Row{"spartan3-5000", 8, 23, 2, 1, 1116 + 2 * 247 + 10867 + 16651, 96},
+                       Row{"xc2v6000", 5, 10, 6, 6, 1116 + 6 * 247 + 6 * 4638, 144},
+                       Row{"virtex4-sx55", 5, 10, 4, 4, 1116 + 4 * 247 + 4 * 4638, 96},
+                       Row{"spartan3-5000", 5, 10, 5, 4, 1116 + 5 * 247 + 4 * 4638 + 6222, 96}}) {
+    const DeviceProfile d = find_device_profile(r.device);
+    const pipeline::FloatFormat f(r.e, r.m);
+    EXPECT_EQ(max_float_lanes(d, model, f), r.lanes) << r.device << " " << f.to_string();
+    const FloatDesignFit fit = fit_float_design(d, model, r.lanes, f);
+    EXPECT_TRUE(fit.fits);
+    EXPECT_TRUE(fit.modelled);
+    EXPECT_EQ(fit.hard_lanes, r.hard) << r.device;
+    EXPECT_EQ(fit.slices, r.slices) << r.device;
+    EXPECT_EQ(fit.block_multipliers, r.mults) << r.device;
+    EXPECT_EQ(fit.bits, 1 + r.e + r.m);
+    EXPECT_FALSE(fit_float_design(d, model, r.lanes + 1, f).fits) << r.device;
+    // The clock: the profile's (52.5 MHz wrapper on the XC2V6000, 176.9 MHz assumed elsewhere) or the
+    // float lane's (the fixed lane's at N = p: 24 bits for float:8,23), whichever is slower.
+    const double lane_clock = model.pipeline(r.m + 1, true).clock_mhz;
+    const double soft_clock = model.pipeline(r.m + 1, false).clock_mhz;
+    const double pipeline_clock = fit.soft_lanes > 0 ? std::min(lane_clock, soft_clock) : lane_clock;
+    EXPECT_DOUBLE_EQ(fit.clock_mhz, std::min(d.clock_mhz(r.lanes), pipeline_clock)) << r.device;
+  }
+  EXPECT_EQ(fit_float_design(find_device_profile("virtex4-sx55"), model, 1, pipeline::FloatFormat(5, 10)).block_multiplier, "DSP48");
 }
 
 }  // namespace

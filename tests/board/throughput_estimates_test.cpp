@@ -3,6 +3,13 @@
 #include "board/design_fit.h"
 #include "board/throughput_estimates.h"
 
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "pipeline/float_format.h"
+
 namespace rc::board {
 namespace {
 
@@ -87,6 +94,49 @@ TEST(ThroughputEstimates, ModelEstimatesCountTheWrapperAndTheResultBank) {
     const DeviceProfile d = find_device_profile(e[i].device);
     EXPECT_EQ(e[i].lanes, max_lanes(d, model, 15)) << e[i].device;
     EXPECT_FALSE(fit_design(d, model, e[i].lanes + 1, 15).fits) << e[i].device;
+  }
+}
+
+}  // namespace
+}  // namespace rc::board
+
+// ---- Floating point (docs/pipeline.md, "Resources, clock and lanes that fit") ----------------
+
+namespace rc::board {
+namespace {
+
+// Coordinates of 1+E+M bits packed as fixed-point coordinates are: floor(32 / width) per word.
+TEST(ThroughputEstimates, FloatBytesPerIntersectionFollowTheWordWidth) {
+  EXPECT_DOUBLE_EQ(bytes_per_intersection(pipeline::FloatFormat(8, 23)), 3 * 4 + 0.125);  // 32 bits: one per word
+  EXPECT_DOUBLE_EQ(bytes_per_intersection(pipeline::FloatFormat(6, 13)), 3 * 4 + 0.125);  // 20 bits: one per word
+  EXPECT_DOUBLE_EQ(bytes_per_intersection(pipeline::FloatFormat(5, 10)), 3 * 2 + 0.125);  // 16 bits: two per word
+  EXPECT_DOUBLE_EQ(bytes_per_intersection(pipeline::FloatFormat(5, 7)), 3 * 2 + 0.125);   // 13 bits: two per word
+  EXPECT_DOUBLE_EQ(bytes_per_intersection(pipeline::FloatFormat(2, 5)), 3 * 1 + 0.125);   // 8 bits: four per word
+  EXPECT_DOUBLE_EQ(bytes_per_intersection(pipeline::FloatFormat(10, 24)), 3 * 8 + 0.125); // 35 bits: two words
+}
+
+// The table of docs/pipeline.md ("Resources, clock and lanes that fit"), printed by this test.
+TEST(ThroughputEstimates, FixedAndFloatLanesAtFullRate) {
+  const char* devices[] = {"xc2v6000", "virtex4-sx55", "spartan3-5000"};
+  std::printf("| device | arithmetic | word bits | lanes (block + slice mults) | slices | block mults | clock MHz | "
+              "intersections/s | bytes/intersection | GB/s needed | of RC2000's 2.4 GB/s |\n"
+              "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (const char* name : devices) {
+    const DeviceProfile d = find_device_profile(name);
+    std::vector<FullRateFit> rows;
+    for (int bits : {15, 19, 23}) rows.push_back(fixed_full_rate_fit(d, bits));
+    for (const auto& [e, m] : {std::pair{8, 23}, {6, 13}, {5, 10}, {5, 7}}) rows.push_back(float_full_rate_fit(d, pipeline::FloatFormat(e, m)));
+    for (const FullRateFit& r : rows) {
+      EXPECT_DOUBLE_EQ(r.intersections_per_s, r.lanes * r.clock_mhz * 1e6);
+      EXPECT_DOUBLE_EQ(r.gb_per_s_needed, r.intersections_per_s * r.bytes_per_intersection / 1e9);
+      EXPECT_DOUBLE_EQ(r.rc2000_gb_per_s, 2.4);
+      const bool is_float = r.arithmetic.rfind("float:", 0) == 0;
+      const int word = is_float ? pipeline::parse_float_format(r.arithmetic).bits_per_value() : std::stoi(r.arithmetic.substr(6));
+      std::printf("| %s | %s | %d | %d (%d + %d) | %d | %d | %.1f | %.3g | %.3f | %.2f | %.0f%% |\n", r.device.c_str(),
+                  r.arithmetic.c_str(), word, r.lanes, r.hard_lanes, r.soft_lanes, r.slices, r.block_multipliers, r.clock_mhz,
+                  r.intersections_per_s, r.bytes_per_intersection, r.gb_per_s_needed,
+                  100 * r.gb_per_s_needed / r.rc2000_gb_per_s);
+    }
   }
 }
 

@@ -144,3 +144,96 @@ TEST(PipelineResources, ReferenceDeviceIsTheXc2v6000) {
 
 }  // namespace
 }  // namespace rc::pipeline
+
+// ---- Floating point: estimates by the documented rules (docs/pipeline.md, "Resources, clock and
+// lanes that fit"); the hand computations below follow resource_model.cpp's rules term by term.
+namespace rc::pipeline {
+namespace {
+
+TEST(PipelineResourcesFloat, FamiliesFollowThePartPrefix) {
+  EXPECT_EQ(model().float_family_of_part("XC2V6000").name, "Virtex-II");
+  EXPECT_EQ(model().float_family_of_part("XC2V6000").block_multiplier, "MULT18X18");
+  EXPECT_EQ(model().float_family_of_part("XC4VSX55").block_multiplier, "DSP48");
+  EXPECT_EQ(model().float_family_of_part("xc3s5000").name, "Spartan-3");
+  EXPECT_THROW(model().float_family_of_part("XC7K70T"), std::invalid_argument);
+}
+
+TEST(PipelineResourcesFloat, CalibrationsOnThePapersFixedLanes) {
+  // Slice multipliers: (5471 - 1976) slices over sum(a*b) = 12*16*16 + 12*16*17 + 3*19*2 = 6450.
+  EXPECT_DOUBLE_EQ(model().soft_multiplier_slices_per_bit_product(), (5471.0 - 1976.0) / 6450.0);
+  // Counted fixed arithmetic: 266 LUTs at 7 bits, 483 at 15; glue = Table 1 minus ceil(LUTs/2):
+  // 1128 - 133 = 995 and 1976 - 242 = 1734, linear in between and beyond.
+  EXPECT_EQ(ResourceModel::fixed_arithmetic_luts(7), 266);
+  EXPECT_EQ(ResourceModel::fixed_arithmetic_luts(15), 483);
+  EXPECT_DOUBLE_EQ(model().glue_slices(7), 995);
+  EXPECT_DOUBLE_EQ(model().glue_slices(15), 1734);
+  EXPECT_DOUBLE_EQ(model().glue_slices(32), 995 + (1734.0 - 995) * 25 / 8);
+}
+
+TEST(PipelineResourcesFloat, OperatorsByTheCountingRules) {
+  // float:8,23: p = 24, w = 27, L = 5. Adder 18 + 48 + 270 + 9 + 28 + 27 + 25 + 10 + 16 = 451 LUTs.
+  const FloatOperatorCost a823 = model().float_adder(FloatFormat(8, 23));
+  EXPECT_EQ(a823.luts, 451);
+  EXPECT_EQ(a823.slices, 226);
+  // Multiplier: 2*10 + 24 + 25 + 1 + 16 = 86, plus 3 adders of 48 bits for 4 blocks = 230 LUTs.
+  const FloatOperatorCost m823 = model().float_multiplier(FloatFormat(8, 23), true);
+  EXPECT_EQ(m823.luts, 230);
+  EXPECT_EQ(m823.slices, 115);
+  EXPECT_EQ(m823.block_multipliers, 4);
+  // In slices: ceil(86 / 2) + ceil(0.5419 * 576) = 43 + 313.
+  EXPECT_EQ(model().float_multiplier(FloatFormat(8, 23), false).slices, 356);
+  // float:5,10: p = 11, w = 14, L = 4. Adder 12 + 22 + 112 + 5 + 15 + 14 + 12 + 7 + 10 = 209.
+  EXPECT_EQ(model().float_adder(FloatFormat(5, 10)).slices, 105);
+  const FloatOperatorCost m510 = model().float_multiplier(FloatFormat(5, 10), true);
+  EXPECT_EQ(m510.luts, 48);
+  EXPECT_EQ(m510.block_multipliers, 1);
+  EXPECT_EQ(model().float_multiplier(FloatFormat(5, 10), false).slices, 24 + 66);
+  // Block tiling ceil(p/17)^2.
+  EXPECT_EQ(ResourceModel::float_multiplier_blocks(FloatFormat(5, 16)), 1);  // p = 17
+  EXPECT_EQ(ResourceModel::float_multiplier_blocks(FloatFormat(5, 17)), 4);  // p = 18
+  EXPECT_EQ(ResourceModel::float_multiplier_blocks(FloatFormat(8, 24)), 4);  // p = 25
+}
+
+TEST(PipelineResourcesFloat, LanesByHand) {
+  for (const FloatFamily& family : model().float_families()) {
+    // float:8,23: 24 x 115 + 21 x 226 + ceil(113 / 2) + round(3304.375) = 10867 slices, 96 blocks.
+    const FloatPipelineResources s = model().float_pipeline(FloatFormat(8, 23), family, true);
+    EXPECT_EQ(s.multipliers, 24);
+    EXPECT_EQ(s.add_subs, 21);
+    EXPECT_EQ(s.decision_slices, 57);
+    EXPECT_EQ(s.glue_slices, 3304);
+    EXPECT_EQ(s.slices, 10867) << family.name;
+    EXPECT_EQ(s.block_multipliers, 96);
+    EXPECT_EQ(s.clock_frac_bits, 24);
+    EXPECT_DOUBLE_EQ(s.clock_mhz, model().pipeline(24, true).clock_mhz);
+    EXPECT_TRUE(s.clock_extrapolated);
+    EXPECT_EQ(model().float_pipeline(FloatFormat(8, 23), family, false).slices, 16651);
+    // float:5,10: 24 x 24 + 21 x 105 + 31 + round(1826.375) = 4638 slices, 24 blocks, clock of 11 bits.
+    const FloatPipelineResources h = model().float_pipeline(FloatFormat(5, 10), family, true);
+    EXPECT_EQ(h.slices, 4638) << family.name;
+    EXPECT_EQ(h.block_multipliers, 24);
+    EXPECT_DOUBLE_EQ(h.clock_mhz, model().pipeline(11, true).clock_mhz);
+    EXPECT_FALSE(h.clock_extrapolated);
+    EXPECT_EQ(model().float_pipeline(FloatFormat(5, 10), family, false).slices, 6222);
+  }
+}
+
+TEST(PipelineResourcesFloat, MonotoneInTheFraction) {
+  const FloatFamily& family = model().float_family("Virtex-4");
+  for (int e : {5, 8}) {
+    for (bool hard : {true, false}) {
+      FloatPipelineResources previous = model().float_pipeline(FloatFormat(e, 1), family, hard);
+      for (int m = 2; m <= kMaxFractionBits; ++m) {
+        const FloatPipelineResources r = model().float_pipeline(FloatFormat(e, m), family, hard);
+        EXPECT_GT(r.slices, previous.slices) << e << "," << m;
+        EXPECT_GE(r.block_multipliers, previous.block_multipliers);
+        EXPECT_LE(r.clock_mhz, previous.clock_mhz) << e << "," << m;
+        EXPECT_GT(r.adder.luts, previous.adder.luts);
+        previous = r;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace rc::pipeline

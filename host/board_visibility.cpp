@@ -40,8 +40,20 @@ std::size_t BoardVisibility::set_size(std::size_t s) const {
 
 // ---- bus access -----------------------------------------------------------------------------------
 
+bool BoardVisibility::tracing() const { return trace_ != nullptr && trace_->wants(cpu_.step()); }
+
 void BoardVisibility::host_event(const char* name, const sc_time& from) {
-  if (trace_ != nullptr && trace_->wants(cpu_.step())) trace_->complete("host", name, from, cpu_.now());
+  if (tracing()) trace_->complete(track("host"), name, from, cpu_.now());
+}
+
+void BoardVisibility::acquire_bus() {
+  if (options_.bus_turn == nullptr) return;
+  cpu_.sync();
+  options_.bus_turn->acquire();
+}
+
+void BoardVisibility::release_bus() {
+  if (options_.bus_turn != nullptr) options_.bus_turn->release();
 }
 
 // Register accesses are temporally decoupled like the DMAs: issued at the host's local time, which
@@ -75,9 +87,11 @@ void BoardVisibility::set_payload(tlm::tlm_generic_payload& trans, tlm::tlm_comm
 // Temporally decoupled: the access is issued at the host's local time, which moves to its
 // completion; the time it took counts as PCI time. Returns that time.
 sc_time BoardVisibility::decoupled_access(tlm::tlm_generic_payload& trans) {
+  acquire_bus();
   const sc_time issued = cpu_.local();
   sc_time delay = issued;
   pci_->b_transport(trans, delay);
+  release_bus();
   cpu_.set_local(delay);
   stats_.pci += delay - issued;
   return delay - issued;
@@ -124,25 +138,27 @@ void BoardVisibility::programmed_io(tlmx::DmaDirection direction, void* host, st
   stats_.pio += took;
   ++stats_.pio_transfers;
   (write ? stats_.pio_bytes_written : stats_.pio_bytes_read) += bytes;
-  if (trace_ != nullptr && trace_->wants(cpu_.step())) {
-    trace_->complete("host", std::string("pio ") + what, start, cpu_.now(), {{"bytes", bytes}});
+  if (tracing()) {
+    trace_->complete(track("host"), std::string("pio ") + what, start, cpu_.now(), {{"bytes", bytes}});
   }
 }
 
 void BoardVisibility::dma(tlmx::DmaDirection direction, void* host, std::uint64_t address, std::uint64_t bytes,
                           const char* what, bool no_data) {
   cpu_.charge(DriverWork::Call, 1);
+  acquire_bus();
   // Temporally decoupled: issued at the host's local time, which moves to the completion. The bus
   // reserves itself at each burst's request time, so the times are those of a synced transfer.
   sc_time local = cpu_.local();
   const tlmx::DmaResult r = ports_.dma.transfer({direction, host, address, bytes, no_data}, local);
+  release_bus();
   cpu_.set_local(local);
   if (!r.ok()) throw std::runtime_error(std::string("DMA of ") + what + " failed");
   stats_.pci += r.duration();
   ++stats_.dma_transfers;
-  if (trace_ != nullptr && trace_->wants(cpu_.step())) {
-    trace_->complete("dma", what, r.start, r.end, {{"bytes", bytes}});
-    trace_->complete("host", std::string("dma ") + what, r.start, r.end);
+  if (tracing()) {
+    trace_->complete(track("dma"), what, r.start, r.end, {{"bytes", bytes}});
+    trace_->complete(track("host"), std::string("dma ") + what, r.start, r.end);
   }
 }
 
@@ -395,7 +411,7 @@ void BoardVisibility::finish_pass(const Pass& pass) {
   ports_.irq.wait_raised();
   stats_.waiting += sc_core::sc_time_stamp() - from;
   host_event("wait for interrupt", from);
-  if (trace_ != nullptr && trace_->wants(cpu_.step())) trace_->instant("irq", "seen by host", sc_core::sc_time_stamp());
+  if (tracing()) trace_->instant(track("irq"), "seen by host", sc_core::sc_time_stamp());
   const std::uint32_t status = read_register(reg::kStatus);
   write_registers(reg::kStatus, {reg::kDone | reg::kError});  // acknowledge: lowers the interrupt
   if (status & reg::kError) {
@@ -469,12 +485,12 @@ void BoardVisibility::pass_finished(const board::PassRecord& r) {
   PassLimitTally& limit = stats_.limits[r.limit];
   ++limit.passes;
   limit.fpga_busy += r.end - r.start;
-  if (trace_ == nullptr || !trace_->wants(cpu_.step())) return;
+  if (!tracing()) return;
   for (std::size_t l = 0; l < r.lane_rays.size(); ++l) {
-    trace_->complete("lane " + std::to_string(l), "pass", r.start, r.end,
+    trace_->complete(track("lane ") + std::to_string(l), "pass", r.start, r.end,
                      {{"rays", r.lane_rays[l]}, {"faces", r.faces}, {"cycles", r.cycles}, {"limit", r.limit}});
   }
-  trace_->instant("irq", "raised by board", r.end);
+  trace_->instant(track("irq"), "raised by board", r.end);
 }
 
 }  // namespace rc

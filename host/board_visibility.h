@@ -32,6 +32,7 @@
 #include "tlm/dma_engine.h"
 #include "tlm/irq_line.h"
 #include "host/host_cpu_model.h"
+#include "host/timing_replay_target.h"
 #include "radiosity/visibility.h"
 #include "pipeline/fixed_mt.h"
 #include "tlm/no_data_extension.h"
@@ -41,6 +42,19 @@ namespace rc {
 
 class TraceWriter;
 
+// Drivers of several cards take turns at the bus: with a turn, the driver syncs its local time and
+// calls acquire() before every bus access (a DMA request, a register burst, a programmed I/O
+// buffer) and release() right after the bus call returned, before anything can wait. The bus
+// arbitrates in call order (tlm/pci_bus.h), so syncing first makes call order time order, and the
+// turn orders accesses requested at the same time in a fixed way, whatever order the SystemC
+// scheduler happens to run the drivers' threads in.
+class BusTurn {
+ public:
+  virtual ~BusTurn() = default;
+  virtual void acquire() = 0;
+  virtual void release() = 0;
+};
+
 struct BoardVisibilityOptions {
   bool concurrent = false;     // paper sec 4.3
   bool allow_batching = true;  // false: a scene beyond one batch/set is an error
@@ -48,6 +62,10 @@ struct BoardVisibilityOptions {
   // or a culled fixed-point kernel at the same width). When set, the lanes copy its answer instead
   // of testing every ray against every face; timing, traffic and data movement are unchanged.
   VisibilityBackend* oracle = nullptr;
+  // Several cards (host/multi_card_visibility.h): the trace tracks of this card ("card 1 host",
+  // "card 1 dma", ...), and turns at the bus (BusTurn). Neither changes a time of one card alone.
+  std::string trace_prefix;
+  BusTurn* bus_turn = nullptr;
 };
 
 // Passes whose stream was bounded by one term of the pass time (PassRecord::limit: "lanes",
@@ -93,7 +111,7 @@ struct BoardPorts {
   WrapperSideband sideband;
 };
 
-class BoardVisibility : public VisibilityBackend {
+class BoardVisibility : public VisibilityBackend, public TimingReplayTarget {
  public:
   BoardVisibility(BoardPorts ports, HostCpuModel& cpu, BoardVisibilityOptions options = {},
                   TraceWriter* trace = nullptr);
@@ -115,8 +133,8 @@ class BoardVisibility : public VisibilityBackend {
   // without the data: rays and results move as transfers of their real sizes that carry no bytes
   // (tlmx::NoDataExtension), the own-face table and faces move for real, and the lanes do not compute.
   // Only the fast wrapper model supports it.
-  void submit_timing_only(std::size_t segments, int source_face);
-  void collect_timing_only();
+  void submit_timing_only(std::size_t segments, int source_face) override;
+  void collect_timing_only() override;
 
  private:
   struct Pass {
@@ -162,6 +180,10 @@ class BoardVisibility : public VisibilityBackend {
   bool per_word() const;
   bool dual_cpu() const;  // concurrent, with form factors on the second processor
   void host_event(const char* name, const sc_core::sc_time& from);
+  bool tracing() const;
+  std::string track(const char* name) const { return options_.trace_prefix + name; }
+  void acquire_bus();  // with a BusTurn: sync, then wait for the turn
+  void release_bus();
 
   std::size_t batch_first(std::size_t b) const { return b * rays_per_batch_; }
   std::size_t batch_size(std::size_t b) const;

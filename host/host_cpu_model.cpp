@@ -126,7 +126,7 @@ void HostCpuModel::advance(const sc_core::sc_time& cost, Name&& name, bool compu
   keeper_.inc(cost);
   const sc_core::sc_time to = now();
   if (compute) intervals_.emplace_back(from, to);
-  if (trace_ != nullptr && trace_->wants(step())) trace_->complete("host", name(), from, to);
+  if (trace_ != nullptr && trace_->wants(step())) trace_->complete(trace_track_, name(), from, to);
   if (!free_running_ && keeper_.need_sync()) keeper_.sync();
 }
 

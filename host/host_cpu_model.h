@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -109,7 +110,14 @@ class HostCpuModel : public HostCostSink {
   void set_local(const sc_core::sc_time& local);
 
   int step() const { return steps_done_ + 1; }  // the shooting step being worked on (from 1)
-  void set_trace(TraceWriter* trace) { trace_ = trace; }
+  // A processor that never charges HostWork::Step (a card's driver, host/multi_card_visibility.h)
+  // follows the solver's step this way, for the trace's step range.
+  void set_step(int step) { steps_done_ = step - 1; }
+  // Its charges go to the trace's `track` ("host" unless said otherwise).
+  void set_trace(TraceWriter* trace, std::string track = "host") {
+    trace_ = trace;
+    trace_track_ = std::move(track);
+  }
 
   // Host compute intervals since the last clear, to measure overlap with a board pass.
   void clear_intervals() { intervals_.clear(); }
@@ -141,6 +149,7 @@ class HostCpuModel : public HostCostSink {
   sc_core::sc_time second_cpu_compute_ = sc_core::SC_ZERO_TIME, second_cpu_wait_ = sc_core::SC_ZERO_TIME;
   bool free_running_ = false;
   TraceWriter* trace_ = nullptr;
+  std::string trace_track_ = "host";
   std::vector<std::pair<sc_core::sc_time, sc_core::sc_time>> intervals_;
 };
 

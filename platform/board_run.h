@@ -18,6 +18,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 #include <systemc>
@@ -27,8 +28,10 @@
 #include "board/rc2000.h"
 #include "host/board_visibility.h"
 #include "host/host_cpu_model.h"
+#include "host/multi_card_visibility.h"
 #include "radiosity/radiosity.h"
 #include "host/trace_writer.h"
+#include "platform/card_options.h"
 #include "platform/run_report.h"
 #include "radiosity/visibility_recording.h"
 #include "scenes/scene.h"
@@ -53,6 +56,11 @@ struct BoardRunOptions {
   VisibilityBackend* oracle = nullptr;  // lanes' answer from a bit-identical host model (BoardVisibilityOptions)
   bool print_summaries = false;         // the tlm parts' one-line summaries at the end
   std::function<void(const StepProgress&)> on_progress;  // after every step (host thread)
+  // Several identical cards (docs/board.md, "Several cards"): how many (1..16, checked when set),
+  // how a step is split over them, and whether they share one PCI bus.
+  CardCount cards = 1;
+  CardSplit card_split = CardSplit::rays;
+  CardBus card_bus = CardBus::shared;
 };
 
 struct BoardRunResult {
@@ -77,15 +85,27 @@ struct BoardSetup {
   // solver, and the board runs the same passes without data. The result then has no radiosity.
   const VisibilityRecording* replay = nullptr;
   std::function<void(const StepProgress&)> on_progress;
+  CardCount cards = 1;  // identical cards, each `board`
+  CardSplit card_split = CardSplit::rays;
+  CardBus card_bus = CardBus::shared;
 };
 
 // Loads the profiles and checks the options (throws std::invalid_argument).
 BoardSetup make_board_setup(const BoardRunOptions& options);
 
+// One card: the host PC and one RC2000, its driver on the host thread. Several cards (setup.cards):
+// identical RC2000s, each with its own PCI bus (its BARs) and a host PCI master of its own; with
+// CardBus::shared the buses share card 0's arbitration (tlm/pci_bus.h), so they are one bus in
+// time; the solver talks to MultiCardVisibility, whose driver threads run the cards.
 class BoardSystem : public sc_core::sc_module {
  public:
-  tlm_utils::simple_initiator_socket<BoardSystem> host_out;  // the host CPU's PCI master (registers)
-  board::Rc2000 board;
+  tlm_utils::simple_initiator_socket<BoardSystem> host_out;  // the host CPU's PCI master of card 0
+
+ private:
+  std::vector<std::unique_ptr<board::Rc2000>> m_cards;  // before `board`, which is card 0
+
+ public:
+  board::Rc2000& board;  // card 0 (the only one unless setup.cards > 1)
 
   BoardSystem(const sc_core::sc_module_name& name, const Scene& scene, const SolverOptions& solver,
               const BoardSetup& setup);
@@ -94,20 +114,29 @@ class BoardSystem : public sc_core::sc_module {
   void rethrow_if_failed() const;
   const SolverResult& result() const { return m_result; }
   sc_core::sc_time end_time() const { return m_end; }  // when the host thread finished
-  const HostCpuModel& cpu() const { return m_cpu; }
-  const BoardVisibility& driver() const { return *m_visibility; }
+  const HostCpuModel& cpu() const { return m_cpu; }     // the solver's processor
+  const BoardVisibility& driver() const { return card_driver(0); }
+  unsigned cards() const { return static_cast<unsigned>(m_cards.size()); }
+  board::Rc2000& card(unsigned c) { return *m_cards.at(c); }
+  const board::Rc2000& card(unsigned c) const { return *m_cards.at(c); }
+  const BoardVisibility& card_driver(unsigned c) const;
+  const HostCpuModel& card_cpu(unsigned c) const;  // the processor card c's driver runs on
+  const MultiCardVisibility* multi_card() const { return m_multi.get(); }  // null with one card
   TraceWriter& trace() { return m_trace; }
   RunReport report(double wall_seconds = -1) const;
 
  private:
   void run();
+  CardsReport cards_report(double total) const;
 
   const Scene& m_scene;
   SolverOptions m_solver;
   BoardSetup m_setup;
   HostCpuModel m_cpu;
   TraceWriter m_trace;
-  std::unique_ptr<BoardVisibility> m_visibility;
+  std::unique_ptr<BoardVisibility> m_visibility;  // one card
+  std::unique_ptr<MultiCardVisibility> m_multi;   // several
+  std::vector<std::unique_ptr<tlm_utils::simple_initiator_socket<BoardSystem>>> m_card_out;  // cards 1..
   SolverResult m_result;
   sc_core::sc_time m_end = sc_core::SC_ZERO_TIME;
   bool m_finished = false;

@@ -24,8 +24,13 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(BankUseReport, bank, role, reads, writes, byt
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LaneReport, lane, rate, rays, utilisation)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(StreamLimitReport, limit, passes, fpga_busy_seconds)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(IntersectionReport, tests, per_second, per_second_while_fpga_busy)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CardReport, card, faces, passes, tests, fpga_busy_seconds, bytes_to_board, bytes_to_host,
+                                   pci_bus_busy_seconds, pci_bus_wait_seconds, driver_cpu_seconds, pci_transfer_seconds,
+                                   waiting_seconds, idle_seconds)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(BusReport, cards, busy_seconds, utilisation)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CardsReport, count, split, bus, buses, per_card)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(BoardDetail, device, layout, max_rays_per_batch, max_faces_per_set, batching, pci, banks,
-                                   lanes, stream_limits, driver_model, driver)
+                                   lanes, stream_limits, driver_model, driver, cards)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(RunReport, board_run, simulated_seconds, time, intersections, host_profile, work, board,
                                    has_wall, wall_seconds, wall_seconds_per_step)
 
@@ -45,22 +50,27 @@ namespace {
 
 using nlohmann::ordered_json;
 
-ordered_json time_json(const RunTime& t) {
+ordered_json time_json(const RunTime& t, unsigned cards) {
   ordered_json j = {{"host_compute_seconds", t.host_compute},
                     {"driver_cpu_seconds", t.driver_cpu},
                     {"pci_transfer_seconds", t.pci_transfer},
                     {"waiting_seconds", t.waiting},
                     {"fpga_busy_seconds", t.fpga_busy},
                     {"overlap_seconds", t.overlap}};
+  const std::string several =
+      cards > 1 ? " With several cards the drivers run on their own threads (cards.per_card: driver_cpu + "
+                  "pci_transfer + waiting + idle = simulated_seconds each): the host thread's driver_cpu and "
+                  "pci_transfer are 0, waiting is its wait for the cards, fpga_busy the sum over the cards."
+                : "";
   if (t.second_cpu) {
     j["second_cpu_compute_seconds"] = t.second_cpu_compute;
     j["second_cpu_wait_seconds"] = t.second_cpu_wait;
     j["note"] = "host_compute + driver_cpu + pci_transfer + waiting + second_cpu_wait = simulated_seconds (the "
                 "first processor's timeline); the second computes the form factors (second_cpu_compute) beside "
-                "it; fpga_busy overlaps host compute by overlap_seconds";
+                "it; fpga_busy overlaps host compute by overlap_seconds" + several;
   } else {
     j["note"] = "host_compute + driver_cpu + pci_transfer + waiting = simulated_seconds (the host thread's "
-                "timeline); fpga_busy runs beside it, overlapping host compute by overlap_seconds";
+                "timeline); fpga_busy runs beside it, overlapping host compute by overlap_seconds" + several;
   }
   return j;
 }
@@ -120,12 +130,36 @@ ordered_json banks_json(const std::vector<BankUseReport>& banks) {
   return out;
 }
 
+ordered_json cards_json(const CardsReport& c) {
+  ordered_json buses = ordered_json::array();
+  for (const BusReport& b : c.buses) {
+    buses.push_back({{"cards", b.cards}, {"busy_seconds", b.busy_seconds}, {"utilisation", b.utilisation}});
+  }
+  ordered_json cards = ordered_json::array();
+  for (const CardReport& k : c.per_card) {
+    cards.push_back({{"card", k.card},
+                     {"faces", k.faces},
+                     {"passes", k.passes},
+                     {"tests", k.tests},
+                     {"fpga_busy_seconds", k.fpga_busy_seconds},
+                     {"bytes_to_board", k.bytes_to_board},
+                     {"bytes_to_host", k.bytes_to_host},
+                     {"pci_bus_busy_seconds", k.pci_bus_busy_seconds},
+                     {"pci_bus_wait_seconds", k.pci_bus_wait_seconds},
+                     {"driver_cpu_seconds", k.driver_cpu_seconds},
+                     {"pci_transfer_seconds", k.pci_transfer_seconds},
+                     {"waiting_seconds", k.waiting_seconds},
+                     {"idle_seconds", k.idle_seconds}});
+  }
+  return {{"count", c.count}, {"split", c.split}, {"bus", c.bus}, {"buses", buses}, {"per_card", cards}};
+}
+
 ordered_json board_json(const RunReport& r) {
   const BoardDetail& b = r.board;
   ordered_json j;
   j["schema"] = "rc2000sim.board/1";
   j["simulated_seconds"] = r.simulated_seconds;
-  j["time"] = time_json(r.time);
+  j["time"] = time_json(r.time, b.cards.count);
   j["device"] = device_json(b.device);
   j["layout"] = layout_json(b.layout);
   j["capacity"] = {{"max_rays_per_batch", b.max_rays_per_batch}, {"max_faces_per_set", b.max_faces_per_set}};
@@ -141,6 +175,7 @@ ordered_json board_json(const RunReport& r) {
               {"register_accesses", b.pci.register_accesses},
               {"bus_transactions", b.pci.bus_transactions},
               {"bus_busy_seconds", b.pci.bus_busy_seconds}};
+  if (b.cards.count > 1) j["cards"] = cards_json(b.cards);
   j["banks"] = banks_json(b.banks);
   ordered_json lanes = ordered_json::array();
   for (const LaneReport& l : b.lanes) {

@@ -21,7 +21,9 @@ struct WorkTally {
 };
 
 // The host thread's timeline: host_compute + driver_cpu + pci_transfer + waiting (+ second_cpu_wait
-// with the dual-processor overlap) = simulated_seconds; fpga_busy runs beside it.
+// with the dual-processor overlap) = simulated_seconds; fpga_busy runs beside it. With several cards
+// the drivers run on their own threads (BoardDetail::cards): the host thread's driver_cpu and
+// pci_transfer are 0, waiting is its wait for the cards, fpga_busy the sum over the cards.
 struct RunTime {
   double host_compute = 0, driver_cpu = 0, pci_transfer = 0, waiting = 0;
   double fpga_busy = 0, overlap = 0;
@@ -102,7 +104,32 @@ struct IntersectionReport {
   double per_second = 0, per_second_while_fpga_busy = 0;  // the latter: board runs
 };
 
-// Board runs only.
+// One card of several (docs/board.md, "Several cards").
+struct CardReport {
+  unsigned card = 0;
+  std::uint64_t faces = 0, passes = 0, tests = 0;  // faces it holds; its passes and ray-face tests
+  double fpga_busy_seconds = 0;
+  std::uint64_t bytes_to_board = 0, bytes_to_host = 0;
+  double pci_bus_busy_seconds = 0, pci_bus_wait_seconds = 0;  // its transfers' bus occupancy, arbitration waits
+  // Its driver thread's timeline: driver_cpu + pci_transfer + waiting + idle = simulated_seconds.
+  double driver_cpu_seconds = 0, pci_transfer_seconds = 0, waiting_seconds = 0, idle_seconds = 0;
+};
+
+// One PCI bus (segment) and the cards on it.
+struct BusReport {
+  std::vector<unsigned> cards;
+  double busy_seconds = 0, utilisation = 0;  // occupancy, and its share of simulated_seconds
+};
+
+struct CardsReport {
+  unsigned count = 1;  // 1: the section is not in the document
+  std::string split, bus;  // "rays" | "faces", "shared" | "separate"
+  std::vector<BusReport> buses;
+  std::vector<CardReport> per_card;
+};
+
+// Board runs only. With several cards: the sums over the cards (banks and lanes index by index;
+// device, layout and capacity are every card's), and the cards one by one in `cards`.
 struct BoardDetail {
   DeviceReport device;
   LayoutReport layout;
@@ -114,6 +141,7 @@ struct BoardDetail {
   std::vector<StreamLimitReport> stream_limits;
   std::string driver_model;  // DriverModel::name()
   std::array<WorkTally, kDriverWorkKinds> driver{};
+  CardsReport cards;
 };
 
 struct RunReport {

@@ -3,13 +3,13 @@
 #include <stdexcept>
 #include <string>
 
-#include "host/board_visibility.h"
+#include "host/timing_replay_target.h"
 
 namespace rc {
 
 // Mirrors ProgressiveRadiosity::run and shoot: the charges, the visibility calls and their order.
 void replay_host_work(const VisibilityRecording& recording, const ReplayShape& shape, HostCostSink& host,
-                      BoardVisibility* board) {
+                      TimingReplayTarget* board) {
   if (shape.steps < 0 || static_cast<std::size_t>(shape.steps) > recording.steps()) {
     throw std::invalid_argument("the recording has " + std::to_string(recording.steps()) + " steps, " +
                                 std::to_string(shape.steps) + " were asked for");

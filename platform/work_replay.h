@@ -11,7 +11,7 @@
 
 namespace rc {
 
-class BoardVisibility;
+class TimingReplayTarget;  // host/timing_replay_target.h: one card's driver or several cards'
 
 struct ReplayShape {
   std::size_t patches = 0;  // the solver scans every patch to choose each shooter
@@ -22,6 +22,6 @@ struct ReplayShape {
 // the recorded brute-force test count. Throws std::invalid_argument if the recording is too short.
 // Call from the host SC_THREAD; the board's faces must already be loaded.
 void replay_host_work(const VisibilityRecording& recording, const ReplayShape& shape, HostCostSink& host,
-                      BoardVisibility* board);
+                      TimingReplayTarget* board);
 
 }  // namespace rc

@@ -79,19 +79,20 @@ void PciBus::b_transport(int port, tlm::tlm_generic_payload& trans, sc_core::sc_
   const sc_core::sc_time request = sc_core::sc_time_stamp() + delay;
   const std::uint64_t bytes = trans.get_data_length();
   const std::optional<Decoded> hit = m_map.decode(trans.get_address(), bytes);
-  const sc_core::sc_time start = std::max(request, m_bus_free_at);
+  sc_core::sc_time& bus_free_at = m_arbiter->m_bus_free_at;
+  const sc_core::sc_time start = std::max(request, bus_free_at);
   const ProgrammedIoExtension* pio = trans.get_extension<ProgrammedIoExtension>();
   const sc_core::sc_time bus_time =
       pio != nullptr ? programmed_io_time(bytes, pio->access_bytes, trans.is_read(), pio->read_round_trip)
                      : transfer_time(bytes);
   const sc_core::sc_time occupancy = hit ? std::max(bus_time, forward(trans, *hit, start)) : master_abort(trans);
-  m_bus_free_at = start + occupancy;
+  bus_free_at = start + occupancy;
   PciInitiatorReport& c = counters(port);
   count(c, trans, occupancy, start - request);
   if (!hit) ++c.address_errors;
   // A target that called wait() may have moved simulated time past the completion time.
   const sc_core::sc_time now = sc_core::sc_time_stamp();
-  delay = m_bus_free_at > now ? m_bus_free_at - now : sc_core::SC_ZERO_TIME;
+  delay = bus_free_at > now ? bus_free_at - now : sc_core::SC_ZERO_TIME;
 }
 
 unsigned int PciBus::transport_dbg(int, tlm::tlm_generic_payload& trans) {
@@ -106,6 +107,20 @@ unsigned int PciBus::transport_dbg(int, tlm::tlm_generic_payload& trans) {
   trans.set_address(address);
   trans.set_data_length(length);
   return done;
+}
+
+void PciBus::share_arbitration_with(PciBus& owner) {
+  if (sc_core::sc_get_status() != sc_core::SC_ELABORATION && sc_core::sc_get_status() != sc_core::SC_BEFORE_END_OF_ELABORATION) {
+    SC_REPORT_ERROR(kMsgType, (std::string(name()) + ": share_arbitration_with must be called during elaboration").c_str());
+  }
+  PciBus* root = owner.m_arbiter;  // a chain of sharing ends at the bus that owns the arbitration
+  if (root == this) SC_REPORT_ERROR(kMsgType, (std::string(name()) + ": cannot share arbitration with itself").c_str());
+  if (m_sharers != 0) {
+    SC_REPORT_ERROR(kMsgType, (std::string(name()) + ": other buses already share this bus's arbitration").c_str());
+  }
+  if (m_arbiter != this) --m_arbiter->m_sharers;
+  m_arbiter = root;
+  ++root->m_sharers;
 }
 
 PciInitiatorReport& PciBus::counters(int port) {
@@ -137,7 +152,7 @@ void PciBus::end_of_elaboration() {
 PciBusReport PciBus::report() const {
   PciBusReport r;
   r.initiators = m_initiators;
-  r.bus_free_at = m_bus_free_at;
+  r.bus_free_at = m_arbiter->m_bus_free_at;
   for (const PciInitiatorReport& c : m_initiators) {
     r.total.transactions += c.transactions;
     r.total.bytes_written += c.bytes_written;

@@ -32,6 +32,11 @@
 // their local offset) before each transfer; DmaEngine does whenever its quantum keeper asks, which
 // is before every burst with the default global quantum of zero.
 //
+// Shared arbitration (several cards on one bus): each card keeps its own PciBus (its BAR windows,
+// its counters), and share_arbitration_with(owner) makes this bus use the owner's bus_free_at, so a
+// transfer on any of the buses waits for every other one exactly as the policy above says, as if
+// they were one bus. Without it nothing changes.
+//
 // Only b_transport and transport_dbg are offered: DMI is refused (every PCI access must be
 // arbitrated and timed), and nb_transport (AT) is not modelled.
 #pragma once
@@ -95,7 +100,13 @@ class PciBus : public sc_core::sc_module {
   sc_core::sc_time programmed_io_time(std::uint64_t bytes, unsigned access_bytes, bool read,
                                       const sc_core::sc_time& read_round_trip) const;
 
-  PciBusReport report() const;
+  // From now on this bus arbitrates with `owner` (and every bus sharing with it): one bus_free_at
+  // for all of them. Call during elaboration, before any transfer; SC_REPORT_ERROR if called later,
+  // with this bus itself, or when other buses already share this one's arbitration.
+  void share_arbitration_with(PciBus& owner);
+  bool shares_arbitration() const { return m_arbiter != this; }
+
+  PciBusReport report() const;  // bus_free_at: of the shared arbitration when shared
   std::string summary() const;
 
  private:
@@ -113,7 +124,9 @@ class PciBus : public sc_core::sc_module {
 
   PciBusConfig m_config;
   AddressMap m_map;
-  sc_core::sc_time m_bus_free_at = sc_core::SC_ZERO_TIME;
+  sc_core::sc_time m_bus_free_at = sc_core::SC_ZERO_TIME;  // of this bus's arbitration when it owns it
+  PciBus* m_arbiter = this;  // whose bus_free_at arbitrates this bus (itself unless shared)
+  unsigned m_sharers = 0;    // buses arbitrating through this one
   std::vector<PciInitiatorReport> m_initiators;
 };
 

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 
 #include "tests/tlm/tlm_test_support.h"
 #include "tlm/pci_bus.h"
@@ -199,6 +200,65 @@ TEST(PciBus, ProgrammedIoIsOneTransactionPerWord) {
   EXPECT_EQ(bus.programmed_io_time(6, 4, true, sc_time(700, SC_NS)), sc_time(2 * 970, SC_NS));  // ceil(6 / 4) = 2
   EXPECT_EQ(in, out);
   EXPECT_EQ(bus.report().total.transactions, 2u);  // two calls: the target sees each buffer once
+}
+
+// Two cards on one bus (share_arbitration_with) or each on its own. Each bus has its own BAR
+// window and initiator; `first` writes 4096 B at 0 (8 + 1024 cycles of 30 ns: [0, 30960 ns]),
+// `second` 4 B at 100 ns (9 cycles: 270 ns) through the other bus. Separate: no wait, the second
+// ends at 370 ns. Shared: it starts when the first ends, 30960 ns, and ends at 31230 ns, having
+// waited 30860 ns; both buses report the shared bus_free_at. The counters stay per bus.
+TEST(PciBus, SharedArbitrationSerialisesTwoBusesTransfers) {
+  struct Pair {
+    PciBus a, b;
+    SramBank bank_a, bank_b;
+    ScriptedInitiator first, second;
+    sc_time first_delay, second_delay;
+    Pair(const char* name, bool shared)
+        : a((std::string(name) + "_a").c_str()),
+          b((std::string(name) + "_b").c_str()),
+          bank_a((std::string(name) + "_bank_a").c_str(), small_bank()),
+          bank_b((std::string(name) + "_bank_b").c_str(), small_bank()),
+          first((std::string(name) + "_first").c_str(),
+                [this](ScriptedInitiator& self) {
+                  static std::array<std::uint8_t, 4096> data{};
+                  first_delay = SC_ZERO_TIME;
+                  self.write(0, data.data(), 4096, first_delay);
+                }),
+          second((std::string(name) + "_second").c_str(), [this](ScriptedInitiator& self) {
+            wait(sc_time(100, SC_NS));
+            std::uint32_t value = 7;
+            second_delay = SC_ZERO_TIME;
+            self.write(0, &value, 4, second_delay);
+          }) {
+      first.out.bind(a.in);
+      second.out.bind(b.in);
+      a.out.bind(bank_a.in);
+      b.out.bind(bank_b.in);
+      a.map(0, bank_a.capacity(), 0);
+      b.map(0, bank_b.capacity(), 0);
+      if (shared) b.share_arbitration_with(a);
+    }
+  };
+  Pair separate("separate", false), shared("shared", true);
+  sc_core::sc_start();
+
+  EXPECT_FALSE(separate.b.shares_arbitration());
+  EXPECT_TRUE(shared.b.shares_arbitration());
+  EXPECT_FALSE(shared.a.shares_arbitration());  // the owner
+  for (Pair* p : {&separate, &shared}) EXPECT_EQ(p->first_delay, sc_time(1032 * 30, SC_NS));
+  EXPECT_EQ(separate.second_delay, sc_time(270, SC_NS));
+  EXPECT_EQ(separate.b.report().total.wait, SC_ZERO_TIME);
+  EXPECT_EQ(separate.a.report().bus_free_at, sc_time(30960, SC_NS));
+  EXPECT_EQ(separate.b.report().bus_free_at, sc_time(370, SC_NS));
+
+  EXPECT_EQ(shared.second_delay, sc_time(31230 - 100, SC_NS));  // from its call at 100 ns
+  EXPECT_EQ(shared.b.report().total.wait, sc_time(30860, SC_NS));
+  EXPECT_EQ(shared.b.report().total.busy, sc_time(270, SC_NS));    // its own occupancy only
+  EXPECT_EQ(shared.a.report().total.busy, sc_time(30960, SC_NS));
+  EXPECT_EQ(shared.a.report().total.wait, SC_ZERO_TIME);
+  EXPECT_EQ(shared.a.report().bus_free_at, sc_time(31230, SC_NS));
+  EXPECT_EQ(shared.b.report().bus_free_at, sc_time(31230, SC_NS));
+  EXPECT_EQ(shared.b.report().total.bytes_written, 4u);
 }
 
 }  // namespace

@@ -1,7 +1,10 @@
-// `rc2000sim accuracy`: what the fixed-point width does to the picture. For each width, the
-// radiosity solved with the bit-exact fixed-point visibility is compared with the float solution
-// (RMSE and max error of patch radiosity), and the visibility decisions that differ are counted
-// along the float solver's own trajectory (same shooters, same segments).
+// `rc2000sim accuracy`: what the pipeline's arithmetic does to the picture. For each fixed-point
+// width and each floating-point format (paper sec 6: "a narrower total bitwidth, saving
+// bandwidth"), the radiosity solved with that bit-exact pipeline arithmetic is compared with the
+// double-precision solution (RMSE and max error of patch radiosity), and the visibility decisions
+// that differ are counted along the double solver's own trajectory (same shooters, same segments).
+// Each row also gives the bytes one intersection moves (sec 5.6(a)'s count: three coordinates
+// read, one result bit written), so error can be set against bandwidth.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -11,6 +14,7 @@
 #include "apps/cli_options.h"
 #include "apps/plot.h"
 #include "apps/progress.h"
+#include "pipeline/float_format.h"
 #include "radiosity/comparing_visibility.h"
 #include "radiosity/float_visibility.h"
 #include "studies/solution_error.h"
@@ -24,27 +28,42 @@ struct AccuracyOptions {
   SceneOptions scene;
   SolverOptions solver;
   std::vector<int> widths{7, 11, 15, 19, 23, 27, 31};
+  // Single, half, and narrower formats of about the fixed widths' sizes (docs/results/accuracy.md).
+  std::vector<std::string> formats{"float:8,23", "float:6,13", "float:5,10", "float:5,7", "float:4,5"};
   std::string out_dir = "out/accuracy";
   bool quiet = false;
 };
 
 struct WidthResult {
-  int bits = 0;
+  std::string arithmetic;          // "fixed:15", "float:5,10"
+  int bits = 0;                    // fixed: fractional bits; float: 0
+  int coordinate_bits = 0;         // bits of one coordinate value (fixed: N; float: 1 + E + M)
+  double bytes_per_intersection = 0;
   int steps = 0;
   SolutionError error;
   std::uint64_t segments_compared = 0, fixed_only_blocks = 0, float_only_blocks = 0;
 };
 
-WidthResult measure_width(const Scene& scene, const SolverOptions& solver, const SolverResult& reference, int bits) {
+// `backend` is a visibility backend name (visibility_factory.h): "fast" at `bits`, or "float:E,M".
+WidthResult measure(const Scene& scene, const SolverOptions& solver, const SolverResult& reference,
+                    const std::string& backend, int bits) {
   WidthResult r;
-  r.bits = bits;
-  auto fixed = make_software_visibility("fast", bits);
-  const SolverResult solved = ProgressiveRadiosity(scene, *fixed, solver).run();
+  const bool is_float = pipeline::names_float_format(backend);
+  r.arithmetic = is_float ? backend : "fixed:" + std::to_string(bits);
+  r.bits = is_float ? 0 : bits;
+  r.coordinate_bits = is_float ? pipeline::parse_float_format(backend).bits_per_value() : bits;
+  // As the banks store them: floor(32 / b) coordinates to a 32-bit word, so each takes 32 / floor(32 / b)
+  // bits (for fixed point exactly the bank layout's field, board/bank_layout.h); sec 5.6(a)'s count:
+  // three coordinates read, one result bit written.
+  const int packed_bits = 32 / (32 / r.coordinate_bits);
+  r.bytes_per_intersection = 3.0 * packed_bits / 8.0 + 1.0 / 8.0;
+  auto pipeline_answer = make_software_visibility(backend, bits);
+  const SolverResult solved = ProgressiveRadiosity(scene, *pipeline_answer, solver).run();
   r.steps = solved.steps;
   r.error = compare_solutions(solved.radiosity, reference.radiosity);
 
   FloatVisibility float_answer;
-  auto fixed_shadow = make_software_visibility("fast", bits);
+  auto fixed_shadow = make_software_visibility(backend, bits);
   ComparingVisibility compare(float_answer, *fixed_shadow);
   ProgressiveRadiosity(scene, compare, solver).run();
   r.segments_compared = compare.segments_compared();
@@ -56,10 +75,11 @@ WidthResult measure_width(const Scene& scene, const SolverOptions& solver, const
 void write_csv(const std::string& path, const std::vector<WidthResult>& rows, int float_steps) {
   std::ofstream out(path);
   if (!out) throw std::runtime_error(path + ": cannot open for writing");
-  out << "bits,steps,float_steps,rmse,max_abs_error,relative_rmse,relative_max_error,segments,"
-         "decisions_differ,fixed_blocks_float_clear,float_blocks_fixed_clear\n";
+  out << "arithmetic,bits,coordinate_bits,bytes_per_intersection,steps,float_steps,rmse,max_abs_error,relative_rmse,"
+         "relative_max_error,segments,decisions_differ,fixed_blocks_float_clear,float_blocks_fixed_clear\n";
   for (const WidthResult& r : rows) {
-    out << r.bits << ',' << r.steps << ',' << float_steps << ',' << r.error.rmse << ',' << r.error.max_abs << ','
+    out << '"' << r.arithmetic << '"' << ',' << (r.bits > 0 ? std::to_string(r.bits) : std::string()) << ',' << r.coordinate_bits
+        << ',' << r.bytes_per_intersection << ',' << r.steps << ',' << float_steps << ',' << r.error.rmse << ',' << r.error.max_abs << ','
         << r.error.relative_rmse() << ',' << r.error.relative_max() << ',' << r.segments_compared << ','
         << r.fixed_only_blocks + r.float_only_blocks << ',' << r.fixed_only_blocks << ',' << r.float_only_blocks
         << "\n";
@@ -74,7 +94,11 @@ int run_accuracy(const AccuracyOptions& o) {
   std::vector<WidthResult> rows;
   for (int bits : o.widths) {
     progress.update("width %d bits", bits);
-    rows.push_back(measure_width(scene, o.solver, reference, bits));
+    rows.push_back(measure(scene, o.solver, reference, "fast", bits));
+  }
+  for (const std::string& format : o.formats) {
+    progress.update("%-30s", format.c_str());
+    rows.push_back(measure(scene, o.solver, reference, format, 0));
   }
   progress.finish();
   std::filesystem::create_directories(o.out_dir);
@@ -83,10 +107,12 @@ int run_accuracy(const AccuracyOptions& o) {
 
   std::printf("rc2000sim accuracy: %zu faces, %zu patches, float reference %d steps\n", scene.faces.size(),
               scene.patches.size(), reference.steps);
-  std::printf("%5s %6s %12s %12s %14s %12s\n", "bits", "steps", "rel. RMSE", "rel. max", "decisions", "differ %");
+  std::printf("%-11s %6s %6s %12s %12s %14s %12s\n", "arithmetic", "B/int", "steps", "rel. RMSE", "rel. max",
+              "decisions", "differ %");
   for (const WidthResult& r : rows) {
     const std::uint64_t differ = r.fixed_only_blocks + r.float_only_blocks;
-    std::printf("%5d %6d %12.3e %12.3e %14llu %12.4f\n", r.bits, r.steps, r.error.relative_rmse(),
+    std::printf("%-11s %6.3f %6d %12.3e %12.3e %14llu %12.4f\n", r.arithmetic.c_str(), r.bytes_per_intersection, r.steps,
+                r.error.relative_rmse(),
                 r.error.relative_max(), static_cast<unsigned long long>(differ),
                 100.0 * double(differ) / double(r.segments_compared ? r.segments_compared : 1));
   }
@@ -101,15 +127,20 @@ int run_accuracy(const AccuracyOptions& o) {
 void add_accuracy_command(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<AccuracyOptions>();
   auto solver = std::make_shared<SolverCli>();
-  CLI::App* cmd = app.add_subcommand("accuracy", "Radiosity error and visibility decisions per fixed-point width, against float");
+  CLI::App* cmd = app.add_subcommand("accuracy", "Radiosity error and visibility decisions per fixed-point width and floating-point format, against double precision");
   add_scene_options(*cmd, options->scene);
   add_solver_options(*cmd, *solver);
-  cmd->add_option("--widths", options->widths, "Fractional widths to measure")->check(CLI::Range(7, 31))
-      ->delimiter(',')->capture_default_str();
+  cmd->add_option("--widths", options->widths, "Fractional widths of the fixed-point pipeline to measure")
+      ->check(CLI::Range(7, 31))->delimiter(',')->capture_default_str();
+  cmd->add_option("--formats", options->formats,
+                  "Floating-point formats to measure (float:E,M; space- or ';'-separated; 'none' for none)")
+      ->delimiter(';')->capture_default_str();
   cmd->add_option("--out", options->out_dir, "Output folder")->capture_default_str();
   cmd->add_flag("--quiet", options->quiet, "No progress output");
   cmd->callback([options, solver, &exit_code] {
     options->solver = solver->resolved();
+    if (options->formats == std::vector<std::string>{"none"}) options->formats.clear();
+    for (const std::string& f : options->formats) (void)pipeline::parse_float_format(f);  // before any work
     exit_code = run_accuracy(*options);
   });
 }

@@ -10,6 +10,7 @@
 #include "apps/progress.h"
 #include "apps/report.h"
 #include "radiosity/png_writer.h"
+#include "pipeline/float_format.h"
 #include "radiosity/visibility_factory.h"
 
 namespace rc {
@@ -26,8 +27,11 @@ struct RunOutcome {
   std::optional<LanesThatFit> lanes_that_fit;               // board runs: sec 5.6 on the run's device
 };
 
+bool float_arith(const RunOptions& o) { return pipeline::names_float_format(o.arith); }
+
 RunOutcome run_software(const RunOptions& o, const Scene& scene, ProgressLine& progress) {
-  auto visibility = make_software_visibility(o.visibility, o.bits);
+  // A float pipeline (--arith float:E,M) answers as the backend of that name (pipeline/float_mt.h).
+  auto visibility = make_software_visibility(float_arith(o) ? o.arith : o.visibility, o.bits);
   HostWorkCounter work;
   ProgressiveRadiosity solver(scene, *visibility, o.solver, &work);
   solver.on_progress([&](const StepProgress& p) {
@@ -35,7 +39,8 @@ RunOutcome run_software(const RunOptions& o, const Scene& scene, ProgressLine& p
   });
   RunOutcome out;
   out.solver = solver.run();
-  out.visibility_name = visibility->name() + (o.visibility != "float" ? " " + std::to_string(o.bits) + "-bit" : "");
+  out.visibility_name =
+      visibility->name() + (o.visibility != "float" && !float_arith(o) ? " " + std::to_string(o.bits) + "-bit" : "");
   out.visibility_tests = visibility->tests_performed();
   for (int k = 0; k < kHostWorkKinds; ++k) out.work_counts[k] = work.count(HostWork(k));
   return out;
@@ -60,6 +65,9 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   BoardRunOptions board = o.board;
   board.bits = o.bits;
   board.lanes = o.lanes;
+  board.cards = o.cards;
+  board.card_split = card_split_from_string(o.card_split);
+  board.card_bus = card_bus_from_string(o.card_bus);
   // The lanes copy the culled kernel's answer, proven bit-identical (tests BoardOracle.*, FastVisibility.*).
   std::unique_ptr<VisibilityBackend> oracle;
   if (!o.lanes_compute) {
@@ -74,7 +82,10 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   RunOutcome out;
   out.solver = std::move(r.solver);
   out.visibility_name = "board " + board.device + ", " + std::to_string(board.lanes.value()) + " lane(s), " +
-                        std::to_string(o.bits) + "-bit" + (board.concurrent ? ", concurrent" : ", serial");
+                        std::to_string(o.bits) + "-bit" + (board.concurrent ? ", concurrent" : ", serial") +
+                        (o.cards > 1 ? ", " + std::to_string(o.cards) + " cards (split " + o.card_split + ", " +
+                                           o.card_bus + " bus)"
+                                     : "");
   out.visibility_tests = r.report.intersections.tests;
   out.board = std::move(r.report);
   out.lanes_that_fit = lanes_that_fit(board.device, board.host, o.bits);
@@ -93,6 +104,15 @@ void print_board_summary(const RunReport& b) {
               (static_cast<double>(b.board.pci.bytes_to_board) + static_cast<double>(b.board.pci.bytes_to_host)) / 1e6);
   for (const LaneReport& lane : b.board.lanes) {
     std::printf("  lane %-7u utilisation %.1f%%\n", lane.lane, 100.0 * lane.utilisation);
+  }
+  for (const CardReport& c : b.board.cards.per_card) {
+    std::printf("  card %-7u %llu passes, FPGA busy %.6f s, PCI bus busy %.6f s (waited %.6f s), driver idle %.6f s\n",
+                c.card, static_cast<unsigned long long>(c.passes), c.fpga_busy_seconds, c.pci_bus_busy_seconds,
+                c.pci_bus_wait_seconds, c.idle_seconds);
+  }
+  for (std::size_t i = 0; i < b.board.cards.buses.size(); ++i) {
+    std::printf("  PCI bus %-4zu %zu card(s), utilisation %.1f%%\n", i, b.board.cards.buses[i].cards.size(),
+                100.0 * b.board.cards.buses[i].utilisation);
   }
 }
 
@@ -130,8 +150,9 @@ nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& pre
                         {"convergence", o.solver.convergence},
                         {"fixed_steps", o.solver.fixed_steps},
                         {"form_factor", to_string(o.solver.form_factor)},
-                        {"visibility", o.impl == "board" ? "board" : o.visibility},
-                        {"bits", o.bits},
+                        {"visibility", o.impl == "board" ? "board" : float_arith(o) ? o.arith : o.visibility},
+                        {"arith", o.arith},
+                        {"bits", float_arith(o) ? nlohmann::ordered_json() : nlohmann::ordered_json(o.bits)},
                         {"face_target", o.scene.face_target},
                         {"face_levels", o.scene.face_levels},
                         {"patch_levels", o.scene.patch_size > 0 ? nlohmann::ordered_json() : nlohmann::ordered_json(o.scene.patch_levels)},
@@ -184,6 +205,11 @@ void add_run_command(CLI::App& app, int& exit_code) {
                   "Software backend: float, fixed (bit-exact, brute force) or fast (bit-exact, culled, all cores)")
       ->check(CLI::IsMember({"float", "fixed", "fast"}))->capture_default_str();
   add_bits_option(*cmd, options->bits);
+  cmd->add_option("--arith", options->arith,
+                  "The pipeline's arithmetic: fixed (fractional bits: --bits) or float:E,M (exponent and fraction bits, "
+                  "e.g. float:8,23 single, float:5,10 half; round to nearest even per operation, no subnormals; "
+                  "software only, docs/pipeline.md)")
+      ->capture_default_str();
   BoardRunOptions& b = options->board;
   b.host = "athlon-mp-2600-calibrated";  // the profile fitted to the paper's measurements (docs/calibration.md)
   cmd->add_option("--device", b.device, "Board: device profile, configs/devices/NAME.json or a path")->capture_default_str();
@@ -191,6 +217,16 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--banks", b.banks, "Board: memory banks (0: the profile's)")->check(CLI::Range(0, 64))
       ->capture_default_str();
   cmd->add_flag("--concurrent", b.concurrent, "Board: form factors while the FPGA works (paper sec 4.3)");
+  cmd->add_option("--cards", options->cards,
+                  "Board: identical RC2000 cards working on the scene at once (paper sec 6; docs/board.md, Several cards)")
+      ->check(CLI::Range(1u, CardCount::kMax))->capture_default_str();
+  cmd->add_option("--card-split", options->card_split,
+                  "Board, several cards: rays (each card a share of a step's segments, every face) or faces (each "
+                  "card a share of the faces, every segment)")
+      ->check(CLI::IsMember({"rays", "faces"}))->capture_default_str();
+  cmd->add_option("--card-bus", options->card_bus,
+                  "Board, several cards: shared (one PCI bus, transfers contend) or separate (each card on its own bus)")
+      ->check(CLI::IsMember({"shared", "separate"}))->capture_default_str();
   cmd->add_flag("--lanes-compute", options->lanes_compute,
                 "Board: the lanes test every ray against every face (slow) instead of copying the bit-identical "
                 "culled answer; timing and results are the same");
@@ -202,9 +238,29 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--image-size", options->render.width, "Image width and height in pixels")
       ->check(CLI::Range(16, 8192))->capture_default_str();
   cmd->add_flag("--quiet", options->quiet, "No progress output");
-  cmd->callback([options, solver, &exit_code] {
+  cmd->callback([options, solver, cmd, &exit_code] {
     options->solver = solver->resolved();
     options->render.height = options->render.width;
+    if (options->impl != "board") {
+      for (const char* option : {"--cards", "--card-split", "--card-bus"}) {
+        if (cmd->count(option) > 0) {
+          throw CLI::ValidationError(option, "applies to --impl board only (cards of the simulated RC2000)");
+        }
+      }
+    }
+    if (options->arith != "fixed") {
+      (void)pipeline::parse_float_format(options->arith);  // a bad format names the option's value and the limits
+      for (const char* option : {"--bits", "--visibility"}) {
+        if (cmd->count(option) > 0) {
+          throw CLI::ValidationError(option, "does not apply with --arith " + options->arith +
+                                                 " (the float pipeline has no fractional width and is its own backend)");
+        }
+      }
+      if (options->impl == "board") {
+        throw CLI::ValidationError("--arith", options->arith + " applies to --impl software only: the board model's "
+                                              "lanes are the fixed-point pipeline (a float lane is not modelled yet)");
+      }
+    }
     exit_code = run_simulation(*options);
   });
 }

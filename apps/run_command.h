@@ -16,9 +16,13 @@ struct RunOptions {
   SolverOptions solver;              // resolved from SolverCli
   std::string impl = "software";     // software | board
   std::string visibility = "float";  // software backend: float | fixed | fast
+  std::string arith = "fixed";       // the pipeline's arithmetic: fixed (--bits) or float:E,M (software only)
   bool lanes_compute = false;        // board: the lanes test every ray against every face themselves
   int bits = 15;                     // fractional bits of the fixed-point pipeline
   unsigned lanes = 1;                // board: pipeline lanes (--lanes; BoardRunOptions::lanes checks it)
+  unsigned cards = 1;                // board: identical cards (--cards; BoardRunOptions::cards checks it)
+  std::string card_split = "rays";   // board, several cards: rays | faces
+  std::string card_bus = "shared";   // board, several cards: shared | separate
   BoardRunOptions board;             // --impl board
   std::string trace_steps = "1:3";   // A:B, steps written to the trace
   std::string out_dir = "out";

@@ -248,6 +248,11 @@ void add_run_command(CLI::App& app, int& exit_code) {
         }
       }
     }
+    if (options->cards == 1) {
+      for (const char* option : {"--card-split", "--card-bus"}) {
+        if (cmd->count(option) > 0) throw CLI::ValidationError(option, "applies only with more than one card (--cards)");
+      }
+    }
     if (options->arith != "fixed") {
       (void)pipeline::parse_float_format(options->arith);  // a bad format names the option's value and the limits
       for (const char* option : {"--bits", "--visibility"}) {

@@ -65,6 +65,7 @@ struct SweepOptions {
   std::string steps;
   double convergence = 0;
   std::string lanes, banks, bits, devices, hosts;
+  std::string cards = "1", card_split = "rays", card_bus = "shared";
   std::string concurrent = "on";
   bool paper_faithful = true;
   std::string visibility = "fast";
@@ -83,7 +84,8 @@ struct MergeOptions {
 // The options a study file replaces: each is an error beside --study.
 const char* const kStudyOptions[] = {"--scene", "--faces", "--face-levels", "--patch-levels", "--patch-size",
                                      "--steps", "--convergence", "--lanes", "--banks", "--bits", "--devices",
-                                     "--concurrent", "--paper-faithful", "--host", "--visibility", "--full-banks"};
+                                     "--concurrent", "--paper-faithful", "--host", "--visibility", "--full-banks",
+                                     "--cards", "--card-split", "--card-bus"};
 
 Study study_from_options(const SweepOptions& o) {
   Study s = default_study();
@@ -100,6 +102,9 @@ Study study_from_options(const SweepOptions& o) {
   s.axes.concurrent = parse_concurrency(o.concurrent);
   s.axes.lanes = parse_int_list(o.lanes, "--lanes", 1, 255);  // the CONFIG register holds 8 bits of each
   s.axes.banks = parse_int_list(o.banks, "--banks", 1, 255);
+  s.axes.cards = parse_int_list(o.cards, "--cards", 1, static_cast<int>(CardCount::kMax));
+  s.axes.card_splits = parse_name_list(o.card_split, "--card-split");
+  s.axes.card_buses = parse_name_list(o.card_bus, "--card-bus");
   check_study(s);
   return s;
 }
@@ -116,7 +121,9 @@ std::string cell(const SweepRow& r) {
 }
 
 bool same_block(const SweepConfig& a, const SweepConfig& b) {
-  if (a.device != b.device || a.bits != b.bits || a.concurrent != b.concurrent || a.host != b.host) return false;
+  if (a.device != b.device || a.bits != b.bits || a.concurrent != b.concurrent || a.host != b.host ||
+      a.cards != b.cards || a.card_split != b.card_split || a.card_bus != b.card_bus)
+    return false;
   for (std::size_t i = 0; i < a.settings.size(); ++i)
     if (a.settings[i].value != b.settings[i].value) return false;
   return true;
@@ -126,6 +133,7 @@ std::string block_title(const SweepConfig& c, bool show_host) {
   std::string title = c.device + ", " + std::to_string(c.bits) + "-bit, " + (c.concurrent ? "concurrent" : "serial") +
                       " driver";
   if (show_host) title += ", host " + c.host;
+  if (c.cards > 1) title += ", " + std::to_string(c.cards) + " cards (" + c.card_split + ", " + c.card_bus + " bus)";
   for (const ProfileSetting& s : c.settings) title += ", " + s.text();
   return title;
 }
@@ -453,6 +461,10 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"on", "off", "both"}))->capture_default_str();
   cmd->add_flag("--paper-faithful,!--cull-receivers", o->paper_faithful,
                 "Segments to every other patch, as the paper (default); --cull-receivers: only to patches in front");
+  cmd->add_option("--cards", o->cards, "Card counts (1..16), list and ranges; several cards: docs/board.md")
+      ->capture_default_str();
+  cmd->add_option("--card-split", o->card_split, "Several cards: rays and/or faces, comma-separated")->capture_default_str();
+  cmd->add_option("--card-bus", o->card_bus, "Several cards: shared and/or separate, comma-separated")->capture_default_str();
   cmd->add_option("--host", o->hosts, "Host profiles (configs/hosts/NAME.json or paths), comma-separated")
       ->capture_default_str();
   cmd->add_option("--visibility", o->visibility, "Bit-exact backend that answers visibility once per width: fixed or fast")

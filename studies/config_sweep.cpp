@@ -106,6 +106,7 @@ StepsChoice parse_steps(const std::string& text) {
 std::string SweepConfig::label() const {
   std::string text = device + " " + std::to_string(bits) + "-bit " + (concurrent ? "concurrent " : "serial ") +
                      std::to_string(lanes) + (lanes == 1 ? " lane " : " lanes ") + std::to_string(banks) + " banks";
+  if (cards > 1) text += " " + std::to_string(cards) + " cards (" + card_split + ", " + card_bus + " bus)";
   for (const ProfileSetting& s : settings) text += " " + s.text();
   return text;
 }
@@ -144,8 +145,13 @@ std::vector<SweepConfig> enumerate_configs(const SweepAxes& a) {
       a.banks.empty()) {
     throw std::invalid_argument("a sweep needs at least one device, width, driver, host, lane count and bank count");
   }
+  if (a.cards.empty() || a.card_splits.empty() || a.card_buses.empty())
+    throw std::invalid_argument("a sweep needs at least one card count, card split and card bus");
+  const double one_card = static_cast<double>(std::count(a.cards.begin(), a.cards.end(), 1));
+  const double card_choices =
+      one_card + (static_cast<double>(a.cards.size()) - one_card) * a.card_splits.size() * a.card_buses.size();
   double count = static_cast<double>(a.devices.size()) * a.bits.size() * a.concurrent.size() * a.hosts.size() *
-                 a.lanes.size() * a.banks.size();
+                 card_choices * a.lanes.size() * a.banks.size();
   for (const ProfileAxis& axis : a.profile) {
     if (axis.values.empty()) throw std::invalid_argument("profile axis '" + axis.field.path + "' has no values");
     count *= static_cast<double>(axis.values.size());
@@ -160,11 +166,15 @@ std::vector<SweepConfig> enumerate_configs(const SweepAxes& a) {
     for (int bits : a.bits)
       for (bool concurrent : a.concurrent)
         for (const std::string& host : a.hosts)
-          for (const std::vector<ProfileSetting>& settings : combos)
-            for (int lanes : a.lanes)
-              for (int banks : a.banks)
-                configs.push_back({device, bits, concurrent, static_cast<unsigned>(lanes), static_cast<unsigned>(banks),
-                                   host, settings});
+          for (int cards : a.cards)
+            for (std::size_t s = 0; s < (cards == 1 ? 1 : a.card_splits.size()); ++s)
+              for (std::size_t b = 0; b < (cards == 1 ? 1 : a.card_buses.size()); ++b)
+                for (const std::vector<ProfileSetting>& settings : combos)
+                  for (int lanes : a.lanes)
+                    for (int banks : a.banks)
+                      configs.push_back({device, bits, concurrent, static_cast<unsigned>(lanes),
+                                         static_cast<unsigned>(banks), host, static_cast<unsigned>(cards),
+                                         a.card_splits[s], a.card_buses[b], settings});
   return configs;
 }
 
@@ -232,6 +242,9 @@ ConfigCheck ConfigChecker::check(const SweepConfig& c) const {
     out.options.host = c.host.empty() ? first_host() : c.host;
     out.options.host_profile = h;
     out.options.device_profile = d;
+    out.options.cards = c.cards;
+    out.options.card_split = card_split_from_string(c.card_split);
+    out.options.card_bus = card_bus_from_string(c.card_bus);
     (void)make_board_setup(out.options);
   } catch (const std::invalid_argument& e) {
     out.validity = Validity::other;
@@ -350,7 +363,8 @@ void fill_speedups(std::vector<SweepRow>& rows, const std::map<std::string, doub
   // The same configuration but its lane count (the settings' texts stand for their values).
   auto base_key = [](const SweepConfig& c) {
     std::string key = c.device + "|" + std::to_string(c.bits) + "|" + (c.concurrent ? "1" : "0") + "|" +
-                      std::to_string(c.banks) + "|" + c.host;
+                      std::to_string(c.banks) + "|" + c.host + "|" + std::to_string(c.cards) + "|" + c.card_split +
+                      "|" + c.card_bus;
     for (const ProfileSetting& s : c.settings) key += "|" + s.text();
     return key;
   };
@@ -369,6 +383,9 @@ void fill_speedups(std::vector<SweepRow>& rows, const std::map<std::string, doub
 std::vector<std::string> extra_columns(const SweepAxes& axes) {
   std::vector<std::string> columns;
   if (axes.hosts.size() > 1) columns.push_back("host");
+  if (axes.cards != std::vector<int>{1}) {
+    for (const char* c : {"cards", "card_split", "card_bus"}) columns.push_back(c);
+  }
   for (const ProfileAxis& a : axes.profile) columns.push_back(a.field.path);
   return columns;
 }
@@ -433,6 +450,9 @@ std::vector<std::string> columns(const std::vector<std::string>& extra) {
 // The value of an extra column: the host, or the setting of the profile axis with that path.
 nlohmann::ordered_json extra_value(const SweepConfig& c, const std::string& column) {
   if (column == "host") return c.host;
+  if (column == "cards") return c.cards;
+  if (column == "card_split") return c.cards > 1 ? nlohmann::ordered_json(c.card_split) : nlohmann::ordered_json();
+  if (column == "card_bus") return c.cards > 1 ? nlohmann::ordered_json(c.card_bus) : nlohmann::ordered_json();
   for (const ProfileSetting& s : c.settings)
     if (s.field.path == column) return s.value;
   throw std::logic_error("sweep column '" + column + "' has no value in " + c.label());

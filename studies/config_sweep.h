@@ -65,6 +65,11 @@ struct SweepAxes {
   std::vector<int> bits;
   std::vector<bool> concurrent;
   std::vector<std::string> hosts = {"athlon-mp-2600-calibrated"};  // host profiles, in the order given
+  // Several cards (docs/board.md, "Several cards"): card counts 1..16, and for more than one card how a
+  // step is split and how they sit on PCI (names of to_string(CardSplit), to_string(CardBus)).
+  std::vector<int> cards = {1};
+  std::vector<std::string> card_splits = {"rays"};
+  std::vector<std::string> card_buses = {"shared"};
   std::vector<ProfileAxis> profile;  // profile fields, in the order given (the first varies slowest)
   std::vector<int> lanes;
   std::vector<int> banks;
@@ -77,6 +82,9 @@ struct SweepConfig {
   unsigned lanes = 1;
   unsigned banks = 6;
   std::string host;                      // empty: the checker's first host
+  unsigned cards = 1;
+  std::string card_split = "rays";       // with one card: the axis's first (it does not apply)
+  std::string card_bus = "shared";
   std::vector<ProfileSetting> settings;  // this configuration's value of each profile axis, in axis order
   // "xc2v6000 15-bit concurrent 2 lanes 6 banks", then each setting ("banks.clock_mhz=133").
   std::string label() const;
@@ -90,8 +98,9 @@ std::string software_key(const SweepConfig& config);
 // A sweep bigger than this is almost certainly a typo (and would take hours); narrow the lists.
 constexpr std::size_t kMaxSweepConfigs = 20000;
 
-// Device-major, then width, driver (serial first), host, profile axes, lanes, banks: one lanes x
-// banks block per device, width, driver, host and profile values. Throws std::invalid_argument for an empty axis or more than kMaxSweepConfigs.
+// Device-major, then width, driver (serial first), host, cards, card split, card bus (one card: the
+// first split and bus only, they do not apply), profile axes, lanes, banks: one lanes x banks block
+// per device, width, driver, host, cards and profile values. Throws std::invalid_argument for an empty axis or more than kMaxSweepConfigs.
 std::vector<SweepConfig> enumerate_configs(const SweepAxes& axes);
 
 enum class Validity {
@@ -193,7 +202,8 @@ std::string bottleneck(const SweepRow& row);
 void fill_speedups(std::vector<SweepRow>& rows, const std::map<std::string, double>& software_seconds);
 
 // The columns beyond the classic ones that a sweep over `axes` adds: "host" when more than one
-// host is swept, then each profile axis's path. They follow "concurrent".
+// host is swept, "cards", "card_split" and "card_bus" when more than one card is, then each profile
+// axis's path. They follow "concurrent".
 std::vector<std::string> extra_columns(const SweepAxes& axes);
 
 // The CSV header and rows (stable column names; numbers with enough digits to round-trip).

@@ -175,6 +175,19 @@ void check_study(const Study& s) {
       if (f.field.field == a.field.field && f.field.kind == a.field.kind)
         throw std::invalid_argument(where(s) + ": " + a.field.path + " is both an axis and fixed");
   }
+  for (int c : s.axes.cards) {
+    if (c < 1 || c > static_cast<int>(CardCount::kMax))
+      throw std::invalid_argument(where(s) + ": axes.cards: " + std::to_string(c) + " is outside 1.." +
+                                  std::to_string(CardCount::kMax));
+  }
+  for (const std::string& split : s.axes.card_splits) (void)card_split_from_string(split);
+  for (const std::string& bus : s.axes.card_buses) (void)card_bus_from_string(bus);
+  const bool several_cards = std::any_of(s.axes.cards.begin(), s.axes.cards.end(), [](int c) { return c > 1; });
+  if (!several_cards && (s.axes.card_splits != std::vector<std::string>{"rays"} ||
+                         s.axes.card_buses != std::vector<std::string>{"shared"})) {
+    throw std::invalid_argument(where(s) + ": axes.card_split and axes.card_bus apply only with more than one card "
+                                           "(axes.cards)");
+  }
   (void)enumerate_configs(s.axes);  // empty axes and oversized sweeps
   check_profile_values(s);
   check_settings_apply(s);
@@ -198,9 +211,11 @@ nlohmann::ordered_json study_json(const Study& s) {
   for (const ProfileAxis& a : s.axes.profile) profile.push_back({{"path", a.field.path}, {"values", a.values}});
   nlohmann::ordered_json concurrent = nlohmann::ordered_json::array();
   for (bool c : s.axes.concurrent) concurrent.push_back(c);
-  j["axes"] = {{"devices", s.axes.devices}, {"bits", s.axes.bits},   {"concurrent", concurrent},
-               {"hosts", s.axes.hosts},     {"profile", profile},    {"lanes", s.axes.lanes},
-               {"banks", s.axes.banks}};
+  j["axes"] = {{"devices", s.axes.devices},         {"bits", s.axes.bits},
+               {"concurrent", concurrent},            {"hosts", s.axes.hosts},
+               {"cards", s.axes.cards},               {"card_split", s.axes.card_splits},
+               {"card_bus", s.axes.card_buses},       {"profile", profile},
+               {"lanes", s.axes.lanes},               {"banks", s.axes.banks}};
   nlohmann::ordered_json fixed = nlohmann::ordered_json::array();
   for (const ProfileSetting& f : s.fixed) fixed.push_back(setting_json(f));
   j["fixed"] = fixed;
@@ -227,6 +242,9 @@ Study study_from_json(const nlohmann::ordered_json& j) {
     s.axes.bits = axes.at("bits").get<std::vector<int>>();
     s.axes.concurrent = axes.at("concurrent").get<std::vector<bool>>();
     s.axes.hosts = axes.at("hosts").get<std::vector<std::string>>();
+    s.axes.cards = axes.at("cards").get<std::vector<int>>();
+    s.axes.card_splits = axes.at("card_split").get<std::vector<std::string>>();
+    s.axes.card_buses = axes.at("card_bus").get<std::vector<std::string>>();
     s.axes.lanes = axes.at("lanes").get<std::vector<int>>();
     s.axes.banks = axes.at("banks").get<std::vector<int>>();
     for (const auto& a : axes.at("profile")) {

@@ -299,6 +299,12 @@ void read_axes(const Reader& r, const toml::table& t, Study& s) {
       s.axes.banks = int_axis(r, node, k, 1, 255);
     } else if (name == "concurrent") {
       s.axes.concurrent = concurrency_axis(r, node);
+    } else if (name == "cards") {
+      s.axes.cards = int_axis(r, node, k, 1, static_cast<int>(CardCount::kMax));
+    } else if (name == "card_split") {
+      s.axes.card_splits = name_axis(r, node, k);
+    } else if (name == "card_bus") {
+      s.axes.card_buses = name_axis(r, node, k);
     } else {
       profile_paths.push_back({name, &node});
     }

@@ -6,7 +6,8 @@
 #     banks.clock_mhz = 133 (with pci.clock_mhz fixed at 33.333) are the rows of a sweep of a copy
 #     of the device profile with those two values, but for the axis's own column;
 #  3. shards run one after another and merged are the single-machine outputs, byte for byte;
-#  4. bad studies and options fail with the file, line, key or option named.
+#  4. several cards are an axis, and one card's row is the plain sweep's;
+#  5. bad studies and options fail with the file, line, key or option named.
 # usage: sweep_study_test.sh RC2000SIM REPO_ROOT
 set -euo pipefail
 sim="$1"
@@ -76,7 +77,31 @@ for i in 0 1 2; do "$sim" sweep --study "$work/axis.toml" --shard "$i/3" --quiet
 diff -r "$work/axis" "$work/merged" || fail "merged shards differ from the single-machine outputs"
 echo "  identical: $(find "$work/merged" -type f | wc -l) files"
 
-step "4. bad studies and options name what is wrong"
+step "4. several cards are an axis; one card's rows are the plain sweep's"
+"$sim" sweep --faces 70 --face-levels 0 --patch-levels 1 --steps 30 --lanes 2 --banks 6 --devices xc2v6000 \
+  --cards 1,2 --card-split rays,faces --card-bus shared,separate --quiet --out "$work/cards" > /dev/null
+"$sim" sweep --faces 70 --face-levels 0 --patch-levels 1 --steps 30 --lanes 2 --banks 6 --devices xc2v6000 \
+  --quiet --out "$work/one-card" > /dev/null
+python3 - "$work/cards/sweep.csv" "$work/one-card/sweep.csv" <<'PY'
+import csv, sys
+cards = list(csv.DictReader(open(sys.argv[1])))
+one = list(csv.DictReader(open(sys.argv[2])))
+if len(cards) != 5 or [r["cards"] for r in cards] != ["1", "2", "2", "2", "2"]:
+    sys.exit("expected 1 one-card row and 4 two-card rows, got %s" % [r["cards"] for r in cards])
+first = dict(cards[0])
+for k in ("cards", "card_split", "card_bus"):
+    if k == "cards" or first[k] == "":
+        del first[k]
+    else:
+        sys.exit("the one-card row has a %s: %s" % (k, first[k]))
+if first != one[0]:
+    sys.exit("the one-card row differs from the plain sweep's:\n %s\n %s" % (first, one[0]))
+if not all(r["status"] == "ok" for r in cards):
+    sys.exit("a card configuration did not run")
+print("  two cards: " + ", ".join("%s/%s %s s" % (r["card_split"], r["card_bus"], r["simulated_seconds"]) for r in cards[1:]))
+PY
+
+step "5. bad studies and options name what is wrong"
 expect_error() {  # EXPECTED-TEXT ARGS...: rc2000sim must fail and say EXPECTED-TEXT
   local expected="$1"; shift
   if "$sim" "$@" > "$work/out.txt" 2> "$work/err.txt"; then fail "accepted: $*"; fi

@@ -124,6 +124,9 @@ TEST(StudyFile, BadStudiesNameTheFileTheLineTheKeyAndTheLimit) {
       {"[[scenes]]\nname = \"../x\"\n", {"cannot name a folder"}},
       {"[axes]\nlanes = \"1-255\"\nbanks = \"1-255\"\n", {"configurations (at most 20000)"}},
       {"[axes\n", {"inline.toml:1", "not valid TOML"}},
+      {"[axes]\ncards = [1, 17]\n", {"inline.toml:2", "axes.cards", "1..16"}},
+      {"[axes]\ncard_split = [\"faces\"]\n", {"apply only with more than one card"}},
+      {"[axes]\ncards = [2]\ncard_bus = [\"ethernet\"]\n", {"card bus 'ethernet'", "shared, separate"}},
       {"[axes]\nbanks = [6]\nbanks.clock_mhz = [1]\n", {"inline.toml:3", "not valid TOML", "must be quoted"}},
       {"[axes]\n\"banks.count\" = [6, 8]\n", {"banks.count changes nothing", "use the banks axis"}},
       {"[axes]\ndevices = [\"xc2v6000\"]\nlanes = [1]\n\"clock.mhz_by_lanes.2\" = [50]\n", {"no configuration with 2 lane(s)"}},
@@ -138,6 +141,27 @@ TEST(StudyFile, BadStudiesNameTheFileTheLineTheKeyAndTheLimit) {
     ASSERT_FALSE(e.empty()) << "accepted:\n" << c.text;
     for (const char* part : c.expected) EXPECT_NE(e.find(part), std::string::npos) << "'" << part << "' not in: " << e;
   }
+}
+
+TEST(StudyFile, CardsAreAnAxisWhoseSplitAndBusApplyToSeveralCardsOnly) {
+  const Study s = parse(R"(
+[axes]
+devices = ["xc2v6000"]
+lanes = [2]
+banks = [6]
+cards = "1-2,4"
+card_split = ["rays", "faces"]
+card_bus = "shared,separate"
+)");
+  EXPECT_EQ(s.axes.cards, (std::vector<int>{1, 2, 4}));
+  const std::vector<SweepConfig> configs = enumerate_configs(s.axes);
+  ASSERT_EQ(configs.size(), 1u + 2u * 2u * 2u);  // one card once; 2 and 4 cards by split and bus
+  EXPECT_EQ(configs[0].cards, 1u);
+  EXPECT_EQ(configs[1].label(), "xc2v6000 15-bit concurrent 2 lanes 6 banks 2 cards (rays, shared bus)");
+  EXPECT_EQ(configs[2].card_bus, "separate");
+  EXPECT_EQ(configs[3].card_split, "faces");
+  EXPECT_EQ(extra_columns(s.axes), (std::vector<std::string>{"cards", "card_split", "card_bus"}));
+  EXPECT_EQ(study_json(study_from_json(study_json(s))).dump(), study_json(s).dump());
 }
 
 TEST(StudyFile, FilesThatAreNotStudiesAreRefusedBeforeReading) {

@@ -16,16 +16,15 @@ std::string DesignFit::describe() const {
   return line;
 }
 
-DesignFit fit_design(const DeviceProfile& device, const pipeline::ResourceModel& resources, LaneCount lane_count,
-                     pipeline::FracBits bits) {
-  const int lanes = static_cast<int>(lane_count.value());
-  const pipeline::PipelineResources hard = resources.pipeline(bits, true);
-  const pipeline::PipelineResources soft = resources.pipeline(bits, false);
-  const pipeline::WrapperCost wrapper = resources.wrapper();
+namespace {
 
-  DesignFit f;
+// Lanes on block multipliers while the device has them, the rest on slice multipliers; the wrapper
+// counted; the clock the slower of the kinds used and the profile's. `Lane` is a fixed- or
+// float-point lane's resources (slices, block_multipliers, clock_mhz).
+template <class Lane>
+void place_lanes(const DeviceProfile& device, const pipeline::WrapperCost& wrapper, int lanes, const Lane& hard,
+                 const Lane& soft, DesignFit& f) {
   f.device = device.name;
-  f.bits = bits;
   f.lanes = lanes;
   f.slices_available = device.slices;
   f.block_multipliers_available = device.block_multipliers;
@@ -38,10 +37,23 @@ DesignFit fit_design(const DeviceProfile& device, const pipeline::ResourceModel&
   f.block_ram_bits = 0;  // assumption, see design_fit.h
   f.block_ram_bits_available = device.block_ram_bits;
   f.fits = f.slices <= device.slices && f.block_multipliers <= device.block_multipliers;
-
   f.pipeline_clock_mhz = std::min(f.hard_lanes > 0 ? hard.clock_mhz : soft.clock_mhz,
                                   f.soft_lanes > 0 ? soft.clock_mhz : hard.clock_mhz);
   f.clock_mhz = std::min(device.clock_mhz(lanes), f.pipeline_clock_mhz);
+}
+
+}  // namespace
+
+DesignFit fit_design(const DeviceProfile& device, const pipeline::ResourceModel& resources, LaneCount lane_count,
+                     pipeline::FracBits bits) {
+  const int lanes = static_cast<int>(lane_count.value());
+  const pipeline::PipelineResources hard = resources.pipeline(bits, true);
+  const pipeline::PipelineResources soft = resources.pipeline(bits, false);
+  const pipeline::WrapperCost wrapper = resources.wrapper();
+
+  DesignFit f;
+  f.bits = bits;
+  place_lanes(device, wrapper, lanes, hard, soft, f);
   f.modelled = (f.hard_lanes > 0 && (hard.interpolated || hard.extrapolated)) ||
                (f.soft_lanes > 0 && (soft.interpolated || soft.extrapolated));
   return f;
@@ -65,23 +77,8 @@ FloatDesignFit fit_float_design(const DeviceProfile& device, const pipeline::Res
   f.format = format;
   f.family = family.name;
   f.block_multiplier = family.block_multiplier;
-  f.device = device.name;
   f.bits = format.bits_per_value();
-  f.lanes = lanes;
-  f.slices_available = device.slices;
-  f.block_multipliers_available = device.block_multipliers;
-  const int spare_multipliers = std::max(0, device.block_multipliers - wrapper.block_multipliers);
-  f.hard_lanes = hard.block_multipliers > 0 ? std::min(lanes, spare_multipliers / hard.block_multipliers) : lanes;
-  f.soft_lanes = lanes - f.hard_lanes;
-  f.slices = wrapper.fixed_slices + lanes * wrapper.per_lane_slices + f.hard_lanes * hard.slices +
-             f.soft_lanes * soft.slices;
-  f.block_multipliers = wrapper.block_multipliers + f.hard_lanes * hard.block_multipliers;
-  f.block_ram_bits = 0;  // assumption, as for fixed point (design_fit.h)
-  f.block_ram_bits_available = device.block_ram_bits;
-  f.fits = f.slices <= device.slices && f.block_multipliers <= device.block_multipliers;
-  f.pipeline_clock_mhz = std::min(f.hard_lanes > 0 ? hard.clock_mhz : soft.clock_mhz,
-                                  f.soft_lanes > 0 ? soft.clock_mhz : hard.clock_mhz);
-  f.clock_mhz = std::min(device.clock_mhz(lanes), f.pipeline_clock_mhz);
+  place_lanes(device, wrapper, lanes, hard, soft, f);
   f.modelled = true;
   return f;
 }

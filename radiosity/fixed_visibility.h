@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "radiosity/end_face_groups.h"
 #include "radiosity/visibility.h"
 #include "pipeline/fixed_mt.h"
 
@@ -29,7 +30,6 @@ class FixedPointVisibility : public VisibilityBackend {
   int frac_bits() const { return bits_; }
 
  private:
-  void group_segments_by_end_face(const SegmentBatch& batch);
 
   int bits_;
   std::vector<pipeline::FaceRecord> faces_;
@@ -38,7 +38,7 @@ class FixedPointVisibility : public VisibilityBackend {
   std::vector<std::uint8_t> blocked_, skip_;
   // Segments grouped by the face their end point lies on (counting sort, CSR layout), so each
   // face's own-face mask costs only its own segments.
-  std::vector<std::size_t> first_ending_on_, ending_on_;
+  EndFaceGroups end_faces_;  // the batch's segments by end face (own-face masks)
   std::uint64_t tests_ = 0;
 };
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "pipeline/float_mt.h"
+#include "radiosity/end_face_groups.h"
 #include "radiosity/visibility.h"
 
 namespace rc {
@@ -29,14 +30,13 @@ class FloatPipelineVisibility : public VisibilityBackend {
 
  private:
   void round_end_points(const SegmentBatch& batch);
-  void group_segments_by_end_face(const SegmentBatch& batch);
 
   pipeline::FloatFormat format_;
   std::vector<pipeline::FloatFaceRecord> faces_;
   std::vector<double> end_x_, end_y_, end_z_;  // the batch's end points, rounded, as three banks
   std::vector<std::uint8_t> blocked_, skip_;
   // Segments grouped by the face their end point lies on (CSR), for the own-face mask.
-  std::vector<std::size_t> first_ending_on_, ending_on_;
+  EndFaceGroups end_faces_;  // the batch's segments by end face (own-face masks)
   std::uint64_t tests_ = 0;
 };
 

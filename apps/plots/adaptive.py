@@ -9,6 +9,7 @@ filled points (no other run is both faster and more accurate).
 import csv
 
 import entry  # apps/plots/entry.py, beside this script
+from pareto import pareto  # apps/plots/pareto.py
 
 import matplotlib
 
@@ -17,15 +18,6 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 STYLE = {"uniform": ("o", "tab:blue"), "adaptive": ("s", "tab:orange")}
 
-
-def pareto(points):
-    """Indices of points no other point beats in both time and error."""
-    best, front = float("inf"), []
-    for i in sorted(range(len(points)), key=lambda i: (points[i][0], points[i][1])):
-        if points[i][1] < best:
-            best = points[i][1]
-            front.append(i)
-    return front
 
 
 def main(csv_path, png_path):

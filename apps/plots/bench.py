@@ -3,6 +3,7 @@
 import csv
 
 import entry  # apps/plots/entry.py, beside this script
+from pareto import pareto  # apps/plots/pareto.py
 
 import matplotlib
 
@@ -24,15 +25,6 @@ def label(r):
         return r["form_factor"]
     return "base"
 
-
-def pareto(points):
-    """Indices of points no other point beats in both error and time."""
-    best, front = float("inf"), []
-    for i in sorted(range(len(points)), key=lambda i: (points[i][0], points[i][1])):
-        if points[i][1] < best:
-            best = points[i][1]
-            front.append(i)
-    return front
 
 
 def main(csv_path, png_path):

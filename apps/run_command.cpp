@@ -152,6 +152,11 @@ nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& pre
                         {"form_factor", to_string(o.solver.form_factor)},
                         {"visibility", o.impl == "board" ? "board" : float_arith(o) ? o.arith : o.visibility},
                         {"arith", o.arith},
+                        {"cards", o.impl == "board" ? nlohmann::ordered_json(o.cards) : nlohmann::ordered_json()},
+                        {"card_split", o.impl == "board" && o.cards > 1 ? nlohmann::ordered_json(o.card_split)
+                                                                        : nlohmann::ordered_json()},
+                        {"card_bus", o.impl == "board" && o.cards > 1 ? nlohmann::ordered_json(o.card_bus)
+                                                                      : nlohmann::ordered_json()},
                         {"bits", float_arith(o) ? nlohmann::ordered_json() : nlohmann::ordered_json(o.bits)},
                         {"face_target", o.scene.face_target},
                         {"face_levels", o.scene.face_levels},

@@ -116,6 +116,13 @@ LanesThatFit lanes_that_fit(const board::DeviceProfile& profile, const HostProfi
                                       bits)};
 }
 
+LanesThatFit lanes_that_fit(const board::DeviceProfile& profile, const HostProfile& host_profile,
+                            pipeline::FloatFormat format) {
+  return {board::paper_rule_lanes_that_fit(profile, measured_peak_software_rate(load_paper_table(default_paper_table_path()))),
+          board::float_lanes_that_fit(profile, 1.0 / host_profile.work[static_cast<int>(HostWork::IntersectionTest)].to_seconds(),
+                                      format)};
+}
+
 nlohmann::ordered_json lanes_that_fit_json(const LanesThatFit& e) {
   return {{"paper_rule", estimate_json(e.paper_rule)},
           {"model", estimate_json(e.model)},

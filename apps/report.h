@@ -8,6 +8,7 @@
 
 #include "board/throughput_estimates.h"
 #include "host/host_cpu_model.h"
+#include "pipeline/float_format.h"
 #include "radiosity/radiosity.h"
 #include "scenes/scene.h"
 
@@ -35,6 +36,8 @@ struct LanesThatFit {
 };
 LanesThatFit lanes_that_fit(const std::string& device, const std::string& host, int bits);
 LanesThatFit lanes_that_fit(const board::DeviceProfile& device, const HostProfile& host, int bits);
+// Float lanes (estimates, docs/pipeline.md): the model's estimate for `format`; the paper's rule is its own.
+LanesThatFit lanes_that_fit(const board::DeviceProfile& device, const HostProfile& host, pipeline::FloatFormat format);
 nlohmann::ordered_json lanes_that_fit_json(const LanesThatFit& estimates);
 std::string lanes_that_fit_line(const LanesThatFit& estimates);  // one line for a summary
 

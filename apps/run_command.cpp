@@ -64,14 +64,16 @@ void parse_trace_steps(const std::string& text, BoardRunOptions& board) {
 RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& progress) {
   BoardRunOptions board = o.board;
   board.bits = o.bits;
+  if (float_arith(o)) board.float_format = pipeline::parse_float_format(o.arith);  // float lanes
   board.lanes = o.lanes;
   board.cards = o.cards;
   board.card_split = card_split_from_string(o.card_split);
   board.card_bus = card_bus_from_string(o.card_bus);
-  // The lanes copy the culled kernel's answer, proven bit-identical (tests BoardOracle.*, FastVisibility.*).
+  // The lanes copy the culled kernel's answer, proven bit-identical (tests BoardOracle.*, FastVisibility.*);
+  // float lanes copy the `float:E,M` software backend's (tests BoardSystem.FloatLanes*).
   std::unique_ptr<VisibilityBackend> oracle;
   if (!o.lanes_compute) {
-    oracle = make_functional_answer("fast", o.bits);
+    oracle = make_functional_answer(float_arith(o) ? o.arith : "fast", o.bits);
     board.oracle = oracle.get();
   }
   parse_trace_steps(o.trace_steps, board);
@@ -82,13 +84,17 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   RunOutcome out;
   out.solver = std::move(r.solver);
   out.visibility_name = "board " + board.device + ", " + std::to_string(board.lanes.value()) + " lane(s), " +
-                        std::to_string(o.bits) + "-bit" + (board.concurrent ? ", concurrent" : ", serial") +
+                        (float_arith(o) ? o.arith : std::to_string(o.bits) + "-bit") + (board.concurrent ? ", concurrent" : ", serial") +
                         (o.cards > 1 ? ", " + std::to_string(o.cards) + " cards (split " + o.card_split + ", " +
                                            o.card_bus + " bus)"
                                      : "");
   out.visibility_tests = r.report.intersections.tests;
   out.board = std::move(r.report);
-  out.lanes_that_fit = lanes_that_fit(board.device, board.host, o.bits);
+  out.lanes_that_fit =
+      float_arith(o)
+          ? lanes_that_fit(board::find_device_profile(board.device), find_host_profile(board.host),
+                           pipeline::parse_float_format(o.arith))
+          : lanes_that_fit(board.device, board.host, o.bits);
   return out;
 }
 
@@ -213,7 +219,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--arith", options->arith,
                   "The pipeline's arithmetic: fixed (fractional bits: --bits) or float:E,M (exponent and fraction bits, "
                   "e.g. float:8,23 single, float:5,10 half; round to nearest even per operation, no subnormals; "
-                  "software only, docs/pipeline.md)")
+                  "docs/pipeline.md; with --impl board, float lanes: docs/board.md, Float lanes)")
       ->capture_default_str();
   BoardRunOptions& b = options->board;
   b.host = "athlon-mp-2600-calibrated";  // the profile fitted to the paper's measurements (docs/calibration.md)
@@ -265,10 +271,6 @@ void add_run_command(CLI::App& app, int& exit_code) {
           throw CLI::ValidationError(option, "does not apply with --arith " + options->arith +
                                                  " (the float pipeline has no fractional width and is its own backend)");
         }
-      }
-      if (options->impl == "board") {
-        throw CLI::ValidationError("--arith", options->arith + " applies to --impl software only: the board model's "
-                                              "lanes are the fixed-point pipeline (a float lane is not modelled yet)");
       }
     }
     exit_code = run_simulation(*options);

@@ -75,10 +75,10 @@ std::uint64_t max_rays_on_chip(const BankLayout& layout) {
   return r;
 }
 
-}  // namespace
-
-BankLayout make_bank_layout(LaneCount lanes, unsigned banks, pipeline::FracBits bits, unsigned word_bits,
-                            std::uint64_t bank_capacity_bytes) {
+// The layout for coordinates of `value_bits` bits; `what` names them in errors ("15 fractional
+// bits", "float:5,10 (16-bit values)").
+BankLayout make_layout(LaneCount lanes, unsigned banks, unsigned value_bits, const std::string& what,
+                       unsigned word_bits, std::uint64_t bank_capacity_bytes) {
   if (word_bits != 32 && word_bits != 64) throw std::invalid_argument("bank words must be 32 or 64 bits wide");
   if (bank_capacity_bytes < word_bits / 8)
     throw std::invalid_argument("bank capacity must hold at least one word");
@@ -89,9 +89,9 @@ BankLayout make_bank_layout(LaneCount lanes, unsigned banks, pipeline::FracBits 
   BankLayout L;
   L.lanes = lanes;
   L.banks_available = banks;
-  L.bits = bits;
+  L.value_bits = value_bits;
   L.word_bits = word_bits;
-  L.coords_per_word = word_bits / static_cast<unsigned>(bits);
+  L.coords_per_word = word_bits / value_bits;
   L.field_bits = word_bits / L.coords_per_word;
   L.bank_words = bank_capacity_bytes / (word_bits / 8);
 
@@ -101,7 +101,7 @@ BankLayout make_bank_layout(LaneCount lanes, unsigned banks, pipeline::FracBits 
   const unsigned last_k = full_need <= banks ? 3 : banks + 3 > full_need ? banks + 3 - full_need : 0;
   if (last_k == 0) {
     throw std::invalid_argument(
-        lanes_text(lanes) + " at " + std::to_string(bits) + " fractional bits (" + std::to_string(c) +
+        lanes_text(lanes) + " at " + what + " (" + std::to_string(c) +
         " coordinate(s) per " + std::to_string(word_bits) + "-bit word) need " + std::to_string(full_need) +
         " banks at full rate (3 per group of " + std::to_string(c) + " lanes + faces + results), or at least " +
         std::to_string(full_need - 2) + " with the last group in one bank at 1/3 rate (sec 4.1); the board has " +
@@ -124,6 +124,33 @@ BankLayout make_bank_layout(LaneCount lanes, unsigned banks, pipeline::FracBits 
   for (; next_bank < banks; ++next_bank) L.spare_banks.push_back(next_bank);
   L.max_faces_per_set = L.bank_words / (L.face_words() + (L.mask_in_face_bank() ? 1 : 0));
   L.max_rays_per_batch = max_rays(L);
+  return L;
+}
+
+}  // namespace
+
+BankLayout make_bank_layout(LaneCount lanes, unsigned banks, pipeline::FracBits bits, unsigned word_bits,
+                            std::uint64_t bank_capacity_bytes) {
+  BankLayout L = make_layout(lanes, banks, static_cast<unsigned>(bits), std::to_string(bits) + " fractional bits",
+                             word_bits, bank_capacity_bytes);
+  L.bits = bits;
+  return L;
+}
+
+BankLayout make_bank_layout(LaneCount lanes, unsigned banks, pipeline::FloatFormat format, unsigned word_bits,
+                            std::uint64_t bank_capacity_bytes) {
+  const auto value_bits = static_cast<unsigned>(format.bits_per_value());
+  const std::string what = format.to_string() + " (" + std::to_string(value_bits) + "-bit values)";
+  if (value_bits > word_bits) {
+    throw std::invalid_argument(what + " do not fit a " + std::to_string(word_bits) +
+                                "-bit bank word: a coordinate or face-record value is one field of a word");
+  }
+  if (value_bits > 32) {
+    throw std::invalid_argument(what + " do not fit the 32-bit start-point registers (START_X/Y/Z) of the " +
+                                std::to_string(word_bits) + "-bit-word board");
+  }
+  BankLayout L = make_layout(lanes, banks, value_bits, what, word_bits, bank_capacity_bytes);
+  L.float_format = format;
   return L;
 }
 

@@ -11,6 +11,9 @@
 //
 // A coordinate is a `bits`-bit unsigned 0.N code; a bank word of W bits holds c = floor(W / bits)
 // of them, in fields of floor(W / c) bits (15 bits: two 16-bit halves of a 32-bit word, sec 4.2).
+// Float lanes (docs/board.md, "Float lanes"): a coordinate is the (1+E+M)-bit pattern of a value of
+// the format (sign | biased exponent | fraction, word_format.h), packed the same way with bits = 1+E+M
+// (float:5,10: two 16-bit fields per 32-bit word; float:8,23: one per word).
 // A ray group is a set of k banks (k = 3 normally; 1 or 2 in the 6- and 7-bank variants of sec 4.1)
 // feeding up to c lanes. Its rays are stored as packets of c rays (one per lane, "slot"); packet p
 // is three words, X, Y, Z, at stream positions 3p, 3p + 1, 3p + 2, and stream position i lives in
@@ -27,6 +30,7 @@
 
 #include "board/lane_count.h"
 #include "pipeline/fixed_format.h"
+#include "pipeline/float_format.h"
 
 namespace rc::board {
 
@@ -53,7 +57,9 @@ struct RayGroup {
 struct BankLayout {
   unsigned lanes = 0;
   unsigned banks_available = 0;
-  pipeline::FracBits bits = 15;  // set by make_bank_layout
+  pipeline::FracBits bits = 15;  // set by make_bank_layout (fixed point; unused by float lanes)
+  std::optional<pipeline::FloatFormat> float_format;  // set: float lanes in this format (docs/board.md)
+  unsigned value_bits = 15;      // bits of one coordinate: `bits`, or 1+E+M for float lanes
   unsigned word_bits = 32;
   unsigned coords_per_word = 0;  // c
   unsigned field_bits = 0;       // width of one coordinate field in a word
@@ -80,6 +86,11 @@ struct BankLayout {
 // coordinate, or more banks needed than available (naming lanes, banks needed and available).
 // Results in the bank unless placed on chip (below, or board_params.h's make_bank_layout(BoardParams)).
 BankLayout make_bank_layout(LaneCount lanes, unsigned banks, pipeline::FracBits bits, unsigned word_bits,
+                            std::uint64_t bank_capacity_bytes);
+// The same for float lanes: coordinates and face-record values are (1+E+M)-bit patterns. Also
+// throws std::invalid_argument when a value is wider than the bank word or than the 32-bit
+// start-point registers (naming the format and the word).
+BankLayout make_bank_layout(LaneCount lanes, unsigned banks, pipeline::FloatFormat format, unsigned word_bits,
                             std::uint64_t bank_capacity_bytes);
 // The layout with its results kept `store` (on chip: in `store_bits` bits of block RAM), its batch
 // limit recomputed. Idempotent. Throws std::invalid_argument for results on chip with no bits.

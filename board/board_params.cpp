@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "board/design_fit.h"
 #include "tlm/timing.h"
@@ -20,7 +21,12 @@ BoardParams make_board_params(const DeviceProfile& p, const BoardChoices& c) {
   b.bank_write_latency = p.bank_write_latency_cycles;
   // The lanes must fit the device; the clock is the design's (wrapper-limited, or the pipeline's
   // own at this width if that is slower).
-  b.fit = fit_design(p, pipeline::ResourceModel::load_default(), static_cast<int>(c.lanes), c.bits);
+  b.float_format = c.float_format;
+  if (c.float_format) {
+    b.fit = fit_float_design(p, pipeline::ResourceModel::load_default(), c.lanes, *c.float_format);  // an estimate
+  } else {
+    b.fit = fit_design(p, pipeline::ResourceModel::load_default(), static_cast<int>(c.lanes), c.bits);
+  }
   if (!b.fit.fits) throw std::invalid_argument(b.fit.describe());
   b.timing.device_period = tlmx::period_from_hz(b.fit.clock_mhz * 1e6);
   b.timing.bank_period = tlmx::period_from_hz(p.bank_clock_mhz * 1e6);
@@ -50,8 +56,10 @@ BoardParams make_board_params(const DeviceProfile& p, const BoardChoices& c) {
 }
 
 BankLayout make_bank_layout(const BoardParams& p) {
-  return place_results(make_bank_layout(p.lanes, p.banks, p.bits, p.word_bits, p.bank_capacity_bytes), p.results,
-                       p.result_store_bits);
+  BankLayout layout = p.float_format
+                          ? make_bank_layout(p.lanes, p.banks, *p.float_format, p.word_bits, p.bank_capacity_bytes)
+                          : make_bank_layout(p.lanes, p.banks, p.bits, p.word_bits, p.bank_capacity_bytes);
+  return place_results(std::move(layout), p.results, p.result_store_bits);
 }
 
 }  // namespace rc::board

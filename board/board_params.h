@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include <systemc>
@@ -20,7 +21,8 @@ struct BoardParams {
   std::string device = "custom";
   LaneCount lanes = 1;
   unsigned banks = 6;
-  pipeline::FracBits bits = 15;
+  pipeline::FracBits bits = 15;        // fixed-point lanes: fractional bits
+  std::optional<pipeline::FloatFormat> float_format;  // set: float lanes in this format, `bits` unused
   std::uint64_t bank_capacity_bytes = 4u << 20;
   unsigned word_bits = 32;
   unsigned bank_write_latency = 2;     // bank cycles (read latency: timing.bank_read_latency)
@@ -40,13 +42,16 @@ struct BoardChoices {
   LaneCount lanes = 1;
   unsigned banks = 0;                    // 0: the profile's count
   pipeline::FracBits bits = 15;
+  std::optional<pipeline::FloatFormat> float_format;  // set: float lanes (docs/board.md, "Float lanes")
   std::uint64_t bank_capacity_bytes = 0; // 0: the profile's
   WrapperModel model = WrapperModel::fast;
   sc_core::sc_time irq_latency = sc_core::SC_ZERO_TIME;
 };
 
 // Throws std::invalid_argument if the lanes do not fit the device (design_fit.h), the profile
-// has no clock for the lane count, or results on chip find no block RAM left.
+// has no clock for the lane count, or results on chip find no block RAM left. Float lanes: the
+// design's resources and clock are fit_float_design's ESTIMATE; the pipeline latency stays the
+// profile's (the float operators' latencies are not sourced; docs/board.md, "Float lanes").
 BoardParams make_board_params(const DeviceProfile& profile, const BoardChoices& choices);
 
 // The bank layout of a board with these parameters, results placed as they say (bank_layout.h).

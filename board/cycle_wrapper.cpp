@@ -51,6 +51,7 @@ void CycleWrapper::begin() {
   m_mask_lo = m_in.mask_start;
   m_pipe.clear();
   stream_cycles(m_layout, m_timing, m_in.split, false, &m_limit);
+  if (m_layout.float_format) m_float_start = float_start(m_in);
   if (m_layout.results == ResultStore::on_chip) {
     m_store.assign(m_in.split.result_words, 0);
     m_word_group.assign(m_in.split.result_words, 0);
@@ -101,7 +102,10 @@ void CycleWrapper::controller() {
         const bool face_ready = allowed(m_phase_cycle) >= lr + words;
         const bool mask_ready = !m_layout.mask_bank || allowed(m_phase_cycle) >= lr + 1;
         if (!(face_ready && mask_ready)) return;
-        m_face_record = face_record(m_face);  // the words have arrived: latch them
+        if (m_layout.float_format)
+          m_float_face = float_face_record(m_face);  // the words have arrived: latch them
+        else
+          m_face_record = face_record(m_face);
         m_mask_hi = m_mask_lo + own_face_table().count(m_face);
         m_traffic[m_layout.face_bank].reads += words;
         m_traffic[m_layout.face_bank].busy_bank_cycles += lr + words;
@@ -196,6 +200,7 @@ bool CycleWrapper::try_issue(unsigned g) {
   p.index = q;
   p.clearing = clearing;
   p.face = m_face_record;
+  p.float_face = m_float_face;
   p.lanes.resize(group.lanes);
   std::uint64_t word[3];
   for (unsigned a = 0; a < 3; ++a) {
@@ -215,7 +220,13 @@ bool CycleWrapper::try_issue(unsigned g) {
     const pipeline::FixedVec3 end{coordinate_field(word[0], slot, m_layout.field_bits),
                                   coordinate_field(word[1], slot, m_layout.field_bits),
                                   coordinate_field(word[2], slot, m_layout.field_bits)};
-    lane.direction = pipeline::segment_direction(m_in.start, end);
+    if (m_layout.float_format) {
+      const pipeline::FloatFormat format = *m_layout.float_format;
+      lane.fdirection = pipeline::segment_direction(m_float_start, float_point_from_codes(end.x, end.y, end.z, format),
+                                                    format);
+    } else {
+      lane.direction = pipeline::segment_direction(m_in.start, end);
+    }
     ++m_record.lane_rays[group.first_lane + slot];
   }
   m_pipe.push_back(std::move(p));
@@ -238,6 +249,14 @@ void CycleWrapper::advance_pipeline() {
     if (age != s1 && age != s2 && age != s3) continue;
     for (Lane& lane : p.lanes) {
       if (!lane.valid) continue;
+      if (m_layout.float_format) {
+        const pipeline::FloatFormat format = *m_layout.float_format;
+        const pipeline::FloatFaceRecord& face = p.float_face;
+        if (age == s1) lane.fs1 = pipeline::stage1(face, m_float_start, lane.fdirection, format);
+        if (age == s2) lane.fs2 = pipeline::stage2(face, lane.fs1, format);
+        if (age == s3) lane.fs3 = pipeline::stage3(face, lane.fdirection, lane.fs1, lane.fs2, format);
+        continue;
+      }
       if (age == s1) lane.s1 = pipeline::stage1(p.face, m_in.start, lane.direction, bits);
       if (age == s2) lane.s2 = pipeline::stage2(p.face, lane.s1, bits);
       if (age == s3) lane.s3 = pipeline::stage3(p.face, lane.direction, lane.s1, lane.s2, bits);
@@ -250,7 +269,8 @@ void CycleWrapper::write_back(const Packet& p) {
   std::uint64_t hits = 0;
   for (unsigned slot = 0; slot < p.lanes.size(); ++slot) {
     const Lane& lane = p.lanes[slot];
-    if (lane.valid && !lane.masked && lane.s3.hit) hits |= std::uint64_t(1) << slot;
+    const bool hit = m_layout.float_format ? lane.fs3.hit : lane.s3.hit;
+    if (lane.valid && !lane.masked && hit) hits |= std::uint64_t(1) << slot;
   }
   const std::uint64_t at = m_in.split.result_base[p.group] + p.index;
   if (m_layout.results == ResultStore::on_chip) {

@@ -18,6 +18,10 @@
 // each when the bank's budget of the phase covers its accesses (a write, or a read and a write when
 // a pass that does not clear ORs onto a word shared by lanes), then DONE follows `finish` cycles later.
 //
+// Float lanes (layout.float_format set): the coordinate fields, start registers and face records are
+// decoded from their bit patterns (word_format.h) and the lanes run float_mt's stages at the same
+// stage positions; timing is the same machine on the float layout (docs/board.md, "Float lanes").
+//
 // Stage positions (assumption: the paper gives only the total, 37): the direction end - start is
 // formed in the input cycle (age 0); stage 1 completes at age 12, stage 2 at age 24, stage 3 (and the
 // decision) at age 36, and the result is written at age 37, i.e. ages (L-1)/3, 2(L-1)/3, L-1, L.
@@ -29,6 +33,7 @@
 
 #include "board/wrapper_base.h"
 #include "pipeline/fixed_mt.h"
+#include "pipeline/float_mt.h"
 
 namespace rc::board {
 
@@ -50,6 +55,11 @@ class CycleWrapper : public WrapperBase {
     pipeline::Stage1Result s1{};
     pipeline::Stage2Result s2{};
     pipeline::Stage3Result s3{};
+    // Float lanes (layout.float_format): the same registers in the format (pipeline/float_mt.h).
+    pipeline::FloatVec3 fdirection{0, 0, 0};
+    pipeline::FloatStage1Result fs1{};
+    pipeline::FloatStage2Result fs2{};
+    pipeline::FloatStage3Result fs3{};
   };
   struct Packet {  // what one group puts into its lanes in one cycle
     std::uint64_t issued = 0;  // cycle
@@ -57,6 +67,7 @@ class CycleWrapper : public WrapperBase {
     std::uint64_t index = 0;   // packet index within the group
     bool clearing = false;
     pipeline::FaceRecord face{};
+    pipeline::FloatFaceRecord float_face{};  // float lanes
     std::vector<Lane> lanes;
   };
 
@@ -81,6 +92,8 @@ class CycleWrapper : public WrapperBase {
   std::uint64_t m_face = 0;
   std::uint64_t m_mask_lo = 0, m_mask_hi = 0;
   pipeline::FaceRecord m_face_record{};
+  pipeline::FloatFaceRecord m_float_face{};  // float lanes
+  pipeline::FloatVec3 m_float_start{0, 0, 0};
   std::vector<std::uint64_t> m_issued;  // packets issued this face, per group
   std::uint64_t m_result_used = 0;      // result-bank accesses reserved this face
   std::deque<Packet> m_pipe;

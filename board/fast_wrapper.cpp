@@ -2,6 +2,7 @@
 
 #include "board/word_format.h"
 #include "pipeline/fixed_mt.h"
+#include "pipeline/float_mt.h"
 #include "tlm/timing.h"
 
 namespace rc::board {
@@ -87,6 +88,7 @@ void FastWrapper::compute(const PassInputs& in) {
   for (const RayGroup& g : m_layout.groups)
     for (unsigned b : g.banks) data[b] = bank(b);
   unpack_rays(m_layout, in.split, data, m_x.data(), m_y.data(), m_z.data());
+  if (m_layout.float_format) return compute_float(in);
   std::uint64_t lo = in.mask_start;
   const OwnFaceTable table = own_face_table();
   for (std::uint64_t f = 0; f < in.faces; ++f) {
@@ -95,6 +97,34 @@ void FastWrapper::compute(const PassInputs& in) {
       const pipeline::FaceRecord face = face_record(f);
       pipeline::occlude_face(face, in.start, m_x.data(), m_y.data(), m_z.data(), lo, m_layout.bits, m_blocked.data());
       pipeline::occlude_face(face, in.start, m_x.data() + hi, m_y.data() + hi, m_z.data() + hi, R - hi, m_layout.bits,
+                             m_blocked.data() + hi);
+    }
+    lo = hi;
+  }
+}
+
+// Float lanes: the same streaming order and masks, the codes read back decoded to format values
+// and tested with the float pipeline (pipeline/float_mt.h).
+void FastWrapper::compute_float(const PassInputs& in) {
+  const std::size_t R = in.rays;
+  const pipeline::FloatFormat format = *m_layout.float_format;
+  m_fx.resize(R);
+  m_fy.resize(R);
+  m_fz.resize(R);
+  for (std::size_t r = 0; r < R; ++r) {
+    m_fx[r] = float_from_code(static_cast<std::uint64_t>(m_x[r]), format);
+    m_fy[r] = float_from_code(static_cast<std::uint64_t>(m_y[r]), format);
+    m_fz[r] = float_from_code(static_cast<std::uint64_t>(m_z[r]), format);
+  }
+  const pipeline::FloatVec3 start = float_start(in);
+  std::uint64_t lo = in.mask_start;
+  const OwnFaceTable table = own_face_table();
+  for (std::uint64_t f = 0; f < in.faces; ++f) {
+    const std::uint64_t hi = lo + table.count(f);
+    if (in.face_first + f != in.source_face) {
+      const pipeline::FloatFaceRecord face = float_face_record(f);
+      pipeline::occlude_face(face, start, m_fx.data(), m_fy.data(), m_fz.data(), lo, format, m_blocked.data());
+      pipeline::occlude_face(face, start, m_fx.data() + hi, m_fy.data() + hi, m_fz.data() + hi, R - hi, format,
                              m_blocked.data() + hi);
     }
     lo = hi;

@@ -1,6 +1,7 @@
 // The fast wrapper model: one pass is one SC_THREAD activation and one timed wait. At the START
 // event it reads the pass's data from the banks through DMI and computes every result with
-// pipeline::occlude_face (face-outer, ray-inner, as the hardware streams, sec 4.1), then waits
+// pipeline::occlude_face (face-outer, ray-inner, as the hardware streams, sec 4.1; float lanes: the
+// float pipeline's occlude_face on the decoded bit patterns), then waits
 // until the pass's completion time from pass_timing.h (first device clock edge at or after START,
 // plus the pass's cycles), writes the result words, sets DONE and raises the interrupt. The result
 // words are the same whether the results accumulate in the bank or on chip (docs/board.md, "Results
@@ -33,6 +34,7 @@ class FastWrapper : public WrapperBase {
   void run();
   const TimedPass& timed_pass(const PassInputs& in);
   void compute(const PassInputs& in);
+  void compute_float(const PassInputs& in);  // float lanes (layout.float_format): float_mt's occlude_face
   void write_results(const PassInputs& in);
 
   // Scratch kept between passes: end points in pass order and the blocked flags.
@@ -40,6 +42,7 @@ class FastWrapper : public WrapperBase {
   PassRecord m_record;
   std::vector<TimedPass> m_timed;  // the last kTimedPasses pass shapes and their timing
   std::vector<std::int64_t> m_x, m_y, m_z;
+  std::vector<double> m_fx, m_fy, m_fz;  // float lanes: the end points decoded
   std::vector<std::uint8_t> m_blocked;
 };
 

@@ -17,7 +17,8 @@ std::uint64_t stride_for(std::uint64_t capacity) {
 }
 
 std::uint32_t config_register(const BankLayout& l) {
-  return (l.lanes & 0xFF) | (static_cast<std::uint32_t>(l.bits) & 0xFF) << 8 |
+  // Fractional bits, or for float lanes the value width 1+E+M (value_bits is the one or the other).
+  return (l.lanes & 0xFF) | (static_cast<std::uint32_t>(l.value_bits) & 0xFF) << 8 |
          (static_cast<std::uint32_t>(l.groups.size()) & 0xFF) << 16 | (l.banks_available & 0xFF) << 24;
 }
 
@@ -60,7 +61,8 @@ Rc2000::Rc2000(const sc_core::sc_module_name& name, const BoardParams& params, B
       busy_signal("busy"),
       done_signal("done"),
       irq_signal("irq_level") {
-  if (m_layout.lanes != params.lanes || m_layout.banks_available != params.banks || m_layout.bits != params.bits ||
+  if (m_layout.lanes != params.lanes || m_layout.banks_available != params.banks ||
+      m_layout.float_format != params.float_format || (!params.float_format && m_layout.bits != params.bits) ||
       m_layout.word_bits != params.word_bits) {
     throw std::logic_error("Rc2000: the bank layout given is not the layout of the board's parameters");
   }

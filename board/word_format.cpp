@@ -12,6 +12,18 @@ pipeline::FaceRecord face_record_from_words(const std::uint64_t w[9], unsigned w
   return {{s(0), s(1), s(2)}, {s(3), s(4), s(5)}, {s(6), s(7), s(8)}};
 }
 
+void float_face_record_words(const pipeline::FloatFaceRecord& f, const pipeline::FloatFormat& format,
+                             std::uint64_t w[9]) {
+  const double v[9] = {f.v0.x, f.v0.y, f.v0.z, f.edge1.x, f.edge1.y, f.edge1.z, f.edge2.x, f.edge2.y, f.edge2.z};
+  for (int i = 0; i < 9; ++i) w[i] = float_code(v[i], format);
+}
+
+pipeline::FloatFaceRecord float_face_record_from_words(const std::uint64_t w[9], const pipeline::FloatFormat& format) {
+  const std::uint64_t mask = (std::uint64_t(1) << format.bits_per_value()) - 1;
+  auto v = [&](int i) { return float_from_code(w[i] & mask, format); };
+  return {{v(0), v(1), v(2)}, {v(3), v(4), v(5)}, {v(6), v(7), v(8)}};
+}
+
 void pack_rays(const BankLayout& layout, const RaySplit& split, const std::int64_t* x, const std::int64_t* y,
                const std::int64_t* z, std::vector<std::vector<std::uint8_t>>& images) {
   const unsigned word_bytes = layout.word_bits / 8;

@@ -59,6 +59,13 @@ pipeline::FaceRecord WrapperBase::face_record(std::uint64_t face_in_set) {
   return face_record_from_words(words, m_layout.word_bits);
 }
 
+pipeline::FloatFaceRecord WrapperBase::float_face_record(std::uint64_t face_in_set) {
+  std::uint64_t words[9];
+  const std::uint8_t* faces = bank(m_layout.face_bank);
+  for (unsigned i = 0; i < 9; ++i) words[i] = load_word(faces, face_in_set * 9 + i, m_word_bytes);
+  return float_face_record_from_words(words, *m_layout.float_format);
+}
+
 void WrapperBase::read_inputs(PassInputs& in) {
   in.error = reg::kOk;
   in.clear = (m_regs.take_start() & reg::kClear) != 0;
@@ -79,7 +86,7 @@ void WrapperBase::read_inputs(PassInputs& in) {
     for (std::uint64_t f = 0; f < in.faces; ++f) masked += table.count(f);
     if (masked > in.rays) in.error = reg::kMaskOverrun;
   }
-  const std::int64_t limit = std::int64_t(1) << m_layout.bits;
+  const std::int64_t limit = std::int64_t(1) << m_layout.value_bits;  // a code, or a float's bit pattern
   if (in.error == reg::kOk && (in.start.x >= limit || in.start.y >= limit || in.start.z >= limit))
     in.error = reg::kBadStartPoint;
   if (in.error != reg::kOk) in.rays = in.faces = 0, in.split = m_split(0);

@@ -27,7 +27,7 @@ namespace rc::board {
 struct PassInputs {
   std::uint64_t rays = 0, faces = 0;
   std::uint32_t face_first = 0, source_face = reg::kNoFace, mask_start = 0;
-  pipeline::FixedVec3 start{0, 0, 0};
+  pipeline::FixedVec3 start{0, 0, 0};  // codes (float lanes: the values' bit patterns)
   bool clear = false;
   RaySplit split;
   std::uint32_t error = reg::kOk;
@@ -103,6 +103,12 @@ class WrapperBase : public sc_core::sc_module {
   };
   OwnFaceTable own_face_table();
   pipeline::FaceRecord face_record(std::uint64_t face_in_set);
+  // Float lanes (layout.float_format set): the record's words decoded as format values.
+  pipeline::FloatFaceRecord float_face_record(std::uint64_t face_in_set);
+  // Float lanes: the start point's registers (bit patterns) as format values.
+  pipeline::FloatVec3 float_start(const PassInputs& in) const {
+    return float_point_from_codes(in.start.x, in.start.y, in.start.z, *m_layout.float_format);
+  }
   void begin_pass();
   void complete_pass(const PassRecord& record);
   void report_traffic(const std::vector<BankTraffic>& traffic);

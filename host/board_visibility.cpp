@@ -174,7 +174,18 @@ void BoardVisibility::load_faces(const std::vector<Triangle>& faces) {
   }
   faces_.clear();
   faces_.reserve(faces.size());
-  for (const Triangle& t : faces) faces_.push_back(pipeline::make_face_record(t, bits));  // charged per upload
+  if (layout_.float_format) {  // float lanes: each value's bit pattern (word_format.h)
+    const pipeline::FloatFormat format = *layout_.float_format;
+    for (const Triangle& t : faces) {
+      const pipeline::FloatFaceRecord r = pipeline::make_float_face_record(t, format);
+      auto code = [&](double v) { return static_cast<std::int64_t>(board::float_code(v, format)); };
+      faces_.push_back({{code(r.v0.x), code(r.v0.y), code(r.v0.z)},
+                        {code(r.edge1.x), code(r.edge1.y), code(r.edge1.z)},
+                        {code(r.edge2.x), code(r.edge2.y), code(r.edge2.z)}});
+    }
+  } else {
+    for (const Triangle& t : faces) faces_.push_back(pipeline::make_face_record(t, bits));  // charged per upload
+  }
   if (options_.oracle != nullptr) options_.oracle->load_faces(faces);
   stats_.face_sets = faces_.empty() ? 0 : (faces_.size() + faces_per_set_ - 1) / faces_per_set_;
   resident_set_ = -1;
@@ -205,6 +216,16 @@ void BoardVisibility::upload_faces(std::size_t set) {
 
 // ---- one step -----------------------------------------------------------------------------------------
 
+// A point as the lanes take it: quantised to 0.N codes, or (float lanes) rounded to the format
+// (round_point) and held as the values' bit patterns.
+pipeline::FixedVec3 BoardVisibility::end_point_code(const Vec3& p) const {
+  if (!layout_.float_format) return pipeline::quantize_point(p, layout_.bits);
+  const pipeline::FloatFormat format = *layout_.float_format;
+  const pipeline::FloatVec3 v = pipeline::round_point(p, format);
+  return {static_cast<std::int64_t>(board::float_code(v.x, format)), static_cast<std::int64_t>(board::float_code(v.y, format)),
+          static_cast<std::int64_t>(board::float_code(v.z, format))};
+}
+
 // Rays grouped by end face in face order (the solver already sends them so; otherwise a stable
 // counting sort), quantised into the hardware's format.
 void BoardVisibility::order_segments(const SegmentBatch& batch) {
@@ -221,13 +242,13 @@ void BoardVisibility::order_segments(const SegmentBatch& batch) {
   z_.resize(rays_);
   for (std::size_t i = 0; i < rays_; ++i) {
     const std::size_t s = order_[i];
-    const pipeline::FixedVec3 e = pipeline::quantize_point(batch.ends[s], layout_.bits);
+    const pipeline::FixedVec3 e = end_point_code(batch.ends[s]);
     end_faces_[i] = batch.end_faces[s];
     x_[i] = e.x;
     y_[i] = e.y;
     z_[i] = e.z;
   }
-  start_ = pipeline::quantize_point(batch.start, layout_.bits);
+  start_ = end_point_code(batch.start);
   source_face_ = batch.source_face >= 0 ? static_cast<std::uint32_t>(batch.source_face) : reg::kNoFace;
   charge_end_points(rays_);
 }

@@ -1,12 +1,13 @@
 // The host driver of the RC2000 as a visibility backend: everything the solver asks goes host ->
 // PCI -> banks -> lanes -> result bank -> PCI -> host.
 //
-// Per step (docs/board.md, "Pass protocol"): quantise the end points (pipeline::quantize_point) in
-// end-face order, pack them into the X/Y/Z bank words and DMA them to the ray banks; DMA the
-// own-face table; write the pass registers and START (with CLEAR on a batch's first face set);
-// wait for the interrupt; clear DONE; DMA the result words back. Rays beyond a batch's capacity are
-// split into batches and faces beyond a set's capacity into sets (paper sec 4.4); a batch's result
-// words are ORed across its face sets on the board and read back once.
+// Per step (docs/board.md, "Pass protocol"): quantise the end points (pipeline::quantize_point; float
+// lanes: round_point, then the values' bit patterns, board/word_format.h) in end-face order, pack
+// them into the X/Y/Z bank words and DMA them to the ray banks; DMA the own-face table; write the
+// pass registers and START (with CLEAR on a batch's first face set); wait for the interrupt; clear
+// DONE; DMA the result words back. Rays beyond a batch's capacity are split into batches and faces
+// beyond a set's capacity into sets (paper sec 4.4); a batch's result words are ORed across its face
+// sets on the board and read back once.
 //
 // Serial mode: submit() runs every pass and returns with the results. Concurrent mode (sec 4.3):
 // submit() returns right after the first START, the solver computes form factors on the host (in
@@ -35,6 +36,7 @@
 #include "host/timing_replay_target.h"
 #include "radiosity/visibility.h"
 #include "pipeline/fixed_mt.h"
+#include "pipeline/float_mt.h"
 #include "tlm/no_data_extension.h"
 #include "tlm/programmed_io_extension.h"
 
@@ -143,6 +145,7 @@ class BoardVisibility : public VisibilityBackend, public TimingReplayTarget {
   };
 
   void order_segments(const SegmentBatch& batch);
+  pipeline::FixedVec3 end_point_code(const Vec3& p) const;  // codes (float lanes: bit patterns)
   void run_step();     // the step's passes (serial) or its first pass (concurrent)
   void finish_step();  // the remaining passes
   void ask_oracle(const SegmentBatch& batch);
@@ -200,7 +203,7 @@ class BoardVisibility : public VisibilityBackend, public TimingReplayTarget {
   std::size_t rays_per_batch_, faces_per_set_;
   BoardDriverStats stats_;
 
-  std::vector<pipeline::FaceRecord> faces_;
+  std::vector<pipeline::FaceRecord> faces_;  // as the face bank's words: codes (float lanes: bit patterns)
   long resident_set_ = -1;
 
   // The submitted batch, in end-face order.

@@ -33,6 +33,7 @@ BoardSetup make_board_setup(const BoardRunOptions& o) {
   c.lanes = o.lanes;
   c.banks = o.banks;
   c.bits = o.bits;
+  c.float_format = o.float_format;
   c.bank_capacity_bytes = o.bank_capacity_bytes;
   c.model = o.model;
   c.irq_latency = s.host.interrupt_latency;
@@ -168,7 +169,7 @@ DeviceReport device_report(const board::BoardParams& p) {
   DeviceReport d;
   d.profile = p.device;
   d.lanes = p.lanes;
-  d.bits = p.bits;
+  d.bits = p.float_format ? 0 : static_cast<int>(p.bits);  // float lanes: no fractional width (as `accuracy`)
   d.clock_hz = 1.0 / seconds(p.timing.device_period);
   d.banks = p.banks;
   d.bank_capacity_bytes = p.bank_capacity_bytes;

@@ -44,6 +44,9 @@ struct BoardRunOptions {
   board::LaneCount lanes = 1;           // pipeline instances (1..255, checked when set)
   unsigned banks = 0;                   // 0: the profile's bank count
   pipeline::FracBits bits = 15;         // fractional bits (7..31), checked when set
+  // Set: float lanes in this format instead (docs/board.md, "Float lanes"); `bits` is then unused.
+  // The oracle, if any, must then be the `float:E,M` software backend of the same format.
+  std::optional<pipeline::FloatFormat> float_format;
   bool concurrent = false;              // paper sec 4.3
   std::string host = "athlon-mp-2600";  // configs/hosts/NAME.json, or a path
   std::optional<HostProfile> host_profile;  // when set, this profile instead of `host` (calibration variants)

@@ -13,6 +13,7 @@
 
 #include "apps/cli_options.h"
 #include "apps/plot.h"
+#include "pipeline/float_format.h"
 #include "apps/progress.h"
 #include "studies/bench_study.h"
 #include "radiosity/float_visibility.h"
@@ -34,11 +35,11 @@ struct BenchOptions : BenchSpec {
 void write_csv(const std::string& path, const std::vector<PointRun>& runs, const std::vector<TimingOutcome>& timing) {
   std::ofstream out(path);
   if (!out) throw std::runtime_error(path + ": cannot open for writing");
-  out << "varied,bits,convergence,patch_levels,form_factor,patches,steps,wall_seconds,hardware_seconds,"
+  out << "varied,arith,bits,convergence,patch_levels,form_factor,patches,steps,wall_seconds,hardware_seconds,"
          "fpga_busy_seconds,relative_rmse,relative_max_error,image_difference\n";
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const PointRun& r = runs[i];
-    out << r.point.varied << ',' << r.point.bits << ',' << r.point.convergence << ',' << r.point.patch_levels << ','
+    out << r.point.varied << ",\"" << r.point.arith << "\"," << r.point.bits << ',' << r.point.convergence << ',' << r.point.patch_levels << ','
         << to_string(r.point.form_factor) << ',' << r.scene.patches.size() << ',' << r.run.result.steps << ','
         << r.wall_seconds << ',' << timing[i].simulated_seconds << ','
         << timing[i].report.time.fpga_busy << ',' << r.error.relative_rmse() << ','
@@ -61,13 +62,13 @@ void write_markdown(const std::string& path, const BenchOptions& o, const std::v
      << " patches each (coarser points are compared with the reference averaged onto their patches). Errors are\n"
         "relative to the mean reference radiosity; the image difference is the relative RMSE of the linear\n"
         "256 x 256 image.\n\n"
-        "| varied | bits | convergence | patches | form factor | steps | wall s | hardware s | rel. RMSE | rel. max | image diff |\n"
+        "| varied | arithmetic | convergence | patches | form factor | steps | wall s | hardware s | rel. RMSE | rel. max | image diff |\n"
         "|---|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|\n";
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const PointRun& r = runs[i];
     char line[512];
-    std::snprintf(line, sizeof line, "| %s | %d | %.4f | %zu | %s | %d | %.3f | %.3f | %.2e | %.2e | %.2e |\n",
-                  r.point.varied.c_str(), r.point.bits, r.point.convergence, r.scene.patches.size(),
+    std::snprintf(line, sizeof line, "| %s | %s | %.4f | %zu | %s | %d | %.3f | %.3f | %.2e | %.2e | %.2e |\n",
+                  r.point.varied.c_str(), r.point.label().c_str(), r.point.convergence, r.scene.patches.size(),
                   to_string(r.point.form_factor).c_str(), r.run.result.steps, r.wall_seconds, timing[i].simulated_seconds,
                   r.error.relative_rmse(), r.error.relative_max(), r.image_difference);
     md << line;
@@ -94,11 +95,12 @@ int run_bench(const BenchOptions& o) {
   write_csv(o.out_dir + "/bench.csv", runs, timing);
   std::printf("rc2000sim bench: %zu points, reference %zu patches converged to 1e-6 (%.1f s)\n", runs.size(),
               ref.scene.patches.size(), reference_wall);
-  std::printf("  %-13s %4s %8s %6s %6s %6s %9s %10s %10s %10s %10s\n", "varied", "bits", "conv", "patch", "ff", "steps",
+  std::printf("  %-13s %10s %8s %6s %6s %6s %9s %10s %10s %10s %10s\n", "varied", "arithmetic", "conv", "patch", "ff", "steps",
               "wall s", "hardware s", "rel RMSE", "rel max", "image");
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const PointRun& r = runs[i];
-    std::printf("  %-13s %4d %8.4f %6zu %6s %6d %9.3f %10.3f %10.2e %10.2e %10.2e\n", r.point.varied.c_str(), r.point.bits,
+    std::printf("  %-13s %10s %8.4f %6zu %6s %6d %9.3f %10.3f %10.2e %10.2e %10.2e\n", r.point.varied.c_str(),
+                r.point.label().c_str(),
                 r.point.convergence, r.scene.patches.size(), to_string(r.point.form_factor).c_str(), r.run.result.steps,
                 r.wall_seconds, timing[i].simulated_seconds, r.error.relative_rmse(), r.error.relative_max(),
                 r.image_difference);
@@ -133,6 +135,9 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--form-factor", *base_ff, "Base point: form factor")->check(CLI::IsMember({"point", "disc"}))
       ->capture_default_str();
   cmd->add_option("--widths", o->widths, "Widths to sweep")->check(CLI::Range(7, 31))->delimiter(',')->capture_default_str();
+  cmd->add_option("--formats", o->formats, "Float formats to sweep (float:E,M; ';'-separated; 'none' for none), "
+                                           "each on the board's float lanes")
+      ->delimiter(';')->capture_default_str();
   cmd->add_option("--convergences", o->convergences, "Convergence thresholds to sweep")->check(CLI::Range(0.0, 1.0))
       ->delimiter(',')->capture_default_str();
   cmd->add_option("--sweep-patch-levels", o->patch_levels, "Patch levels to sweep")->check(CLI::Range(0, 6))
@@ -151,6 +156,8 @@ void add_bench_command(CLI::App& app, int& exit_code) {
                                                  "(--base-patch-levels, --sweep-patch-levels)");
     }
     o->base.form_factor = parse_form_factor_kind(*base_ff);
+    if (o->formats == std::vector<std::string>{"none"}) o->formats.clear();
+    for (const std::string& f : o->formats) (void)pipeline::parse_float_format(f);  // before any work
     o->board.lanes = o->lanes;
     exit_code = run_bench(*o);
   });

@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <chrono>
 
+#include "pipeline/float_format.h"
 #include "radiosity/float_visibility.h"
 
 namespace rc {
+
+std::string BenchPoint::label() const { return arith == "fixed" ? std::to_string(bits) + " bits" : arith; }
 
 std::vector<BenchPoint> sweep_points(const BenchSpec& o) {
   std::vector<BenchPoint> points{o.base};
@@ -15,10 +18,12 @@ std::vector<BenchPoint> sweep_points(const BenchSpec& o) {
     p.varied = what;
     apply(p);
     const bool is_base = p.bits == o.base.bits && p.convergence == o.base.convergence &&
-                         p.patch_levels == o.base.patch_levels && p.form_factor == o.base.form_factor;
+                         p.patch_levels == o.base.patch_levels && p.form_factor == o.base.form_factor &&
+                         p.arith == o.base.arith;
     if (!is_base) points.push_back(p);
   };
   for (int b : o.widths) vary("bits", [&](BenchPoint& p) { p.bits = b; });
+  for (const std::string& f : o.formats) vary("arith", [&](BenchPoint& p) { p.arith = f; });
   for (double c : o.convergences) vary("convergence", [&](BenchPoint& p) { p.convergence = c; });
   for (int m : o.patch_levels) vary("patch_levels", [&](BenchPoint& p) { p.patch_levels = m; });
   vary("form_factor", [&](BenchPoint& p) {
@@ -56,7 +61,7 @@ PointRun solve_point(const BenchSpec& o, const BenchPoint& p, const Reference& r
   run.solver.convergence = p.convergence;
   run.solver.form_factor = p.form_factor;
   const auto t0 = std::chrono::steady_clock::now();
-  run.run = record_functional_run(run.scene, run.solver, o.visibility, p.bits);
+  run.run = record_functional_run(run.scene, run.solver, p.arith == "fixed" ? o.visibility : p.arith, p.bits);
   run.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   run.solver.fixed_steps = run.run.result.steps;  // the timing replay runs exactly these steps
   const std::vector<Spectrum> reference =
@@ -91,6 +96,7 @@ BenchResult run_bench_study(const BenchSpec& o, const std::function<void(const s
     c.recording = &r.run.recording;
     c.board = o.board;
     c.board.bits = r.point.bits;
+    if (r.point.arith != "fixed") c.board.float_format = pipeline::parse_float_format(r.point.arith);
     cases.push_back(c);
   }
   progress("timing study of " + std::to_string(cases.size()) + " points");

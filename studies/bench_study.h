@@ -24,6 +24,8 @@ struct BenchPoint {
   // The disc form factor by default: the paper's point formula's near-field error (docs/radiosity.md)
   // would otherwise swamp every other effect; the sweep still shows the point formula as one point.
   FormFactorKind form_factor = FormFactorKind::Disc;
+  std::string arith = "fixed";  // "fixed" (at `bits`) or a float format "float:E,M" (bits unused)
+  std::string label() const;    // "15 bits", "float:5,10"
 };
 
 struct BenchSpec {
@@ -32,6 +34,8 @@ struct BenchSpec {
   std::vector<int> widths{7, 11, 15, 19, 23, 27, 31};
   std::vector<double> convergences{0.99, 0.995, 0.999, 0.9999};
   std::vector<int> patch_levels{1, 2, 3};
+  // Float pipelines beside the fixed widths (paper sec 6), each on the board's float lanes.
+  std::vector<std::string> formats{"float:5,10", "float:8,23"};
   std::string visibility = "fast";
   BoardRunOptions board;  // the hardware whose time is predicted
 };

@@ -10,7 +10,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-MARKERS = {"base": "*", "bits": "o", "convergence": "s", "patch_levels": "^", "form_factor": "D"}
+MARKERS = {"base": "*", "bits": "o", "arith": "P", "convergence": "s", "patch_levels": "^", "form_factor": "D"}
 
 
 def label(r):
@@ -23,6 +23,8 @@ def label(r):
         return f'{r["patches"]} patches'
     if v == "form_factor":
         return r["form_factor"]
+    if v == "arith":
+        return r["arith"]
     return "base"
 
 

@@ -1,0 +1,24 @@
+#include <gtest/gtest.h>
+
+#include "studies/bench_study.h"
+
+namespace rc {
+namespace {
+
+TEST(BenchStudy, EachDimensionVariesAloneAndFloatFormatsStandBesideTheWidths) {
+  BenchSpec spec;
+  spec.widths = {11, 15};  // 15 is the base's: left out
+  spec.convergences = {0.995, 0.999};
+  spec.patch_levels = {2};
+  spec.formats = {"float:5,10", "float:8,23"};
+  const std::vector<BenchPoint> points = sweep_points(spec);
+  std::vector<std::string> labels;
+  for (const BenchPoint& p : points) labels.push_back(p.varied + " " + p.label());
+  EXPECT_EQ(labels, (std::vector<std::string>{"base 15 bits", "bits 11 bits", "arith float:5,10", "arith float:8,23",
+                                              "convergence 15 bits", "form_factor 15 bits"}));
+  EXPECT_EQ(points[2].bits, spec.base.bits);  // a float point keeps the base's other settings
+  EXPECT_EQ(points[4].convergence, 0.999);
+}
+
+}  // namespace
+}  // namespace rc

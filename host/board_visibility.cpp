@@ -274,10 +274,7 @@ void BoardVisibility::plan_passes() {
 
 void BoardVisibility::submit(const SegmentBatch& batch) {
   timing_only_ = false;
-  if (batch.end_faces.size() != batch.size()) {
-    throw std::invalid_argument("segment batch has " + std::to_string(batch.size()) + " end points but " +
-                                std::to_string(batch.end_faces.size()) + " end faces");
-  }
+  batch.check();
   if (batch.size() > rays_per_batch_ && !options_.allow_batching) {
     throw std::invalid_argument("a step has " + std::to_string(batch.size()) + " segments but one batch holds " +
                                 std::to_string(rays_per_batch_) + " (ray and result banks of " +

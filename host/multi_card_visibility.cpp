@@ -255,10 +255,7 @@ void MultiCardVisibility::load_faces(const std::vector<Triangle>& faces) {
 }
 
 void MultiCardVisibility::submit(const SegmentBatch& batch) {
-  if (batch.end_faces.size() != batch.size()) {
-    throw std::invalid_argument("segment batch has " + std::to_string(batch.size()) + " end points but " +
-                                std::to_string(batch.end_faces.size()) + " end faces");
-  }
+  batch.check();
   rays_ = batch.size();
   if (options_.oracle != nullptr) {
     options_.oracle->submit(batch);

@@ -21,12 +21,32 @@ class EndFaceGroups {
   std::size_t end(std::size_t f) const { return first_[f + 1]; }
   std::size_t segment(std::size_t k) const { return segments_[k]; }
 
+  // Groups the batch, then calls occlude(f, skip) for every face f < face_count but the batch's source
+  // face (every segment's own face), `skip` marking the segments that end on f (nullptr when none do):
+  // the own-face rule of visibility.h. Returns the segment-face pairs tested.
+  template <class Occlude>
+  std::uint64_t occlude_each_face(const SegmentBatch& batch, std::size_t face_count, std::vector<std::uint8_t>& skip,
+                                  Occlude&& occlude) {
+    group(batch, face_count);
+    skip.assign(batch.size(), 0);
+    std::uint64_t tests = 0;
+    for (std::size_t f = 0; f < face_count; ++f) {
+      if (static_cast<int>(f) == batch.source_face) continue;
+      // Mask the segments that end on this face, run the face, clear the mask again.
+      mark(f, skip, 1);
+      occlude(f, begin(f) != end(f) ? skip.data() : nullptr);
+      mark(f, skip, 0);
+      tests += batch.size() - (end(f) - begin(f));
+    }
+    return tests;
+  }
+
+ private:
   // Sets skip[s] to `value` for the segments ending on face f.
   void mark(std::size_t f, std::vector<std::uint8_t>& skip, std::uint8_t value) const {
     for (std::size_t k = begin(f); k < end(f); ++k) skip[segments_[k]] = value;
   }
 
- private:
   std::vector<std::size_t> first_, segments_;
 };
 

@@ -59,10 +59,7 @@ std::uint64_t FastFixedVisibility::count_brute_force_tests(const SegmentBatch& b
 void FastFixedVisibility::submit(const SegmentBatch& batch) {
   finish_batch();
   const std::size_t n = batch.size();
-  if (batch.end_faces.size() != n) {
-    throw std::invalid_argument("segment batch has " + std::to_string(n) + " end points but " +
-                                std::to_string(batch.end_faces.size()) + " end faces");
-  }
+  batch.check();
   start_ = pipeline::quantize_point(batch.start, bits_);
   if (points_.assign(batch, bits_)) tree_.build(points_);
   tree_.mark_batch(points_, batch.end_faces.data());

@@ -15,10 +15,7 @@ void FixedPointVisibility::load_faces(const std::vector<Triangle>& faces) {
 
 void FixedPointVisibility::submit(const SegmentBatch& batch) {
   const std::size_t n = batch.size();
-  if (batch.end_faces.size() != n) {
-    throw std::invalid_argument("segment batch has " + std::to_string(n) + " end points but " +
-                                std::to_string(batch.end_faces.size()) + " end faces");
-  }
+  batch.check();
   const pipeline::FixedVec3 start = pipeline::quantize_point(batch.start, bits_);
   end_x_.resize(n);
   end_y_.resize(n);
@@ -30,20 +27,10 @@ void FixedPointVisibility::submit(const SegmentBatch& batch) {
     end_z_[s] = e.z;
   }
   blocked_.assign(n, 0);
-  skip_.assign(n, 0);
-  end_faces_.group(batch, faces_.size());
-
-  for (std::size_t f = 0; f < faces_.size(); ++f) {
-    if (static_cast<int>(f) == batch.source_face) continue;  // every segment's own face
-    // Mask the segments that end on this face, run the face, clear the mask again.
-    const bool own = end_faces_.begin(f) != end_faces_.end(f);
-    end_faces_.mark(f, skip_, 1);
-    const std::uint8_t* skip = own ? skip_.data() : nullptr;
-    pipeline::occlude_face(faces_[f], start, end_x_.data(), end_y_.data(), end_z_.data(), n, bits_,
-                           blocked_.data(), skip);
-    end_faces_.mark(f, skip_, 0);
-    tests_ += n - (end_faces_.end(f) - end_faces_.begin(f));
-  }
+  tests_ += end_faces_.occlude_each_face(batch, faces_.size(), skip_, [&](std::size_t f, const std::uint8_t* skip) {
+    pipeline::occlude_face(faces_[f], start, end_x_.data(), end_y_.data(), end_z_.data(), n, bits_, blocked_.data(),
+                           skip);
+  });
 }
 
 void FixedPointVisibility::collect(std::vector<std::uint8_t>& blocked) { blocked = blocked_; }

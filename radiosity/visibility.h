@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,13 @@ struct SegmentBatch {
   int shooter = -1;
 
   std::size_t size() const { return ends.size(); }
+  // Throws std::invalid_argument unless there is one end face per end point (every backend's submit).
+  void check() const {
+    if (end_faces.size() != ends.size()) {
+      throw std::invalid_argument("segment batch has " + std::to_string(ends.size()) + " end points but " +
+                                  std::to_string(end_faces.size()) + " end faces");
+    }
+  }
   bool is_needed(std::size_t segment) const { return needed.empty() || needed[segment] != 0; }
 };
 

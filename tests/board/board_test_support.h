@@ -113,6 +113,25 @@ class ScriptedHost : public sc_core::sc_module {
   Rc2000& m_board;
 };
 
+// Runs the simulation until every host's script has finished, then stops it.
+inline void run_until_finished(const std::vector<const ScriptedHost*>& hosts) {
+  auto all = [&] {
+    for (const ScriptedHost* h : hosts)
+      if (!h->finished) return false;
+    return true;
+  };
+  while (!all()) sc_core::sc_start(sc_core::sc_time(10, sc_core::SC_US));
+  sc_core::sc_stop();
+}
+
+// The hosts of test benches that hold one (`bench->host`), for run_until_finished.
+template <class Bench>
+std::vector<const ScriptedHost*> hosts_of(const std::vector<Bench*>& benches) {
+  std::vector<const ScriptedHost*> hosts;
+  for (const Bench* b : benches) hosts.push_back(b->host.get());
+  return hosts;
+}
+
 // One pass's data: faces, a start point, end points grouped by end face.
 struct PassData {
   std::vector<pipeline::FaceRecord> faces;

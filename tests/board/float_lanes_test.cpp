@@ -197,13 +197,9 @@ TEST(FloatLanes, FormulaCycleModelAndFastModelAgree) {
     cycle.push_back(std::make_unique<Bench>(std::string("cycle_") + c.name,
                                             float_params(c.lanes, c.format, WrapperModel::cycle), steps.back()));
   }
-  auto all_finished = [&] {
-    for (std::size_t i = 0; i < configs.size(); ++i)
-      if (!fast[i]->host->finished || !cycle[i]->host->finished) return false;
-    return true;
-  };
-  while (!all_finished()) sc_core::sc_start(sc_time(10, SC_US));
-  sc_core::sc_stop();
+  std::vector<const ScriptedHost*> hosts;
+  for (std::size_t i = 0; i < configs.size(); ++i) hosts.insert(hosts.end(), {fast[i]->host.get(), cycle[i]->host.get()});
+  run_until_finished(hosts);
 
   for (std::size_t i = 0; i < configs.size(); ++i) {
     const Bench& f = *fast[i];

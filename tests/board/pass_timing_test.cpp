@@ -37,15 +37,7 @@ struct Bench {
   }
 };
 
-void run_until_finished(const std::vector<Bench*>& benches) {
-  auto all = [&] {
-    for (Bench* b : benches)
-      if (!b->host->finished) return false;
-    return true;
-  };
-  while (!all()) sc_core::sc_start(sc_time(10, SC_US));
-  sc_core::sc_stop();
-}
+void run_until_finished(const std::vector<Bench*>& benches) { test::run_until_finished(hosts_of(benches)); }
 
 // Both models, same passes: same cycles, same completion offsets, same bits.
 void expect_models_agree(const Bench& fast, const Bench& cycle) {

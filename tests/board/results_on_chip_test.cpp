@@ -60,15 +60,7 @@ struct Bench {
   }
 };
 
-void run_until_finished(const std::vector<Bench*>& benches) {
-  auto all = [&] {
-    for (Bench* b : benches)
-      if (!b->host->finished) return false;
-    return true;
-  };
-  while (!all()) sc_core::sc_start(sc_time(10, SC_US));
-  sc_core::sc_stop();
-}
+void run_until_finished(const std::vector<Bench*>& benches) { test::run_until_finished(hosts_of(benches)); }
 
 // The CPU's answer for each step: a pass that does not clear ORs onto the previous step's words
 // (the steps that do so reuse the previous step's rays).

@@ -7,40 +7,15 @@
 
 #include "radiosity/fixed_visibility.h"
 #include "pipeline/fixed_mt.h"
+#include "tests/radiosity/random_batch.h"
 
 namespace rc {
 namespace {
 
-double uniform(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1p-53; }
+using test::RandomBatch;
+using test::random_batch;
 
-// Small random triangles scattered through the unit cube, and a batch from a point on face 0
-// to points on the other faces (centroids, as the solver sends patch centres).
-struct Scene {
-  std::vector<Triangle> faces;
-  SegmentBatch batch;
-};
-
-Scene random_scene(std::size_t faces, std::size_t segments, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  Scene s;
-  while (s.faces.size() < faces) {
-    const Vec3 c{0.1 + 0.8 * uniform(rng), 0.1 + 0.8 * uniform(rng), 0.1 + 0.8 * uniform(rng)};
-    const auto corner = [&] {
-      return c + 0.2 * Vec3{uniform(rng) - 0.5, uniform(rng) - 0.5, uniform(rng) - 0.5};
-    };
-    s.faces.push_back({corner(), corner(), corner()});
-  }
-  s.batch.source_face = 0;
-  s.batch.start = s.faces[0].centroid();
-  for (std::size_t i = 0; i < segments; ++i) {
-    const int face = 1 + static_cast<int>(rng() % (faces - 1));
-    s.batch.ends.push_back(s.faces[static_cast<std::size_t>(face)].centroid());
-    s.batch.end_faces.push_back(face);
-  }
-  return s;
-}
-
-std::vector<std::uint8_t> brute_force(const Scene& s, int bits) {
+std::vector<std::uint8_t> brute_force(const RandomBatch& s, int bits) {
   const pipeline::FixedVec3 start = pipeline::quantize_point(s.batch.start, bits);
   std::vector<std::uint8_t> blocked(s.batch.size(), 0);
   for (std::size_t i = 0; i < s.batch.size(); ++i) {
@@ -54,7 +29,7 @@ std::vector<std::uint8_t> brute_force(const Scene& s, int bits) {
 }
 
 TEST(PipelineFixedVisibility, MatchesBruteForceSegmentHitsAtEveryPathWidth) {
-  const Scene s = random_scene(40, 300, 1);
+  const RandomBatch s = random_batch(40, 300, 1);
   for (int bits : {7, 15, 16, 31}) {
     FixedPointVisibility v(bits);
     v.load_faces(s.faces);
@@ -96,7 +71,7 @@ TEST(PipelineFixedVisibility, OwnFacesNeverBlock) {
 }
 
 TEST(PipelineFixedVisibility, CountsEveryTestedPairExceptOwnFaces) {
-  const Scene s = random_scene(25, 120, 2);
+  const RandomBatch s = random_batch(25, 120, 2);
   FixedPointVisibility v(23);
   v.load_faces(s.faces);
   v.submit(s.batch);

@@ -14,40 +14,15 @@
 #include "radiosity/radiosity.h"
 #include "radiosity/visibility_factory.h"
 #include "tests/common/simple_scenes.h"
+#include "tests/radiosity/random_batch.h"
 
 namespace rc {
 namespace {
 
-double uniform(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1p-53; }
+using test::RandomBatch;
+using test::random_batch;
 
-struct RandomScene {
-  std::vector<Triangle> faces;
-  SegmentBatch batch;
-};
-
-// Small random triangles in a box of side `scale` (world coordinates: no [0, 1) requirement),
-// and a batch from face 0's centroid to the centroids of the others.
-RandomScene random_scene(std::size_t faces, std::size_t segments, double scale, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  RandomScene s;
-  while (s.faces.size() < faces) {
-    const Vec3 c = scale * Vec3{0.1 + 0.8 * uniform(rng), 0.1 + 0.8 * uniform(rng), 0.1 + 0.8 * uniform(rng)};
-    const auto corner = [&] {
-      return c + 0.2 * scale * Vec3{uniform(rng) - 0.5, uniform(rng) - 0.5, uniform(rng) - 0.5};
-    };
-    s.faces.push_back({corner(), corner(), corner()});
-  }
-  s.batch.source_face = 0;
-  s.batch.start = s.faces[0].centroid();
-  for (std::size_t i = 0; i < segments; ++i) {
-    const int face = 1 + static_cast<int>(rng() % (faces - 1));
-    s.batch.ends.push_back(s.faces[static_cast<std::size_t>(face)].centroid());
-    s.batch.end_faces.push_back(face);
-  }
-  return s;
-}
-
-std::vector<std::uint8_t> brute_force(const RandomScene& s, pipeline::FloatFormat format) {
+std::vector<std::uint8_t> brute_force(const RandomBatch& s, pipeline::FloatFormat format) {
   const pipeline::FloatVec3 start = pipeline::round_point(s.batch.start, format);
   std::vector<std::uint8_t> blocked(s.batch.size(), 0);
   for (std::size_t i = 0; i < s.batch.size(); ++i) {
@@ -72,7 +47,7 @@ std::vector<std::uint8_t> answer(VisibilityBackend& v, const std::vector<Triangl
 
 TEST(FloatPipelineVisibility, MatchesBruteForceFloatPipelineInEveryFormat) {
   for (double scale : {1.0, 500.0}) {
-    const RandomScene s = random_scene(40, 300, scale, 1);
+    const RandomBatch s = random_batch(40, 300, 1, scale);  // world coordinates: no [0, 1) requirement
     for (const char* name : {"float:8,23", "float:5,10", "float:6,9", "float:4,5"}) {
       const pipeline::FloatFormat format = pipeline::parse_float_format(name);
       FloatPipelineVisibility v(format);

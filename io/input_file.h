@@ -1,0 +1,34 @@
+// Reading a user's file with a bound on its size. Every text input of the model (scene files,
+// compositions, device and host profiles, study files, resource tables) is read through here, so a
+// wrong path (a directory, /dev/zero, a multi-gigabyte log) ends in an error that names the file and
+// the limit instead of an endless read or an out-of-memory kill.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace rc::io {
+
+// The size limits, one per kind of input, in bytes. Generous for real data: the largest scene
+// file shipped is under 1 MiB, profiles and study files a few KiB.
+inline constexpr std::uint64_t kProfileLimitBytes = 1ull << 20;   // device/host profiles, study files, tables
+inline constexpr std::uint64_t kSceneLimitBytes = 256ull << 20;   // scene files and meshes
+
+// What went wrong with an input file; what() starts with the path.
+class InputFileError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The whole file as bytes. Throws InputFileError naming `path` when it cannot be opened, is a
+// directory, or holds more than `limit_bytes` (`what` names the kind of input in that message, e.g.
+// "a scene file"). Reads at most limit_bytes + 1 bytes, so an endless stream (/dev/zero, a pipe)
+// stops at the limit.
+std::string read_file(const std::string& path, std::uint64_t limit_bytes, const std::string& what);
+
+// Throws InputFileError unless `path` names a regular file of at most `limit_bytes` (for readers
+// that open the file themselves, such as Assimp's importer).
+void check_regular_file(const std::string& path, std::uint64_t limit_bytes, const std::string& what);
+
+}  // namespace rc::io

@@ -1,0 +1,117 @@
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <functional>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "io/input_file.h"
+#include "io/output_file.h"
+#include "io/parse_number.h"
+
+namespace rc::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string temporary_folder() {
+  const fs::path dir = fs::temp_directory_path() / ("rc_io_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+                                                    ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir.string();
+}
+
+std::string message_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(InputFile, ReadsAWholeFileWithinTheLimit) {
+  const std::string dir = temporary_folder();
+  std::ofstream(dir + "/a.txt") << "hello";
+  EXPECT_EQ(read_file(dir + "/a.txt", 5, "a test file"), "hello");
+}
+
+TEST(InputFile, RefusesAFileOverTheLimitNamingPathAndLimit) {
+  const std::string dir = temporary_folder();
+  std::ofstream(dir + "/a.txt") << "hello!";
+  EXPECT_EQ(message_of([&] { read_file(dir + "/a.txt", 5, "a test file"); }),
+            dir + "/a.txt: larger than the 5-byte limit for a test file");
+}
+
+TEST(InputFile, StopsAnEndlessStreamAtTheLimit) {
+  EXPECT_EQ(message_of([] { read_file("/dev/zero", 1000, "a scene file"); }),
+            "/dev/zero: larger than the 1000-byte limit for a scene file");
+}
+
+TEST(InputFile, NamesADirectoryAndAMissingFile) {
+  const std::string dir = temporary_folder();
+  EXPECT_EQ(message_of([&] { read_file(dir, 10, "x"); }), dir + ": is a directory, not a file");
+  EXPECT_EQ(message_of([&] { read_file(dir + "/none", 10, "x"); }), dir + "/none: cannot open (No such file or directory)");
+}
+
+TEST(InputFile, CheckRegularFileRefusesDevicesAndLargeFiles) {
+  const std::string dir = temporary_folder();
+  std::ofstream(dir + "/m.obj") << "v 0 0 0\n";
+  EXPECT_NO_THROW(check_regular_file(dir + "/m.obj", 100, "a mesh"));
+  EXPECT_EQ(message_of([] { check_regular_file("/dev/zero", 100, "a mesh"); }),
+            "/dev/zero: not a regular file (a mesh must be one)");
+  EXPECT_EQ(message_of([&] { check_regular_file(dir + "/m.obj", 3, "a mesh"); }),
+            dir + "/m.obj: larger than the 3-byte limit for a mesh");
+}
+
+TEST(OutputFile, WritesAtomicallyAndLeavesNoTemporary) {
+  const std::string dir = temporary_folder();
+  write_file_atomically(dir + "/out.txt", "first");
+  write_file_atomically(dir + "/out.txt", "second");
+  std::ifstream in(dir + "/out.txt");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(text, "second");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+}
+
+TEST(OutputFile, AnUnwritableFolderIsAnErrorNamingThePathAndLeavesNothing) {
+  const std::string dir = temporary_folder();
+  const std::string path = dir + "/missing/out.txt";
+  EXPECT_EQ(message_of([&] { write_file_atomically(path, "x"); }),
+            path + ": cannot open for writing (No such file or directory)");
+  EXPECT_FALSE(fs::exists(path));
+}
+
+TEST(OutputFile, NeverReplacesSomethingThatIsNotARegularFile) {
+  // Renaming over a device or a folder would destroy it; an output path must be a file or nothing.
+  const std::string dir = temporary_folder();
+  fs::create_directories(dir + "/sub");
+  EXPECT_EQ(message_of([&] { write_file_atomically(dir + "/sub", "x"); }),
+            dir + "/sub: exists and is not a regular file; not replaced");
+  EXPECT_TRUE(fs::is_directory(dir + "/sub"));
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+}
+
+TEST(ParseNumber, UnsignedIsTheWholeTextOrNothing) {
+  EXPECT_EQ(parse_unsigned("2"), 2u);
+  EXPECT_EQ(parse_unsigned("18446744073709551615"), 18446744073709551615ull);
+  for (const char* bad : {"", "2abc", " 2", "2 ", "-1", "+1", "2.0", "18446744073709551616", "0x10"})
+    EXPECT_FALSE(parse_unsigned(bad)) << bad;
+}
+
+TEST(ParseNumber, IntegerTakesASign) {
+  EXPECT_EQ(parse_integer("-12"), -12);
+  EXPECT_FALSE(parse_integer("-"));
+  EXPECT_FALSE(parse_integer("9223372036854775808"));
+}
+
+TEST(ParseNumber, FiniteRefusesPrefixesInfinitiesAndNan) {
+  EXPECT_EQ(parse_finite("1.5e3"), 1500.0);
+  EXPECT_EQ(parse_finite("-0.25"), -0.25);
+  for (const char* bad : {"", " 1", "1 ", "1.5x", "nan", "inf", "-inf", "1e999"}) EXPECT_FALSE(parse_finite(bad)) << bad;
+}
+
+}  // namespace
+}  // namespace rc::io

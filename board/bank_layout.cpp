@@ -41,16 +41,34 @@ const std::vector<std::string>& result_store_names() {
   return names;
 }
 
+std::string bank_capacity_problem(std::uint64_t capacity_bytes, unsigned word_bits) {
+  const std::uint64_t word_bytes = word_bits / 8;
+  const std::string words = " words of " + std::to_string(word_bytes) + " bytes";
+  if (capacity_bytes % word_bytes != 0) return "is not a whole number of " + std::to_string(word_bytes) + "-byte words";
+  if (capacity_bytes < kMinBankWords * word_bytes) {
+    return "is smaller than one face record and its own-face table entry (" + std::to_string(kMinBankWords * word_bytes) +
+           " bytes: " + std::to_string(kMinBankWords) + words + "; a pass needs both in the face bank when no spare bank "
+           "holds the table)";
+  }
+  if (capacity_bytes / word_bytes > kMaxBankWords) {
+    return "is larger than the wrapper can address (" + std::to_string(kMaxBankWords * word_bytes) + " bytes: " +
+           std::to_string(kMaxBankWords) + words + ", 2^32 - 1 face records and their own-face table entries, the "
+           "most the 32-bit FACE_COUNT register reaches)";
+  }
+  return "";
+}
+
 const char* to_string(ResultStore store) { return result_store_names()[static_cast<std::size_t>(store)].c_str(); }
 
 namespace {
 
 std::string lanes_text(unsigned lanes) { return std::to_string(lanes) + (lanes == 1 ? " lane" : " lanes"); }
 
-// Largest ray count the layout accepts in one pass (monotone search on split_rays().fits).
+// Largest ray count the layout accepts in one pass (monotone search on split_rays().fits), at most
+// what RAY_COUNT holds.
 std::uint64_t max_rays(const BankLayout& layout) {
   std::uint64_t lo = 0, hi = 1;
-  while (split_rays(layout, hi).fits) {
+  while (lo < kMaxRegisterCount && split_rays(layout, hi).fits) {
     lo = hi;
     hi *= 2;
   }
@@ -58,7 +76,7 @@ std::uint64_t max_rays(const BankLayout& layout) {
     const std::uint64_t mid = lo + (hi - lo) / 2;
     (split_rays(layout, mid).fits ? lo : hi) = mid;
   }
-  return lo;
+  return std::min(lo, kMaxRegisterCount);
 }
 
 // Largest R such that every batch of at most R rays fits the block RAM. A split gives every group but
@@ -80,11 +98,16 @@ std::uint64_t max_rays_on_chip(const BankLayout& layout) {
 BankLayout make_layout(LaneCount lanes, unsigned banks, unsigned value_bits, const std::string& what,
                        unsigned word_bits, std::uint64_t bank_capacity_bytes) {
   if (word_bits != 32 && word_bits != 64) throw std::invalid_argument("bank words must be 32 or 64 bits wide");
-  if (bank_capacity_bytes < word_bits / 8)
-    throw std::invalid_argument("bank capacity must hold at least one word");
-  if (banks < 5) {
+  const std::string capacity_problem = bank_capacity_problem(bank_capacity_bytes, word_bits);
+  if (!capacity_problem.empty())
+    throw std::invalid_argument("a bank capacity of " + std::to_string(bank_capacity_bytes) + " bytes " + capacity_problem);
+  if (banks < kMinBanks) {
     throw std::invalid_argument("the wrapper needs at least 5 banks (faces, X, Y, Z, results; paper sec 4.1); the board has " +
                                 std::to_string(banks));
+  }
+  if (banks > kMaxBanks) {
+    throw std::invalid_argument(std::to_string(banks) + " banks: the wrapper's CONFIG register counts banks in 8 bits (at most " +
+                                std::to_string(kMaxBanks) + ")");
   }
   BankLayout L;
   L.lanes = lanes;
@@ -122,7 +145,7 @@ BankLayout make_layout(LaneCount lanes, unsigned banks, unsigned value_bits, con
   L.result_bank = next_bank++;
   if (next_bank < banks) L.mask_bank = next_bank++;
   for (; next_bank < banks; ++next_bank) L.spare_banks.push_back(next_bank);
-  L.max_faces_per_set = L.bank_words / (L.face_words() + (L.mask_in_face_bank() ? 1 : 0));
+  L.max_faces_per_set = std::min(L.bank_words / (L.face_words() + (L.mask_in_face_bank() ? 1 : 0)), kMaxRegisterCount);
   L.max_rays_per_batch = max_rays(L);
   return L;
 }

@@ -82,8 +82,33 @@ struct BankLayout {
   double nominal_rays_per_cycle() const;
 };
 
+// ---- the limits a bank's capacity must respect (docs/board.md, "Profiles") --------------------------
+// Every layout's banks share one capacity, so the bound is the most any bank of any layout needs.
+
+// The fewest words a bank must hold for one pass of one ray against one face, in any layout: the
+// face bank's face record (9 words) and, when no spare bank is left for it, that face's own-face
+// table entry (1 word). A one-bank ray group's packet (3 words) and the pass's result word are fewer.
+inline constexpr std::uint64_t kMinBankWords = 10;
+// The wrapper finds every word it reads from counts in its 32-bit registers (RAY_COUNT, FACE_COUNT,
+// MASK_START; register_map.h). The bank those counts reach furthest into is the face bank: FACE_COUNT
+// face records of 9 words and their own-face table entries, 10 x (2^32 - 1) words. A larger bank
+// could never be used, so a capacity beyond it is an error rather than memory spent for nothing.
+inline constexpr std::uint64_t kMaxRegisterCount = 0xFFFFFFFFu;
+inline constexpr std::uint64_t kMaxBankWords = kMinBankWords * kMaxRegisterCount;
+// The banks' count is the CONFIG register's field [31:24]: at most 255.
+inline constexpr unsigned kMaxBanks = 255;
+// The wrapper needs faces, X, Y, Z and results (paper sec 4.1).
+inline constexpr unsigned kMinBanks = 5;
+
+// What is wrong with a bank of `capacity_bytes` made of `word_bits`-bit words, as the rest of a
+// sentence that starts with the capacity ("is smaller than one face record ..."), or "" when it is
+// a valid bank: a whole number of words, at least kMinBankWords and at most kMaxBankWords.
+std::string bank_capacity_problem(std::uint64_t capacity_bytes, unsigned word_bits);
+
 // Throws std::invalid_argument for zero lanes, a width outside 7..31, a word narrower than a
-// coordinate, or more banks needed than available (naming lanes, banks needed and available).
+// coordinate, a bank capacity bank_capacity_problem() refuses, more than kMaxBanks banks, or more
+// banks needed than available (naming lanes, banks needed and available). The batch and set limits
+// never exceed kMaxRegisterCount (RAY_COUNT and FACE_COUNT are 32-bit registers).
 // Results in the bank unless placed on chip (below, or board_params.h's make_bank_layout(BoardParams)).
 BankLayout make_bank_layout(LaneCount lanes, unsigned banks, pipeline::FracBits bits, unsigned word_bits,
                             std::uint64_t bank_capacity_bytes);

@@ -3,6 +3,8 @@
 #include <stdexcept>
 
 #include "board/profile_reader.h"
+#include "io/parse_number.h"
+#include "pipeline/fixed_format.h"
 
 namespace rc::board {
 
@@ -20,20 +22,48 @@ void read_clock(const ProfileReader& r, DeviceProfile& p) {
   if (const auto* by_lanes = r.find("clock.mhz_by_lanes")) {
     if (!by_lanes->is_object()) r.fail("clock.mhz_by_lanes", "must be an object keyed by lane count");
     for (const auto& item : by_lanes->items()) {
-      int lanes = 0;
-      try {
-        lanes = std::stoi(item.key());
-      } catch (const std::exception&) {
-        r.fail("clock.mhz_by_lanes." + item.key(), "key must be a lane count");
+      const std::string path = "clock.mhz_by_lanes." + item.key();
+      // The whole key must be the count: "2abc" or " 2" is no lane count (std::stoi read them as 2).
+      const std::optional<std::uint64_t> lanes = io::parse_unsigned(item.key());
+      if (!lanes || *lanes < 1 || *lanes > LaneCount::kMax) {
+        r.fail(path, "key must be a lane count, a whole number 1.." + std::to_string(LaneCount::kMax) +
+                         " (a design has at most " + std::to_string(LaneCount::kMax) + " lanes: the CONFIG register holds 8 bits)");
       }
-      if (lanes < 1) r.fail("clock.mhz_by_lanes." + item.key(), "lane count must be at least 1");
-      p.clock_mhz_by_lanes[lanes] = r.number("clock.mhz_by_lanes." + item.key(), 1e-3, 1e4);
+      p.clock_mhz_by_lanes[static_cast<int>(*lanes)] = r.number(path, 1e-3, 1e4);
     }
   }
   p.clock_mhz_default = r.optional_number("clock.mhz_default", 1e-3, 1e4);
   if (p.clock_mhz_by_lanes.empty() && !p.clock_mhz_default)
     r.fail("clock", "needs mhz_by_lanes or mhz_default");
-  p.clock_bits = static_cast<int>(r.integer("clock.design_bits", 1, 64));
+  const std::uint64_t bits = r.integer("clock.design_bits", 0, 1024);
+  if (!pipeline::is_valid_frac_bits(static_cast<int>(bits))) {
+    r.refuse("clock.design_bits", std::to_string(bits),
+             "is not a fractional width the pipeline has (" + std::to_string(pipeline::kMinFracBits) + ".." +
+                 std::to_string(pipeline::kMaxFracBits) + ")");
+  }
+  p.clock_bits = static_cast<int>(bits);
+}
+
+// The banks, each value checked against what the wrapper and its registers can use (bank_layout.h).
+void read_banks(const ProfileReader& r, DeviceProfile& p) {
+  const std::uint64_t count = r.integer("banks.count", 0, 1u << 20);
+  if (count < kMinBanks) {
+    r.refuse("banks.count", std::to_string(count),
+             "is fewer than the " + std::to_string(kMinBanks) + " banks the wrapper needs (faces, X, Y, Z, results; paper sec 4.1)");
+  }
+  if (count > kMaxBanks) {
+    r.refuse("banks.count", std::to_string(count),
+             "is more than the wrapper's CONFIG register can count (8 bits: at most " + std::to_string(kMaxBanks) + ")");
+  }
+  p.bank_count = static_cast<unsigned>(count);
+  p.bank_word_bits = static_cast<unsigned>(r.integer("banks.word_bits", 32, 64));
+  if (p.bank_word_bits != 32 && p.bank_word_bits != 64) r.fail("banks.word_bits", "must be 32 or 64");
+  p.bank_capacity_bytes = r.integer("banks.capacity_bytes", 1, std::uint64_t(1) << 53);
+  const std::string problem = bank_capacity_problem(p.bank_capacity_bytes, p.bank_word_bits);
+  if (!problem.empty()) r.refuse("banks.capacity_bytes", std::to_string(p.bank_capacity_bytes), problem);
+  p.bank_clock_mhz = r.number("banks.clock_mhz", 1e-3, 1e4);
+  p.bank_read_latency_cycles = static_cast<unsigned>(r.integer("banks.read_latency_cycles", 0, 100));
+  p.bank_write_latency_cycles = static_cast<unsigned>(r.integer("banks.write_latency_cycles", 0, 100));
 }
 
 }  // namespace
@@ -45,7 +75,9 @@ DeviceProfile device_profile_from_json(const nlohmann::ordered_json& json, const
   p.json = json;
   p.file = origin;
   const ProfileReader r(p.json, origin);
+  r.schema("rc2000sim.device/1");
   p.name = r.text("name");
+  if (p.name.empty()) r.fail("name", "must not be empty");
   p.part = r.text("fpga.part");
   p.slices = static_cast<int>(r.integer("fpga.slices", 1, 1u << 24));
   p.block_multipliers = static_cast<int>(r.integer("fpga.block_multipliers", 0, 1u << 20));
@@ -53,13 +85,7 @@ DeviceProfile device_profile_from_json(const nlohmann::ordered_json& json, const
   read_clock(r, p);
   p.pipeline_latency_cycles = static_cast<unsigned>(r.integer("pipeline.latency_cycles", 1, 1000));
 
-  p.bank_count = static_cast<unsigned>(r.integer("banks.count", 0, 1024));
-  p.bank_capacity_bytes = r.integer("banks.capacity_bytes", 1, std::uint64_t(1) << 40);
-  p.bank_word_bits = static_cast<unsigned>(r.integer("banks.word_bits", 32, 64));
-  if (p.bank_word_bits != 32 && p.bank_word_bits != 64) r.fail("banks.word_bits", "must be 32 or 64");
-  p.bank_clock_mhz = r.number("banks.clock_mhz", 1e-3, 1e4);
-  p.bank_read_latency_cycles = static_cast<unsigned>(r.integer("banks.read_latency_cycles", 0, 100));
-  p.bank_write_latency_cycles = static_cast<unsigned>(r.integer("banks.write_latency_cycles", 0, 100));
+  read_banks(r, p);
 
   p.pci_width_bits = static_cast<unsigned>(r.integer("pci.width_bits", 32, 64));
   if (p.pci_width_bits != 32 && p.pci_width_bits != 64) r.fail("pci.width_bits", "must be 32 or 64");
@@ -75,6 +101,7 @@ DeviceProfile device_profile_from_json(const nlohmann::ordered_json& json, const
   p.pass_finish_cycles = static_cast<unsigned>(r.integer("wrapper.pass_finish_cycles", 0, 1u << 20));
   p.register_access_cycles = static_cast<unsigned>(r.integer("wrapper.register_access_cycles", 1, 1u << 20));
   p.results = static_cast<ResultStore>(r.choice("wrapper.results", result_store_names()));
+  r.refuse_unknown_keys({"description"});
   return p;
 }
 

@@ -1,8 +1,8 @@
 #include "board/profile_reader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -20,18 +20,24 @@ std::string resolve_profile_path(const std::string& name_or_path, const std::str
   return path;
 }
 
-nlohmann::ordered_json read_json_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument("cannot open " + path);
+nlohmann::ordered_json read_json_file(const std::string& path, std::uint64_t limit_bytes, const std::string& what) {
+  std::string text;
   try {
-    return nlohmann::ordered_json::parse(in);
+    text = io::read_file(path, limit_bytes, what);
+  } catch (const io::InputFileError& e) {
+    throw std::invalid_argument(e.what());
+  }
+  try {
+    return nlohmann::ordered_json::parse(text);
   } catch (const nlohmann::json::exception& e) {
     throw std::invalid_argument(path + ": not valid JSON: " + e.what());
   }
 }
 
-const nlohmann::ordered_json* ProfileReader::find(const std::string& path) const {
-  const nlohmann::ordered_json* node = &root_;
+namespace {
+
+const nlohmann::ordered_json* find_node(const nlohmann::ordered_json& root, const std::string& path) {
+  const nlohmann::ordered_json* node = &root;
   std::stringstream parts(path);
   std::string key;
   while (std::getline(parts, key, '.')) {
@@ -43,8 +49,76 @@ const nlohmann::ordered_json* ProfileReader::find(const std::string& path) const
   return node;
 }
 
+}  // namespace
+
+const nlohmann::ordered_json* ProfileReader::find(const std::string& path) const {
+  read_.insert(path);
+  return find_node(root_, path);
+}
+
 void ProfileReader::fail(const std::string& path, const std::string& problem) const {
   throw std::invalid_argument(file_ + ": " + path + ": " + problem);
+}
+
+void ProfileReader::refuse(const std::string& path, const std::string& value, const std::string& problem) const {
+  throw std::invalid_argument(file_ + ": " + path + " = " + value + " " + problem);
+}
+
+void ProfileReader::schema(const std::string& expected) const {
+  const nlohmann::ordered_json* node = find("schema");
+  if (node == nullptr) return;
+  if (!node->is_string() || node->get<std::string>() != expected)
+    fail("schema", "is " + node->dump() + "; this reader takes \"" + expected + "\"");
+}
+
+namespace {
+
+bool is_sourced(const nlohmann::ordered_json& node) { return node.is_object() && node.contains("value"); }
+
+std::string parent_of(const std::string& path) {
+  const std::size_t dot = path.rfind('.');
+  return dot == std::string::npos ? std::string() : path.substr(0, dot);
+}
+
+std::string child_of(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+
+}  // namespace
+
+void ProfileReader::refuse_unknown_keys(const std::vector<std::string>& free_form) const {
+  check_known(root_, "", free_form);
+}
+
+void ProfileReader::check_known(const nlohmann::ordered_json& node, const std::string& path,
+                                const std::vector<std::string>& free_form) const {
+  if (std::find(free_form.begin(), free_form.end(), path) != free_form.end()) return;
+  const bool read = !path.empty() && (was_read(path) || was_read(path + ".value"));
+  if (read && is_sourced(node)) {
+    for (auto it = node.begin(); it != node.end(); ++it) {
+      if (it.key() != "value" && it.key() != "source")
+        fail(child_of(path, it.key()), "unknown key (a sourced field has only \"value\" and \"source\")");
+    }
+    return;
+  }
+  if (node.is_object() && !is_sourced(node)) {
+    for (auto it = node.begin(); it != node.end(); ++it) check_known(it.value(), child_of(path, it.key()), free_form);
+    return;
+  }
+  if (read) return;
+  // The keys this loader reads beside the unknown one.
+  std::set<std::string> known;
+  const std::string parent = parent_of(path);
+  for (std::string r : read_) {
+    for (; !r.empty(); r = parent_of(r)) {
+      if (parent_of(r) == parent) known.insert(r.substr(parent.empty() ? 0 : parent.size() + 1));
+    }
+  }
+  for (const std::string& f : free_form)
+    if (parent_of(f) == parent) known.insert(f.substr(parent.empty() ? 0 : parent.size() + 1));
+  std::string list;
+  for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+  fail(path, "unknown key" + (list.empty() ? std::string() : " (known " + (parent.empty() ? std::string("at the top")
+                                                                                          : "in " + parent) +
+                                                                    ": " + list + ")"));
 }
 
 const nlohmann::ordered_json& ProfileReader::sourced(const std::string& path) const {

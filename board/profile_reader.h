@@ -6,10 +6,13 @@
 
 #include <cstdint>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "io/input_file.h"
 
 namespace rc::board {
 
@@ -21,9 +24,13 @@ std::string default_config_dir();
 // not exist, naming what was looked for.
 std::string resolve_profile_path(const std::string& name_or_path, const std::string& kind);
 
-// Parses a JSON file; throws std::invalid_argument with the file name on I/O or syntax errors.
-nlohmann::ordered_json read_json_file(const std::string& path);
+// Parses a JSON file of at most `limit_bytes` (io/input_file.h; `what` names the kind of file in the
+// error); throws std::invalid_argument with the file name on I/O or syntax errors.
+nlohmann::ordered_json read_json_file(const std::string& path, std::uint64_t limit_bytes = io::kProfileLimitBytes,
+                                      const std::string& what = "a profile");
 
+// Every path a loader reads is remembered, so that refuse_unknown_keys() can refuse the keys it never
+// read: a misspelt field ("banks.clock_mhzz") is an error, not a silent default.
 class ProfileReader {
  public:
   ProfileReader(const nlohmann::ordered_json& root, std::string file) : root_(root), file_(std::move(file)) {}
@@ -41,14 +48,28 @@ class ProfileReader {
   bool has(const std::string& path) const { return find(path) != nullptr; }
   const nlohmann::ordered_json* find(const std::string& path) const;
 
+  // The profile's "schema" string, when present, must be `expected` ("rc2000sim.device/1").
+  void schema(const std::string& expected) const;
+  // Throws (naming the file, the key and the keys read beside it) for any key the loader has not read:
+  // outside a sourced field, or inside one beyond "value" and "source". Subtrees under `free_form`
+  // paths (a description, a calibration record) are not checked. Call after reading everything.
+  void refuse_unknown_keys(const std::vector<std::string>& free_form) const;
+
   [[noreturn]] void fail(const std::string& path, const std::string& problem) const;
+  // "<file>: <path> = <value> <problem>", for a value outside a limit the model derives
+  // ("banks.capacity_bytes = 16 is smaller than one face record ...").
+  [[noreturn]] void refuse(const std::string& path, const std::string& value, const std::string& problem) const;
   const std::string& file() const { return file_; }
 
  private:
   const nlohmann::ordered_json& sourced(const std::string& path) const;
+  bool was_read(const std::string& path) const { return read_.count(path) > 0; }
+  void check_known(const nlohmann::ordered_json& node, const std::string& path,
+                   const std::vector<std::string>& free_form) const;
 
   const nlohmann::ordered_json& root_;
   std::string file_;
+  mutable std::set<std::string> read_;  // every path looked up
 };
 
 }  // namespace rc::board

@@ -23,6 +23,14 @@ BoardVisibility::BoardVisibility(BoardPorts ports, HostCpuModel& cpu, BoardVisib
       word_bytes_(ports_.board.layout.word_bits / 8),
       rays_per_batch_(ports_.board.layout.max_rays_per_batch),
       faces_per_set_(ports_.board.layout.max_faces_per_set) {
+  // Batches and sets divide the work below; make_bank_layout refuses banks too small for one of each
+  // (bank_capacity_problem), so an empty limit here is a bug, not a bad profile.
+  if (rays_per_batch_ == 0 || faces_per_set_ == 0) {
+    throw std::logic_error("BoardVisibility: the bank layout holds " + std::to_string(rays_per_batch_) +
+                           " rays per batch and " + std::to_string(faces_per_set_) +
+                           " faces per set; make_bank_layout should have refused banks of " +
+                           std::to_string(layout_.bank_words) + " words");
+  }
   if (options_.oracle != nullptr && ports_.board.model != board::WrapperModel::fast) {
     throw std::invalid_argument("a visibility oracle needs the fast wrapper model (the cycle-level one always computes)");
   }

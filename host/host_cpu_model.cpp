@@ -99,13 +99,17 @@ HostProfile host_profile_from_json(const nlohmann::ordered_json& json, const std
   p.json = json;
   p.file = origin;
   const board::ProfileReader r(p.json, origin);
+  r.schema("rc2000sim.host/1");
   p.name = r.text("name");
+  if (p.name.empty()) r.fail("name", "must not be empty");
   p.clock_hz = r.number("clock_mhz", 1, 1e5) * 1e6;
   auto seconds = [&](const std::string& field) { return sc_core::sc_time(r.number(field, 0, 1.0), sc_core::SC_SEC); };
   for (int k = 0; k < kHostWorkKinds; ++k) p.work[k] = seconds("work_seconds." + to_string(HostWork(k)));
   for (int k = 0; k < kDriverWorkKinds; ++k) p.driver[k] = seconds("driver_seconds." + to_string(DriverWork(k)));
   p.interrupt_latency = seconds("driver_seconds.interrupt_latency");
   p.driver_model = read_driver_model(r);
+  // A calibrated profile carries its fit as a record (rc2000sim calibrate); nothing reads it back.
+  r.refuse_unknown_keys({"description", "calibration"});
   return p;
 }
 

@@ -1,0 +1,18 @@
+// Device profiles (board/device_profile.h) on any bytes, read from a file as rc2000sim reads them:
+// a profile, or std::invalid_argument naming the file and the field. Every other outcome is a finding.
+#include <cstddef>
+#include <cstdint>
+#include <stdexcept>
+
+#include "board/device_profile.h"
+#include "fuzz/fuzz_support.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string path = rc::fuzz::write_input("device.json", data, size);
+  try {
+    (void)rc::board::load_device_profile(path);
+  } catch (const std::invalid_argument&) {
+    // The documented error (board/profile_reader.h).
+  }
+  return 0;
+}

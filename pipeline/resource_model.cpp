@@ -3,12 +3,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
+#include "io/input_file.h"
 #include "pipeline/bit_bounds.h"
 #include "pipeline/fixed_format.h"
 #include "pipeline/hardware_blocks.h"
@@ -53,11 +52,11 @@ void require_source(const json& j, const std::string& origin) {
 }  // namespace
 
 ResourceModel ResourceModel::load(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open pipeline resources " + path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return from_json_text(text.str(), path);
+  try {
+    return from_json_text(io::read_file(path, io::kProfileLimitBytes, "the pipeline resources"), path);
+  } catch (const io::InputFileError& e) {
+    throw std::runtime_error(e.what());
+  }
 }
 
 std::string ResourceModel::default_path() { return RC_PIPELINE_RESOURCES_JSON; }

@@ -4,11 +4,13 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <tuple>
 
 #include "board/bank_layout.h"
+#include "io/parse_number.h"
 #include "board/design_fit.h"
 
 namespace rc {
@@ -36,8 +38,9 @@ std::vector<std::string> split(const std::string& text, char separator) {
 
 // A whole item of decimal digits; no sign (a '-' separates a range), no trailing characters.
 bool parse_number(const std::string& s, long& value) {
-  if (s.empty() || s.size() > 9 || s.find_first_not_of("0123456789") != std::string::npos) return false;
-  value = std::stol(s);
+  const std::optional<std::uint64_t> v = io::parse_unsigned(s);
+  if (!v || *v > 999999999) return false;  // far beyond any axis's range, and no overflow below
+  value = static_cast<long>(*v);
   return true;
 }
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <atomic>
 #include <exception>
-#include <fstream>
 #include <mutex>
 #include <numeric>
 #include <thread>
@@ -12,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "board/profile_reader.h"
+#include "io/input_file.h"
 
 namespace rc {
 
@@ -20,11 +20,15 @@ std::string PaperRow::label() const { return std::to_string(faces) + "/" + std::
 std::string default_paper_table_path() { return board::default_config_dir() + "/paper-table2.json"; }
 
 std::vector<PaperRow> load_paper_table(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot open the paper's Table 2 data");
+  std::string text;
+  try {
+    text = io::read_file(path, io::kProfileLimitBytes, "the paper's Table 2 data");
+  } catch (const io::InputFileError& e) {
+    throw std::runtime_error(e.what());
+  }
   std::vector<PaperRow> rows;
   try {
-    const nlohmann::json j = nlohmann::json::parse(in);
+    const nlohmann::json j = nlohmann::json::parse(text);
     for (const auto& s : j.at("scenes")) {
       rows.push_back({s.at("faces").get<int>(), s.at("patches").get<int>(), s.at("steps").get<int>(),
                       s.at("software_seconds").get<double>(), s.at("one_pipe_seconds").get<double>()});

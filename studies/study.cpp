@@ -1,12 +1,13 @@
 #include "studies/study.h"
 
 #include <algorithm>
-#include <cstdlib>
+#include <optional>
 #include <filesystem>
 #include <map>
 #include <set>
 #include <stdexcept>
 
+#include "io/parse_number.h"
 #include "rc_version.h"
 #include "studies/paper_workload.h"
 
@@ -17,23 +18,26 @@ namespace {
 std::string where(const Study& s) { return "study " + (s.file.empty() ? s.name : s.file); }
 
 // Every value of every profile axis, on every device and host swept, through the profile's own
-// loader (with the fixed settings), so a bad value fails before any work with its path named.
-void check_profile_values(const Study& s) {
+// loader (with the fixed settings), so a bad value fails before any work with its path named. Each
+// value is applied with the fixed settings in one go, so an error names the profile once with all of
+// them ("xc2v6000.json with banks.word_bits=64, banks.capacity_bytes=76 (study s.toml): ...").
+template <class Profile>
+void check_values(const Study& s, const Profile& profile, ProfileKind kind) {
   const std::string study = s.file.empty() ? s.name : s.file;
-  for (const std::string& d : s.axes.devices) {
-    const board::DeviceProfile base = with_settings(board::find_device_profile(d), s.fixed, study);
-    for (const ProfileAxis& a : s.axes.profile) {
-      if (a.field.kind != ProfileKind::device) continue;
-      for (const nlohmann::ordered_json& v : a.values) (void)with_settings(base, {{a.field, v}}, study);
+  (void)with_settings(profile, s.fixed, study);
+  for (const ProfileAxis& a : s.axes.profile) {
+    if (a.field.kind != kind) continue;
+    for (const nlohmann::ordered_json& v : a.values) {
+      std::vector<ProfileSetting> settings = s.fixed;
+      settings.push_back({a.field, v});
+      (void)with_settings(profile, settings, study);
     }
   }
-  for (const std::string& h : s.axes.hosts) {
-    const HostProfile base = with_settings(find_host_profile(h), s.fixed, study);
-    for (const ProfileAxis& a : s.axes.profile) {
-      if (a.field.kind != ProfileKind::host) continue;
-      for (const nlohmann::ordered_json& v : a.values) (void)with_settings(base, {{a.field, v}}, study);
-    }
-  }
+}
+
+void check_profile_values(const Study& s) {
+  for (const std::string& d : s.axes.devices) check_values(s, board::find_device_profile(d), ProfileKind::device);
+  for (const std::string& h : s.axes.hosts) check_values(s, find_host_profile(h), ProfileKind::host);
 }
 
 // ---- settings that would change nothing --------------------------------------------------------
@@ -67,9 +71,12 @@ std::string unused_because(const Study& s, const ProfileField& f) {
              "profile's and the pipeline's at the run's width (board/design_fit.cpp), so sweep bits instead";
     }
     if (starts("clock.mhz_by_lanes.")) {
-      const int lanes = std::atoi(f.field.c_str() + std::string("clock.mhz_by_lanes.").size());
-      if (std::find(s.axes.lanes.begin(), s.axes.lanes.end(), lanes) == s.axes.lanes.end())
-        return "the study sweeps no configuration with " + std::to_string(lanes) + " lane(s)";
+      // The profile's loader has checked the key is a whole lane count (board/device_profile.cpp).
+      const std::string key = f.field.substr(std::string("clock.mhz_by_lanes.").size());
+      const std::optional<std::uint64_t> lanes = io::parse_unsigned(key);
+      if (!lanes) return "'" + key + "' is not a lane count";
+      if (std::find(s.axes.lanes.begin(), s.axes.lanes.end(), static_cast<int>(*lanes)) == s.axes.lanes.end())
+        return "the study sweeps no configuration with " + key + " lane(s)";
     }
     return "";
   }

@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <stdexcept>
 
 #include <toml++/toml.h>
+
+#include "io/input_file.h"
 
 #include "studies/paper_workload.h"
 
@@ -390,18 +390,11 @@ Study parse_study_text(const std::string& text, const std::string& path) {
 }
 
 Study load_study_file(const std::string& path) {
-  std::error_code error;
-  const std::uintmax_t size = std::filesystem::file_size(path, error);
-  if (error) throw std::invalid_argument(path + ": cannot read the study file (" + error.message() + ")");
-  if (size > kMaxStudyFileBytes) {
-    throw std::invalid_argument(path + ": " + std::to_string(size) + " bytes; a study file is at most " +
-                                std::to_string(kMaxStudyFileBytes) + " bytes");
+  try {
+    return parse_study_text(io::read_file(path, kMaxStudyFileBytes, "a study file"), path);
+  } catch (const io::InputFileError& e) {
+    throw std::invalid_argument(e.what());
   }
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in && !in.eof()) throw std::invalid_argument(path + ": cannot read the study file");
-  return parse_study_text(text.str(), path);
 }
 
 }  // namespace rc

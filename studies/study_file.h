@@ -16,6 +16,7 @@
 
 #include <string>
 
+#include "io/input_file.h"
 #include "studies/study.h"
 
 namespace rc {
@@ -26,7 +27,7 @@ namespace rc {
 Study default_study();
 
 // A study file is at most this large (a study is a page of settings, not data).
-constexpr std::size_t kMaxStudyFileBytes = 1 << 20;
+constexpr std::uint64_t kMaxStudyFileBytes = io::kProfileLimitBytes;
 
 Study load_study_file(const std::string& path);
 // The same from text; `path` names it in errors and anchors relative scene paths.

@@ -1,10 +1,12 @@
 #include "studies/sweep_study.h"
 
 #include <algorithm>
+#include <optional>
 #include <cstdio>
 #include <set>
 #include <stdexcept>
 
+#include "io/parse_number.h"
 #include "studies/paper_workload.h"
 #include "studies/timing_study.h"
 
@@ -216,20 +218,17 @@ std::string study_name(const Study& s) { return s.name; }
 std::string Shard::text() const { return std::to_string(index) + "/" + std::to_string(count); }
 
 Shard parse_shard(const std::string& text) {
+  // The whole of each side must be the number ("1x/3" or "1/3 " is no shard).
   const std::size_t slash = text.find('/');
-  auto whole = [](const std::string& s) {
-    return !s.empty() && s.size() <= 6 && s.find_first_not_of("0123456789") == std::string::npos;
-  };
-  if (slash == std::string::npos || !whole(text.substr(0, slash)) || !whole(text.substr(slash + 1))) {
-    throw std::invalid_argument("--shard: expected I/N (shard I of N, counted from 0), got '" + text + "'");
-  }
-  Shard s{static_cast<unsigned>(std::stoul(text.substr(0, slash))), static_cast<unsigned>(std::stoul(text.substr(slash + 1)))};
-  if (s.count < 1 || s.count > kMaxShards)
+  const std::optional<std::uint64_t> index = slash == std::string::npos ? std::nullopt : io::parse_unsigned(text.substr(0, slash));
+  const std::optional<std::uint64_t> count = slash == std::string::npos ? std::nullopt : io::parse_unsigned(text.substr(slash + 1));
+  if (!index || !count) throw std::invalid_argument("--shard: expected I/N (shard I of N, counted from 0), got '" + text + "'");
+  if (*count < 1 || *count > kMaxShards)
     throw std::invalid_argument("--shard " + text + ": N must be 1.." + std::to_string(kMaxShards));
-  if (s.index >= s.count)
+  if (*index >= *count)
     throw std::invalid_argument("--shard " + text + ": I counts from 0 and must be below N (0.." +
-                                std::to_string(s.count - 1) + ")");
-  return s;
+                                std::to_string(*count - 1) + ")");
+  return {static_cast<unsigned>(*index), static_cast<unsigned>(*count)};
 }
 
 std::vector<unsigned> deal_groups(const std::vector<double>& costs, unsigned shards) {

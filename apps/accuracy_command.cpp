@@ -6,12 +6,11 @@
 // Each row also gives the bytes one intersection moves (sec 5.6(a)'s count: three coordinates
 // read, one result bit written), so error can be set against bandwidth.
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <memory>
 #include <sstream>
 
 #include "apps/cli_options.h"
+#include "apps/outputs.h"
 #include "apps/plot.h"
 #include "apps/progress.h"
 #include "pipeline/float_format.h"
@@ -72,9 +71,8 @@ WidthResult measure(const Scene& scene, const SolverOptions& solver, const Solve
   return r;
 }
 
-void write_csv(const std::string& path, const std::vector<WidthResult>& rows, int float_steps) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error(path + ": cannot open for writing");
+std::string csv_text(const std::vector<WidthResult>& rows, int float_steps) {
+  std::ostringstream out;
   out << "arithmetic,bits,coordinate_bits,bytes_per_intersection,steps,float_steps,rmse,max_abs_error,relative_rmse,"
          "relative_max_error,segments,decisions_differ,fixed_blocks_float_clear,float_blocks_fixed_clear\n";
   for (const WidthResult& r : rows) {
@@ -84,9 +82,14 @@ void write_csv(const std::string& path, const std::vector<WidthResult>& rows, in
         << r.fixed_only_blocks + r.float_only_blocks << ',' << r.fixed_only_blocks << ',' << r.float_only_blocks
         << "\n";
   }
+  return out.str();
 }
 
 int run_accuracy(const AccuracyOptions& o) {
+  const std::string csv = o.out_dir + "/accuracy.csv", png = o.out_dir + "/accuracy.png";
+  Outputs outputs;
+  outputs.expect(csv);
+  outputs.expect(png);
   ProgressLine progress(!o.quiet);
   const Scene scene = prepare_scene(o.scene, [&](const std::string& what) { progress.update("%-60s", what.c_str()); }).scene;
   FloatVisibility float_visibility;
@@ -101,9 +104,9 @@ int run_accuracy(const AccuracyOptions& o) {
     rows.push_back(measure(scene, o.solver, reference, format, 0));
   }
   progress.finish();
-  std::filesystem::create_directories(o.out_dir);
-  write_csv(o.out_dir + "/accuracy.csv", rows, reference.steps);
-  plot("accuracy.py", o.out_dir + "/accuracy.csv", o.out_dir + "/accuracy.png");
+  outputs.add(csv, csv_text(rows, reference.steps));
+  outputs.write();
+  const bool drawn = plot("accuracy.py", csv, png);
 
   std::printf("rc2000sim accuracy: %zu faces, %zu patches, float reference %d steps\n", scene.faces.size(),
               scene.patches.size(), reference.steps);
@@ -118,7 +121,7 @@ int run_accuracy(const AccuracyOptions& o) {
   }
   std::printf("errors relative to the mean float radiosity; decisions compared on %llu segments per width\n",
               static_cast<unsigned long long>(rows.empty() ? 0 : rows.front().segments_compared));
-  std::printf("wrote %s/accuracy.csv and accuracy.png (%.1f s)\n", o.out_dir.c_str(), progress.seconds());
+  std::printf("wrote %s%s (%.1f s)\n", csv.c_str(), drawn ? (" and " + png).c_str() : "", progress.seconds());
   return 0;
 }
 
@@ -137,11 +140,11 @@ void add_accuracy_command(CLI::App& app, int& exit_code) {
       ->delimiter(';')->capture_default_str();
   cmd->add_option("--out", options->out_dir, "Output folder")->capture_default_str();
   cmd->add_flag("--quiet", options->quiet, "No progress output");
-  cmd->callback([options, solver, &exit_code] {
-    options->solver = solver->resolved();
+  cmd->callback([options, solver, cmd, &exit_code] {
+    options->solver = solver->resolved(*cmd);
     if (options->formats == std::vector<std::string>{"none"}) options->formats.clear();
-    for (const std::string& f : options->formats) (void)pipeline::parse_float_format(f);  // before any work
-    exit_code = run_accuracy(*options);
+    check_float_formats("--formats", options->formats);  // before any work
+    exit_code = run_guarded("accuracy", options->out_dir + "/", [&] { return run_accuracy(*options); });
   });
 }
 

@@ -3,12 +3,11 @@
 // adaptive.csv, the images of every run and of the reference, and pareto.png; with --docs DIR also
 // DIR/adaptive-patches.md. docs/results/adaptive-patches.md.
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <memory>
 #include <sstream>
 
 #include "apps/cli_options.h"
+#include "apps/outputs.h"
 #include "apps/plot.h"
 #include "apps/progress.h"
 #include "apps/report.h"
@@ -29,7 +28,7 @@ struct AdaptiveOptions : AdaptiveSpec {
 
 std::string image_name(const PatchingRun& r) { return r.kind + "_L" + std::to_string(r.level) + ".png"; }
 
-void write_image(const std::string& path, const HdrImage& image) { write_png(path, tone_map(image, 0.18)); }
+std::string png_bytes(const HdrImage& image) { return encode_png(tone_map(image, 0.18)); }
 
 std::string csv_text(const AdaptiveResult& a) {
   std::ostringstream out;
@@ -100,22 +99,28 @@ void print(const AdaptiveResult& a) {
 }
 
 int run_adaptive(const AdaptiveOptions& o) {
+  const std::string csv = o.out_dir + "/adaptive.csv";
+  const std::string pictures = o.docs_dir.empty() ? o.out_dir : o.docs_dir + "/adaptive-patches";
+  const std::string markdown_path = o.docs_dir + "/adaptive-patches.md";
+  Outputs outputs;
+  outputs.expect(csv);
+  outputs.expect(pictures + "/reference.png");
+  if (!o.docs_dir.empty()) outputs.expect(markdown_path);
   ProgressLine progress(!o.quiet);
   const AdaptiveResult a = run_adaptive_study(o, [&](const std::string& what) { progress.update("%-60s", what.c_str()); });
   progress.finish();
-  std::filesystem::create_directories(o.out_dir);
-  const std::string pictures = o.docs_dir.empty() ? o.out_dir : o.docs_dir + "/adaptive-patches";
-  std::filesystem::create_directories(pictures);
-  write_text_atomically(o.out_dir + "/adaptive.csv", csv_text(a));
-  write_image(pictures + "/reference.png", a.reference_image);
-  for (const PatchingRun& r : a.runs) write_image(pictures + "/" + image_name(r), r.image);
-  print(a);
-  plot("adaptive.py", o.out_dir + "/adaptive.csv", pictures + "/pareto.png");
+  const std::string table = csv_text(a);
+  outputs.add(csv, table);
+  outputs.add(pictures + "/reference.png", png_bytes(a.reference_image));
+  for (const PatchingRun& r : a.runs) outputs.add(pictures + "/" + image_name(r), png_bytes(r.image));
   if (!o.docs_dir.empty()) {
-    write_text_atomically(o.docs_dir + "/adaptive-patches.md", markdown(o, a, "adaptive-patches"));
-    write_text_atomically(pictures + "/adaptive.csv", csv_text(a));
+    outputs.add(markdown_path, markdown(o, a, "adaptive-patches"));
+    outputs.add(pictures + "/adaptive.csv", table);
   }
-  std::printf("  wrote %s/adaptive.csv, the images and %s/pareto.png (%.1f s)\n", o.out_dir.c_str(), pictures.c_str(),
+  outputs.write();
+  print(a);
+  const bool drawn = plot("adaptive.py", csv, pictures + "/pareto.png");
+  std::printf("  wrote %s, the images%s in %s (%.1f s)\n", csv.c_str(), drawn ? " and pareto.png" : "", pictures.c_str(),
               progress.seconds());
   return 0;
 }
@@ -139,7 +144,7 @@ void add_adaptive_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--reference-levels", o->reference_levels, "Patch levels of the reference (no patch is split deeper)")
       ->check(CLI::Range(1, 6))->capture_default_str();
   add_bits_option(*cmd, o->bits);
-  cmd->add_option("--convergence", o->convergence, "Convergence of every run")->check(CLI::Range(0.0, 1.0))
+  cmd->add_option("--convergence", o->convergence, "Convergence of every run")->check(convergence_target())
       ->capture_default_str();
   cmd->add_option("--form-factor", o->form_factor_name, "point (paper) or disc")
       ->check(CLI::IsMember({"point", "disc"}))->capture_default_str();
@@ -152,13 +157,15 @@ void add_adaptive_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--docs", o->docs_dir, "Also write adaptive-patches.md and its pictures here (e.g. docs/results)");
   cmd->add_flag("--quiet", o->quiet, "No progress output");
   cmd->callback([o, cmd, &exit_code] {
-    if (cmd->count("--patch-levels") > 0 || o->scene.patch_size > 0) {
-      throw CLI::ValidationError("--patch-levels/--patch-size",
-                                 "do not apply to adaptive, which sets patches by --levels and --start-levels");
-    }
+    refuse_given(*cmd, {"--patch-levels", "--patch-size"},
+                 "does not apply to adaptive, which sets patches by --levels and --start-levels");
     o->form_factor = parse_form_factor_kind(o->form_factor_name);
     o->board.lanes = o->lanes;
-    exit_code = run_adaptive(*o);
+    const std::string where = o->out_dir + "/" + (o->docs_dir.empty() ? "" : " and " + o->docs_dir + "/");
+    exit_code = run_guarded("adaptive", where, [&] {
+      (void)make_board_setup(o->board);  // the device, host and lanes, before minutes of solving
+      return run_adaptive(*o);
+    });
   });
 }
 

@@ -1,11 +1,11 @@
 // `rc2000sim calibrate`: fits the host CPU cost model to the paper's Table 2 software and
 // single-pipeline columns (and nothing else), and writes the calibrated host profile.
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <memory>
 
 #include "apps/cli_options.h"
+#include "apps/outputs.h"
+#include "apps/report.h"
 #include "studies/paper_workload.h"
 #include "apps/progress.h"
 #include "studies/calibration.h"
@@ -55,14 +55,10 @@ void print_chosen(const VariantCalibration& v) {
               100 * v.cv.mean_absolute, 100 * v.cv.worst);
 }
 
-void write_json(const std::string& path, const nlohmann::ordered_json& j) {
-  std::filesystem::create_directories(std::filesystem::path(path).parent_path());
-  std::ofstream out(path);
-  out << j.dump(2) << "\n";
-  if (!out) throw std::runtime_error(path + ": cannot write");
-}
-
 int run_calibrate(const CalibrateOptions& o) {
+  Outputs outputs;
+  outputs.expect(o.out);  // before the fit's seconds of work
+  outputs.expect(o.variants_out);
   ProgressLine progress(!o.quiet);
   const std::vector<PaperRow> rows = load_paper_table(o.table);
   const HostProfile base = find_host_profile(o.base);
@@ -74,8 +70,9 @@ int run_calibrate(const CalibrateOptions& o) {
   const std::vector<VariantCalibration>& fitted = calibration.variants;
   const std::size_t best = calibration.chosen;
   const VariantCalibration& chosen = fitted[best];
-  write_json(o.out, calibrated_profile(chosen.used, chosen.fit, chosen.observations, o.name, &chosen.cv));
-  write_json(o.variants_out, variants_document(fitted, base.name));
+  outputs.add(o.out, pretty_json(calibrated_profile(chosen.used, chosen.fit, chosen.observations, o.name, &chosen.cv)));
+  outputs.add(o.variants_out, pretty_json(variants_document(fitted, base.name)));
+  outputs.write();
 
   std::printf("rc2000sim calibrate: host profile %s fitted to Table 2 (software and single pipeline)\n", base.name.c_str());
   print_variants(fitted, best);
@@ -98,7 +95,11 @@ void add_calibrate_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--visibility", o->visibility, "Bit-exact backend that answers visibility once per scene: fixed or fast")
       ->check(CLI::IsMember({"fixed", "fast"}))->capture_default_str();
   cmd->add_flag("--quiet", o->quiet, "No progress output");
-  cmd->callback([o, &exit_code] { exit_code = run_calibrate(*o); });
+  cmd->callback([o, &exit_code] {
+    if (o->name.empty()) refuse_option("--name", "must not be empty (it names the calibrated profile)");
+    if (o->out == o->variants_out) refuse_option("--variants-out", "is the same file as --out");
+    exit_code = run_guarded("calibrate", listed({o->out, o->variants_out}), [&] { return run_calibrate(*o); });
+  });
 }
 
 }  // namespace rc

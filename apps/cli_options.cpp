@@ -1,8 +1,52 @@
 #include "apps/cli_options.h"
 
+#include <stdexcept>
+
+#include "pipeline/float_format.h"
+
 namespace rc {
 
-SolverOptions SolverCli::resolved() const {
+CLI::Validator convergence_target() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        double c = 0;
+        if (!CLI::detail::lexical_cast(text, c)) return "'" + text + "' is not a number";
+        if (!(c > 0 && c < 1)) {
+          return text + " is not strictly between 0 and 1 (0 stops before the first step; 1 asks for no unshot power "
+                        "at all and runs to the solver's step cap)";
+        }
+        return "";
+      },
+      "in (0, 1)", "convergence target");
+}
+
+void refuse_option(const std::string& option, const std::string& why) { throw CLI::ValidationError(option + " " + why); }
+
+void refuse_given(const CLI::App& cmd, std::initializer_list<const char*> options, const std::string& why) {
+  for (const char* option : options)
+    if (given(cmd, option)) refuse_option(option, why);
+}
+
+void check_float_formats(const std::string& option, const std::vector<std::string>& formats) {
+  for (const std::string& f : formats) {
+    try {
+      (void)pipeline::parse_float_format(f);
+    } catch (const std::invalid_argument& e) {
+      throw CLI::ValidationError(option + " " + f + ": " + e.what());
+    }
+  }
+}
+
+SolverOptions SolverCli::resolved(const CLI::App& cmd) const {
+  if (given(cmd, "--steps")) {
+    if (options.fixed_steps < 1) refuse_option("--steps", "must be at least 1; omit it to run to convergence");
+    if (options.fixed_steps > options.max_steps) {
+      refuse_option("--steps", std::to_string(options.fixed_steps) + " is above the solver's cap of " +
+                                   std::to_string(options.max_steps) + " steps");
+    }
+    refuse_given(cmd, {"--convergence"}, "does not apply with --steps (a fixed step count never reads the "
+                                         "convergence target); give one or the other");
+  }
   SolverOptions o = options;
   o.form_factor = parse_form_factor_kind(form_factor);
   return o;
@@ -25,9 +69,9 @@ void add_scene_options(CLI::App& cmd, SceneOptions& scene) {
 void add_solver_options(CLI::App& cmd, SolverCli& solver) {
   cmd.add_option("--convergence", solver.options.convergence,
                  "Stop when max unshot power < (1 - c) x max emitted power")
-      ->check(CLI::Range(0.0, 1.0))->capture_default_str();
-  cmd.add_option("--steps", solver.options.fixed_steps, "Run exactly this many shooting steps instead")
-      ->check(CLI::NonNegativeNumber);
+      ->check(convergence_target())->capture_default_str();
+  cmd.add_option("--steps", solver.options.fixed_steps,
+                 "Run exactly this many shooting steps instead (at least 1; without it: to --convergence)");
   cmd.add_option("--form-factor", solver.form_factor, "point (paper) or disc")
       ->check(CLI::IsMember({"point", "disc"}))->capture_default_str();
 }

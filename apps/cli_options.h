@@ -1,9 +1,12 @@
-// Command-line options shared by several rc2000sim commands, and the command registry.
+// Command-line options shared by several rc2000sim commands, the checks that refuse options that do
+// not apply (docs/outputs.md, "Which options apply where"), and the command registry.
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <initializer_list>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "radiosity/radiosity.h"
 #include "scenes/prepare.h"
@@ -14,12 +17,29 @@ namespace rc {
 struct SolverCli {
   SolverOptions options;
   std::string form_factor = "point";
-  SolverOptions resolved() const;
+  // The options, checked: --steps at least 1 and within the solver's cap, and --convergence not given
+  // beside --steps (a fixed count never reads it). Throws CLI::ValidationError naming the option.
+  SolverOptions resolved(const CLI::App& cmd) const;
 };
 
 void add_scene_options(CLI::App& cmd, SceneOptions& scene);
 void add_solver_options(CLI::App& cmd, SolverCli& solver);
 void add_bits_option(CLI::App& cmd, int& bits);
+
+// A convergence target: strictly between 0 and 1 (0 stops before the first step; 1 asks for no unshot
+// power at all and runs to the solver's step cap).
+CLI::Validator convergence_target();
+
+// Whether the user gave `option` (not its default).
+inline bool given(const CLI::App& cmd, const std::string& option) { return cmd.count(option) > 0; }
+// Throws CLI::ValidationError "<option> <why>", `why` a sentence's rest: "applies to --impl board only
+// (...)", "must be at least 1; ...", "does not apply with --study: ...".
+[[noreturn]] void refuse_option(const std::string& option, const std::string& why);
+// Refuses each of `options` that was given, with the same reason.
+void refuse_given(const CLI::App& cmd, std::initializer_list<const char*> options, const std::string& why);
+
+// Each of `formats` must be a float:E,M the pipeline has; else refuses `option` with the reason.
+void check_float_formats(const std::string& option, const std::vector<std::string>& formats);
 
 // Each command registers itself and, when chosen, stores its exit code in `exit_code`.
 void add_run_command(CLI::App& app, int& exit_code);

@@ -5,8 +5,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <new>
 
 #include "apps/cli_options.h"
+#include "apps/outputs.h"
 
 namespace {
 
@@ -32,7 +34,13 @@ int sc_main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    return app.exit(e);  // an option refused: the message names it (and why), then a usage hint
+  } catch (const rc::CommandFailed& e) {
+    std::fprintf(stderr, "%s\n", e.what());  // says what was and was not written (apps/outputs.h)
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "error: out of memory (std::bad_alloc)\n");
+    return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;

@@ -6,10 +6,11 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 #include <memory>
 
 #include "apps/cli_options.h"
+#include "apps/outputs.h"
 #include "apps/paper_document.h"
 #include "board/throughput_estimates.h"
 #include "studies/paper_workload.h"
@@ -96,9 +97,8 @@ ordered_json paper_json(const PaperDocument& d) {
 // Numbers as paper.json spells them (shortest text that reads back to the same double).
 std::string number(double x) { return ordered_json(x).dump(); }
 
-void write_csv(const std::string& path, const PaperDocument& d) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error(path + ": cannot open for writing");
+std::string csv_text(const PaperDocument& d) {
+  std::ostringstream out;
   out << "record,faces,patches,steps,implementation,seconds,paper_seconds,relative_residual,spread_min_seconds,"
          "spread_max_seconds,fpga_busy_seconds,speedup_vs_software,device,lanes,clock_mhz,intersections_per_s,"
          "bytes_per_cycle,gb_per_s,estimate,rule\n";
@@ -117,6 +117,7 @@ void write_csv(const std::string& path, const PaperDocument& d) {
           << number(e->gb_per_s) << ",\"" << e->estimate << "\"," << board::to_string(e->rule) << "\n";
     }
   }
+  return out.str();
 }
 
 // A withheld-column cell: the prediction and the spread of the variants within tolerance.
@@ -170,6 +171,12 @@ void print_table(const PaperDocument& d) {
 namespace {
 
 int run_paper(const PaperOptions& o) {
+  const std::string json_path = o.out_dir + "/paper.json", csv_path = o.out_dir + "/paper.csv";
+  const std::string markdown_path = o.docs_dir + "/paper.md";
+  const std::string pictures = o.docs_dir.empty() ? o.out_dir : o.docs_dir + "/paper";
+  Outputs outputs;
+  for (const std::string& p : {json_path, csv_path, pictures + "/table2.png"}) outputs.expect(p);
+  if (!o.docs_dir.empty()) outputs.expect(markdown_path);
   ProgressLine progress(!o.quiet);
   const std::vector<PaperRow> rows = load_paper_table(o.table);
   const HostProfile host = find_host_profile(o.host);  // fails early with a clear message
@@ -193,24 +200,20 @@ int run_paper(const PaperOptions& o) {
   document.driver_model = host.driver_model.name();
   const std::string source_dir = std::string(RC_SOURCE_DIR) + "/";
   document.variants = o.variants.rfind(source_dir, 0) == 0 ? o.variants.substr(source_dir.size()) : o.variants;
-  std::filesystem::create_directories(o.out_dir);
-  std::ofstream(o.out_dir + "/paper.json") << paper_json(document).dump(2) << "\n";
-  write_csv(o.out_dir + "/paper.csv", document);
+  outputs.add(json_path, pretty_json(paper_json(document)));
+  outputs.add(csv_path, csv_text(document));
+  if (!o.docs_dir.empty()) outputs.add(markdown_path, paper_markdown(document));
+  outputs.write();
   print_table(document);
   std::printf("\n  average overall speedup %.2fx, largest scene %.2fx (software / concurrent)\n",
               document.summary.average_overall_speedup, document.summary.largest_scene_overall_speedup);
-  if (!o.docs_dir.empty()) {
-    std::filesystem::create_directories(o.docs_dir + "/paper");
-    plotter.draw(o.out_dir + "/paper.csv", o.docs_dir + "/paper");
-    write_paper_markdown(o.docs_dir + "/paper.md", document);
-  } else {
-    plotter.draw(o.out_dir + "/paper.csv", o.out_dir);
-  }
-  plotter.finish();
+  std::filesystem::create_directories(pictures);  // the plots' folder, now that the data is written
+  plotter.draw(csv_path, pictures);
+  const bool drawn = plotter.finish();
   std::printf("  wall: functional visibility and solver %.2f s, SystemC timing of %zu systems %.2f s (%.0f%%), total %.2f s\n",
               functional_seconds, r.outcomes.size(), study_seconds, 100.0 * study_seconds / progress.seconds(), progress.seconds());
-  std::printf("  wrote %s/paper.json, paper.csv%s\n", o.out_dir.c_str(),
-              o.docs_dir.empty() ? "" : (", " + o.docs_dir + "/paper.md").c_str());
+  std::printf("  wrote %s%s\n", listed(outputs.paths()).c_str(),
+              drawn ? (" and the plots in " + pictures).c_str() : "");
   return 0;
 }
 
@@ -228,7 +231,10 @@ void add_paper_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--visibility", o->visibility, "Bit-exact backend that answers visibility once per scene: fixed or fast")
       ->check(CLI::IsMember({"fixed", "fast"}))->capture_default_str();
   cmd->add_flag("--quiet", o->quiet, "No progress output");
-  cmd->callback([o, &exit_code] { exit_code = run_paper(*o); });
+  cmd->callback([o, &exit_code] {
+    const std::string where = o->out_dir + "/" + (o->docs_dir.empty() ? "" : " and " + o->docs_dir + "/");
+    exit_code = run_guarded("paper", where, [&] { return run_paper(*o); });
+  });
 }
 
 }  // namespace rc

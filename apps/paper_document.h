@@ -20,6 +20,6 @@ struct PaperDocument {
   std::string variants;      // the variants file, relative to the source tree when inside it
 };
 
-void write_paper_markdown(const std::string& path, const PaperDocument& document);
+std::string paper_markdown(const PaperDocument& document);  // docs/results/paper.md
 
 }  // namespace rc

@@ -4,21 +4,11 @@
 #include "studies/paper_workload.h"
 
 #include <cstdio>
-#include <fstream>
 #include <iomanip>
+#include <sstream>
 #include <stdexcept>
 
 namespace rc {
-
-namespace {
-
-std::ofstream open_output(const std::string& path) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error(path + ": cannot open for writing");
-  return out;
-}
-
-}  // namespace
 
 nlohmann::ordered_json scene_json(const Scene& scene, const std::string& source,
                                   const std::vector<std::string>& warnings) {
@@ -52,31 +42,10 @@ nlohmann::ordered_json solver_json(const SolverResult& r) {
   return j;
 }
 
-void write_json(const std::string& path, const nlohmann::ordered_json& json) {
-  std::ofstream out = open_output(path);
-  out << json.dump(2) << "\n";
-}
+std::string pretty_json(const nlohmann::ordered_json& json) { return json.dump(2) + "\n"; }
 
-void write_text_atomically(const std::string& path, const std::string& text) {
-  const std::string temporary = path + ".partial";
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    if (!out) throw std::runtime_error(path + ": cannot open for writing");
-    out << text;
-    out.flush();
-    if (!out) {
-      std::remove(temporary.c_str());
-      throw std::runtime_error(path + ": write failed");
-    }
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw std::runtime_error(path + ": cannot rename " + temporary + " over it");
-  }
-}
-
-void write_patches_csv(const std::string& path, const Scene& scene, const std::vector<Spectrum>& radiosity) {
-  std::ofstream out = open_output(path);
+std::string patches_csv(const Scene& scene, const std::vector<Spectrum>& radiosity) {
+  std::ostringstream out;
   out << "patch,face,centre_x,centre_y,centre_z,area";
   const char* band_names[] = {"r", "g", "b"};
   for (std::size_t b = 0; b < kBands; ++b) {
@@ -89,6 +58,7 @@ void write_patches_csv(const std::string& path, const Scene& scene, const std::v
     for (std::size_t b = 0; b < kBands; ++b) out << ',' << radiosity[i][b];
     out << "\n";
   }
+  return out.str();
 }
 
 nlohmann::ordered_json estimate_json(const board::PaperEstimate& e) {

@@ -1,5 +1,5 @@
 // Machine-readable outputs of a run: report.json (keys documented in docs/outputs.md) and
-// patches.csv (one row per patch).
+// patches.csv (one row per patch), as text.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -17,12 +17,9 @@ namespace rc {
 nlohmann::ordered_json scene_json(const Scene& scene, const std::string& source,
                                   const std::vector<std::string>& warnings);
 nlohmann::ordered_json solver_json(const SolverResult& result);
-void write_json(const std::string& path, const nlohmann::ordered_json& json);
-// Writes `text` to a temporary file beside `path`, then renames it over `path`: a reader (or a
-// merge) never sees half a file, and a failed write leaves no file. Throws std::runtime_error
-// naming the path.
-void write_text_atomically(const std::string& path, const std::string& text);
-void write_patches_csv(const std::string& path, const Scene& scene, const std::vector<Spectrum>& radiosity);
+// The text of the files (apps/outputs.h writes them): JSON indented by two, and patches.csv.
+std::string pretty_json(const nlohmann::ordered_json& json);
+std::string patches_csv(const Scene& scene, const std::vector<Spectrum>& radiosity);
 
 // One sec 5.6 estimate (board/throughput_estimates.h), as paper.json, report.json and sweep.json
 // write it.

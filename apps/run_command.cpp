@@ -3,12 +3,13 @@
 #include <array>
 #include <optional>
 #include <cstdio>
-#include <filesystem>
 #include <stdexcept>
 
 #include "apps/cli_options.h"
+#include "apps/outputs.h"
 #include "apps/progress.h"
 #include "apps/report.h"
+#include "io/parse_number.h"
 #include "radiosity/png_writer.h"
 #include "pipeline/float_format.h"
 #include "radiosity/visibility_factory.h"
@@ -25,9 +26,13 @@ struct RunOutcome {
   std::array<std::uint64_t, kHostWorkKinds> work_counts{};  // software runs
   std::optional<RunReport> board;                           // board runs
   std::optional<LanesThatFit> lanes_that_fit;               // board runs: sec 5.6 on the run's device
+  std::string trace_json;                                   // board runs with --trace
 };
 
 bool float_arith(const RunOptions& o) { return pipeline::names_float_format(o.arith); }
+// Whether the run's visibility has a fractional width (--bits): the board's fixed lanes and the
+// bit-exact software backends do; float formats and double precision do not.
+bool uses_fixed_width(const RunOptions& o) { return !float_arith(o) && (o.impl == "board" || o.visibility != "float"); }
 
 RunOutcome run_software(const RunOptions& o, const Scene& scene, ProgressLine& progress) {
   // A float pipeline (--arith float:E,M) answers as the backend of that name (pipeline/float_mt.h).
@@ -46,29 +51,38 @@ RunOutcome run_software(const RunOptions& o, const Scene& scene, ProgressLine& p
   return out;
 }
 
-// "A:B" -> first and last step (1-based, inclusive).
+// "A:B" -> first and last step (1-based, inclusive); each side whole ("1x:3" is refused).
 void parse_trace_steps(const std::string& text, BoardRunOptions& board) {
   const auto colon = text.find(':');
-  try {
-    if (colon == std::string::npos) throw std::invalid_argument("no colon");
-    board.trace_first_step = std::stoi(text.substr(0, colon));
-    board.trace_last_step = std::stoi(text.substr(colon + 1));
-  } catch (const std::exception&) {
-    throw std::invalid_argument("--trace-steps expects FIRST:LAST, e.g. 1:3, got '" + text + "'");
+  const std::optional<std::uint64_t> first = colon == std::string::npos ? std::nullopt : io::parse_unsigned(text.substr(0, colon));
+  const std::optional<std::uint64_t> last = colon == std::string::npos ? std::nullopt : io::parse_unsigned(text.substr(colon + 1));
+  if (!first || !last) refuse_option("--trace-steps", "expects FIRST:LAST, e.g. 1:3, got '" + text + "'");
+  if (*first < 1 || *last < *first || *last > static_cast<std::uint64_t>(SolverOptions{}.max_steps)) {
+    refuse_option("--trace-steps",
+                  "needs 1 <= FIRST <= LAST <= " + std::to_string(SolverOptions{}.max_steps) + ", got '" + text + "'");
   }
-  if (board.trace_first_step < 1 || board.trace_last_step < board.trace_first_step) {
-    throw std::invalid_argument("--trace-steps needs 1 <= FIRST <= LAST, got '" + text + "'");
-  }
+  board.trace_first_step = static_cast<int>(*first);
+  board.trace_last_step = static_cast<int>(*last);
 }
 
-RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& progress) {
+// `vcd` is where SystemC writes the VCD while it simulates (a temporary file), or empty.
+// The board run's options as the command line gives them (no oracle, progress or VCD yet).
+BoardRunOptions board_options(const RunOptions& o) {
   BoardRunOptions board = o.board;
+  board.vcd_path.clear();  // --vcd: the final path; SystemC writes a temporary file (run_board)
+  board.trace = !o.trace_path.empty();
   board.bits = o.bits;
   if (float_arith(o)) board.float_format = pipeline::parse_float_format(o.arith);  // float lanes
   board.lanes = o.lanes;
   board.cards = o.cards;
   board.card_split = card_split_from_string(o.card_split);
   board.card_bus = card_bus_from_string(o.card_bus);
+  return board;
+}
+
+RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& progress, const std::string& vcd) {
+  BoardRunOptions board = board_options(o);
+  board.vcd_path = vcd;
   // The lanes copy the culled kernel's answer, proven bit-identical (tests BoardOracle.*, FastVisibility.*);
   // float lanes copy the `float:E,M` software backend's (tests BoardSystem.FloatLanes*).
   std::unique_ptr<VisibilityBackend> oracle;
@@ -76,7 +90,7 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
     oracle = make_functional_answer(float_arith(o) ? o.arith : "fast", o.bits);
     board.oracle = oracle.get();
   }
-  parse_trace_steps(o.trace_steps, board);
+  if (board.trace) parse_trace_steps(o.trace_steps, board);
   board.on_progress = [&](const StepProgress& p) {
     progress.update("step %d, %.2f%% converged", p.step, 100.0 * p.convergence_reached);
   };
@@ -90,6 +104,7 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
                                      : "");
   out.visibility_tests = r.report.intersections.tests;
   out.board = std::move(r.report);
+  out.trace_json = std::move(r.trace_json);
   out.lanes_that_fit =
       float_arith(o)
           ? lanes_that_fit(board::find_device_profile(board.device), find_host_profile(board.host),
@@ -122,7 +137,8 @@ void print_board_summary(const RunReport& b) {
   }
 }
 
-void print_summary(const RunOptions& o, const Scene& scene, const RunOutcome& out, double wall) {
+void print_summary(const RunOptions& o, const Scene& scene, const RunOutcome& out, double wall,
+                   const std::vector<std::string>& written) {
   const SolverResult& r = out.solver;
   std::printf("rc2000sim run: %s\n", scene.name.c_str());
   std::printf("  scene        %zu faces, %zu patches\n", scene.faces.size(), scene.patches.size());
@@ -138,8 +154,7 @@ void print_summary(const RunOptions& o, const Scene& scene, const RunOutcome& ou
     std::printf("  sec 5.6      lanes that fit on %s\n", lanes_that_fit_line(*out.lanes_that_fit).c_str());
   }
   std::printf("  wall time    %.2f s\n", wall);
-  std::printf("  outputs      %s/report.json, patches.csv, image.png%s\n", o.out_dir.c_str(),
-              o.board.trace_path.empty() ? "" : (", " + o.board.trace_path).c_str());
+  std::printf("  wrote        %s\n", listed(written).c_str());
 }
 
 nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& prepared, const RunOutcome& out,
@@ -163,7 +178,7 @@ nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& pre
                                                                         : nlohmann::ordered_json()},
                         {"card_bus", o.impl == "board" && o.cards > 1 ? nlohmann::ordered_json(o.card_bus)
                                                                       : nlohmann::ordered_json()},
-                        {"bits", float_arith(o) ? nlohmann::ordered_json() : nlohmann::ordered_json(o.bits)},
+                        {"bits", uses_fixed_width(o) ? nlohmann::ordered_json(o.bits) : nlohmann::ordered_json()},
                         {"face_target", o.scene.face_target},
                         {"face_levels", o.scene.face_levels},
                         {"patch_levels", o.scene.patch_size > 0 ? nlohmann::ordered_json() : nlohmann::ordered_json(o.scene.patch_levels)},
@@ -185,22 +200,73 @@ nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& pre
   return report;
 }
 
+// The files a run writes, in the order written: report.json last, so that its presence means a
+// complete run.
+std::vector<std::string> output_paths(const RunOptions& o) {
+  std::vector<std::string> paths = {o.out_dir + "/patches.csv", o.out_dir + "/image.png"};
+  if (!o.trace_path.empty()) paths.push_back(o.trace_path);
+  if (!o.board.vcd_path.empty()) paths.push_back(o.board.vcd_path);
+  paths.push_back(o.out_dir + "/report.json");
+  return paths;
+}
+
 }  // namespace
 
+void check_run_options(const CLI::App& cmd, const RunOptions& o) {
+  if (o.impl != "board") {
+    refuse_given(cmd, {"--device", "--lanes", "--banks", "--concurrent", "--cards", "--card-split", "--card-bus",
+                       "--lanes-compute", "--host", "--trace", "--trace-steps", "--vcd"},
+                 "applies to --impl board only (the simulated RC2000); this run answers visibility in software");
+  } else {
+    refuse_given(cmd, {"--visibility"}, "applies to --impl software only: with --impl board the board's lanes answer "
+                                        "visibility (bit-exact at --bits, or --arith float:E,M)");
+  }
+  if (o.cards == 1) refuse_given(cmd, {"--card-split", "--card-bus"}, "applies only with more than one card (--cards)");
+  if (o.arith != "fixed") {
+    try {
+      (void)pipeline::parse_float_format(o.arith);  // a bad format names the value and the limits
+    } catch (const std::invalid_argument& e) {
+      refuse_option("--arith", o.arith + ": " + e.what());
+    }
+    refuse_given(cmd, {"--bits", "--visibility"},
+                 "does not apply with --arith " + o.arith +
+                     " (the float pipeline has no fractional width and is its own backend)");
+  } else if (o.impl != "board" && o.visibility == "float") {
+    refuse_given(cmd, {"--bits"}, "does not apply with --visibility float (double precision has no fractional width); "
+                                  "--visibility fixed or fast, or --impl board, use it");
+  }
+  if (o.trace_path.empty()) {
+    refuse_given(cmd, {"--trace-steps"}, "applies only with --trace (the steps it records)");
+  } else {
+    BoardRunOptions steps;
+    parse_trace_steps(o.trace_steps, steps);  // refuses a malformed range before any work
+  }
+}
+
 int run_simulation(const RunOptions& o) {
+  Outputs outputs;
+  for (const std::string& path : output_paths(o)) outputs.expect(path);  // before any work
+  // The profiles and the board they make (lanes, banks, layout), before the scene is prepared.
+  if (o.impl == "board") (void)make_board_setup(board_options(o));
   ProgressLine progress(!o.quiet);
   const PreparedScene prepared = prepare_scene(o.scene, [&](const std::string& what) { progress.update("%-60s", what.c_str()); });
   for (const std::string& w : prepared.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   const Scene& scene = prepared.scene;
-  std::filesystem::create_directories(o.out_dir);
 
-  const RunOutcome out = o.impl == "board" ? run_board(o, scene, progress) : run_software(o, scene, progress);
+  std::optional<TemporaryFile> vcd;  // SystemC writes it while simulating; moved into place at the end
+  if (!o.board.vcd_path.empty()) vcd.emplace(".vcd");
+  const RunOutcome out =
+      o.impl == "board" ? run_board(o, scene, progress, vcd ? vcd->path() : std::string()) : run_software(o, scene, progress);
+  const RgbImage image = tone_map(render_radiosity(scene, out.solver.radiosity, o.render), o.render.key);
   progress.finish();
 
-  write_json(o.out_dir + "/report.json", make_report(o, prepared, out, progress.seconds()));
-  write_patches_csv(o.out_dir + "/patches.csv", scene, out.solver.radiosity);
-  write_png(o.out_dir + "/image.png", tone_map(render_radiosity(scene, out.solver.radiosity, o.render), o.render.key));
-  print_summary(o, scene, out, progress.seconds());
+  outputs.add(o.out_dir + "/patches.csv", patches_csv(scene, out.solver.radiosity));
+  outputs.add(o.out_dir + "/image.png", encode_png(image));
+  if (!o.trace_path.empty()) outputs.add(o.trace_path, out.trace_json);
+  if (vcd) outputs.move_in(o.board.vcd_path, vcd->path());
+  outputs.add(o.out_dir + "/report.json", pretty_json(make_report(o, prepared, out, progress.seconds())));
+  outputs.write();
+  print_summary(o, scene, out, progress.seconds(), outputs.paths());
   return 0;
 }
 
@@ -242,7 +308,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
                 "Board: the lanes test every ray against every face (slow) instead of copying the bit-identical "
                 "culled answer; timing and results are the same");
   cmd->add_option("--host", b.host, "Board: host CPU profile, configs/hosts/NAME.json or a path")->capture_default_str();
-  cmd->add_option("--trace", b.trace_path, "Board: write a Chrome/Perfetto trace.json of --trace-steps");
+  cmd->add_option("--trace", options->trace_path, "Board: write a Chrome/Perfetto trace.json of --trace-steps");
   cmd->add_option("--trace-steps", options->trace_steps, "Board: steps to trace, FIRST:LAST")->capture_default_str();
   cmd->add_option("--vcd", b.vcd_path, "Board: write a VCD of start/busy/done/irq");
   cmd->add_option("--out", options->out_dir, "Output folder")->capture_default_str();
@@ -250,30 +316,13 @@ void add_run_command(CLI::App& app, int& exit_code) {
       ->check(CLI::Range(16, 8192))->capture_default_str();
   cmd->add_flag("--quiet", options->quiet, "No progress output");
   cmd->callback([options, solver, cmd, &exit_code] {
-    options->solver = solver->resolved();
+    options->solver = solver->resolved(*cmd);
     options->render.height = options->render.width;
-    if (options->impl != "board") {
-      for (const char* option : {"--cards", "--card-split", "--card-bus"}) {
-        if (cmd->count(option) > 0) {
-          throw CLI::ValidationError(option, "applies to --impl board only (cards of the simulated RC2000)");
-        }
-      }
-    }
-    if (options->cards == 1) {
-      for (const char* option : {"--card-split", "--card-bus"}) {
-        if (cmd->count(option) > 0) throw CLI::ValidationError(option, "applies only with more than one card (--cards)");
-      }
-    }
-    if (options->arith != "fixed") {
-      (void)pipeline::parse_float_format(options->arith);  // a bad format names the option's value and the limits
-      for (const char* option : {"--bits", "--visibility"}) {
-        if (cmd->count(option) > 0) {
-          throw CLI::ValidationError(option, "does not apply with --arith " + options->arith +
-                                                 " (the float pipeline has no fractional width and is its own backend)");
-        }
-      }
-    }
-    exit_code = run_simulation(*options);
+    check_run_options(*cmd, *options);
+    std::vector<std::string> where = {options->out_dir + "/"};
+    if (!options->trace_path.empty()) where.push_back(options->trace_path);
+    if (!options->board.vcd_path.empty()) where.push_back(options->board.vcd_path);
+    exit_code = run_guarded("run", listed(where), [&] { return run_simulation(*options); });
   });
 }
 

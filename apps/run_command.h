@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include <CLI/CLI.hpp>
+
 #include "platform/board_run.h"
 #include "radiosity/radiosity.h"
 #include "radiosity/render.h"
@@ -23,14 +25,19 @@ struct RunOptions {
   unsigned cards = 1;                // board: identical cards (--cards; BoardRunOptions::cards checks it)
   std::string card_split = "rays";   // board, several cards: rays | faces
   std::string card_bus = "shared";   // board, several cards: shared | separate
-  BoardRunOptions board;             // --impl board
+  BoardRunOptions board;             // --impl board (board.vcd_path: --vcd, where the VCD ends up)
+  std::string trace_path;            // --trace: the trace.json to write (board runs)
   std::string trace_steps = "1:3";   // A:B, steps written to the trace
   std::string out_dir = "out";
   RenderOptions render;
   bool quiet = false;
 };
 
-// Returns the process exit code.
+// Checks `options` against what `cmd` was given: options that do not apply to this run are refused
+// (CLI::ValidationError naming the option and why; docs/outputs.md, "Which options apply where").
+void check_run_options(const CLI::App& cmd, const RunOptions& options);
+
+// Computes the run, then writes its outputs (apps/outputs.h); returns the process exit code.
 int run_simulation(const RunOptions& options);
 
 }  // namespace rc

@@ -17,6 +17,7 @@
 #include <sstream>
 
 #include "apps/cli_options.h"
+#include "apps/outputs.h"
 #include "apps/plot.h"
 #include "apps/progress.h"
 #include "apps/report.h"
@@ -306,25 +307,39 @@ void print_scene(const Study& s, const SceneSweep& r, const std::vector<SweptFit
   for (const SweptFit& f : fits) std::printf("    %d-bit %s\n", f.bits, lanes_that_fit_line(f.estimates).c_str());
 }
 
-// Each scene's sweep.csv, sweep.json and plots: in `out` itself for a one-scene study, else in a
-// folder per scene; study.json beside them.
+// The folder of each scene's files: `out` itself for a one-scene study, else a folder per scene.
+std::string scene_dir(const Study& s, std::size_t i, const std::string& out) {
+  return s.scenes.size() == 1 ? out : out + "/" + s.scenes[i].name;
+}
+
+// Before any work: every file the study will write can be written.
+void expect_study_outputs(const Study& s, const std::string& out) {
+  Outputs outputs;
+  outputs.expect(out + "/study.json");
+  for (std::size_t i = 0; i < s.scenes.size(); ++i) outputs.expect(scene_dir(s, i, out) + "/sweep.csv");
+}
+
+// Each scene's sweep.csv and sweep.json, and study.json beside them (written last: its presence
+// means a complete study); then the summaries and the plots.
 void write_study(const StudyResult& r, const std::string& out, const ProgressLine& clock) {
-  std::filesystem::create_directories(out);
-  write_text_atomically(out + "/study.json", study_record(r));
   const std::vector<SweptFit> fits = swept_fits(r.study);
   const std::vector<std::string> extra = extra_columns(r.study.axes);
+  Outputs outputs;
   for (std::size_t i = 0; i < r.scenes.size(); ++i) {
-    const SceneSweep& scene = r.scenes[i];
-    const std::string dir = r.scenes.size() == 1 ? out : out + "/" + r.study.scenes[i].name;
-    std::filesystem::create_directories(dir);
+    const std::string dir = scene_dir(r.study, i, out);
     std::ostringstream csv;
-    write_sweep_csv(csv, scene.rows, extra);
-    write_text_atomically(dir + "/sweep.csv", csv.str());
-    write_text_atomically(dir + "/sweep.json", json_text(sweep_json(r.study, scene, fits)));
+    write_sweep_csv(csv, r.scenes[i].rows, extra);
+    outputs.add(dir + "/sweep.csv", csv.str());
+    outputs.add(dir + "/sweep.json", json_text(sweep_json(r.study, r.scenes[i], fits)));
+  }
+  outputs.add(out + "/study.json", study_record(r));
+  outputs.write();
+  for (std::size_t i = 0; i < r.scenes.size(); ++i) {
+    const std::string dir = scene_dir(r.study, i, out);
     if (i > 0) std::printf("\n");
-    print_scene(r.study, scene, fits);
-    plot("sweep.py", dir + "/sweep.csv", dir);
-    std::printf("\n  wrote %s/sweep.csv, sweep.json and plots\n", dir.c_str());
+    print_scene(r.study, r.scenes[i], fits);
+    const bool drawn = plot("sweep.py", dir + "/sweep.csv", dir);
+    std::printf("\n  wrote %s/sweep.csv, sweep.json%s\n", dir.c_str(), drawn ? " and plots" : "");
   }
   std::printf("  wrote %s/study.json (%.1f s in all)\n", out.c_str(), clock.seconds());
 }
@@ -338,11 +353,13 @@ int run_sweep(const SweepOptions& o, const Study& study) {
   auto report = [&](const std::string& what) { progress.update("%-70s", what.c_str()); };
   if (!o.shard.empty()) {
     const Shard shard = parse_shard(o.shard);
+    const std::string path = shard_path(o.out_dir, shard);
+    Outputs outputs;
+    outputs.expect(path);
     const ShardResult result = run_study_shard(study, shard, report);
     progress.finish();
-    std::filesystem::create_directories(o.out_dir);
-    const std::string path = shard_path(o.out_dir, shard);
-    write_text_atomically(path, shard_json(result).dump() + "\n");
+    outputs.add(path, shard_json(result).dump() + "\n");
+    outputs.write();
     std::printf("rc2000sim sweep: study %s, shard %s: %zu of %zu solve(s) (scene x width); wrote %s (%.1f s)\n",
                 study.name.c_str(), shard.text().c_str(), result.groups.size(), result.groups_in_study, path.c_str(),
                 progress.seconds());
@@ -350,6 +367,7 @@ int run_sweep(const SweepOptions& o, const Study& study) {
       std::printf("  this shard has no solve: the study has %zu, fewer than %u shards\n", result.groups_in_study, shard.count);
     return 0;
   }
+  expect_study_outputs(study, o.out_dir);
   const StudyResult result = run_study(study, report);
   progress.finish();
   write_study(result, o.out_dir, progress);
@@ -386,6 +404,9 @@ int run_list_fields(const Study& s) {
 
 // ---- merge ----------------------------------------------------------------------------------------
 
+// A shard holds a study's recorded steps: far more than a profile, far less than this.
+constexpr std::uint64_t kShardLimitBytes = 1ull << 30;
+
 bool is_shard_file(const std::filesystem::path& p) {
   static const std::regex name(R"(shard-[0-9]+-of-[0-9]+\.json)");
   return std::regex_match(p.filename().string(), name);
@@ -415,8 +436,10 @@ int run_merge(const MergeOptions& o) {
   ProgressLine progress(!o.quiet);
   const std::vector<std::string> files = shard_files(o.inputs);
   std::vector<ShardResult> shards;
-  for (const std::string& f : files) shards.push_back(shard_from_json(board::read_json_file(f), f));
+  for (const std::string& f : files)
+    shards.push_back(shard_from_json(board::read_json_file(f, kShardLimitBytes, "a shard file"), f));
   const StudyResult result = merge_shards(shards, files);
+  expect_study_outputs(result.study, o.out_dir);
   std::printf("rc2000sim sweep merge: study %s, %zu shard(s)\n", result.study.name.c_str(), shards.size());
   write_study(result, o.out_dir, progress);
   return 0;
@@ -431,7 +454,16 @@ void add_merge_command(CLI::App& sweep, int& exit_code) {
   cmd->add_option("--out", o->out_dir, "Output folder for sweep.csv, sweep.json, study.json and the plots")
       ->capture_default_str();
   cmd->add_flag("--quiet", o->quiet, "No progress output");
-  cmd->callback([o, &exit_code] { exit_code = run_merge(*o); });
+  cmd->callback([o, &sweep, &exit_code] {
+    // `sweep --lanes 3 merge ...`: the sweep's own options would be ignored; the shards carry the study.
+    for (const CLI::Option* option : sweep.get_options()) {
+      if (option->count() > 0 && option->get_name() != "--help") {
+        refuse_option(option->get_name(), "does not apply to sweep merge: the shards carry their study (merge takes "
+                                           "its own --out and --quiet, after 'merge')");
+      }
+    }
+    exit_code = run_guarded("sweep merge", o->out_dir + "/", [&] { return run_merge(*o); });
+  });
 }
 
 }  // namespace
@@ -450,7 +482,7 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
                   "width) or a step count")
       ->capture_default_str();
   cmd->add_option("--convergence", o->convergence, "Convergence target of --steps converge")
-      ->check(CLI::Range(0.0, 1.0))->capture_default_str();
+      ->check(convergence_target())->capture_default_str();
   cmd->add_option("--lanes", o->lanes, "Lane counts: list and ranges, e.g. 1-4,8")->capture_default_str();
   cmd->add_option("--banks", o->banks, "Bank counts: list and ranges")->capture_default_str();
   cmd->add_option("--bits", o->bits, "Fractional widths (7..31), list and ranges; each is solved once")
@@ -482,15 +514,20 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
   cmd->require_subcommand(0, 1);
   cmd->callback([o, cmd, &exit_code] {
     if (cmd->got_subcommand("merge")) return;  // merge ran its own callback
+    if (o->list_fields)
+      refuse_given(*cmd, {"--out", "--shard"}, "does not apply with --list-fields (it lists the fields and writes nothing)");
+    auto run = [&](const Study& study) {
+      if (o->list_fields) return run_list_fields(study);
+      return run_guarded("sweep", o->out_dir + "/", [&] { return run_sweep(*o, study); });
+    };
     if (!o->study_file.empty()) {
       for (const char* option : kStudyOptions) {
         if (cmd->count(option) > 0) {
-          throw std::invalid_argument(std::string(option) + " does not apply with --study: the study file " +
-                                      o->study_file + " sets the scenes, solver and axes (edit it instead)");
+          refuse_option(option, "does not apply with --study: the study file " + o->study_file +
+                                    " sets the scenes, solver and axes (edit it instead)");
         }
       }
-      const Study study = load_study_file(o->study_file);
-      exit_code = o->list_fields ? run_list_fields(study) : run_sweep(*o, study);
+      exit_code = run(load_study_file(o->study_file));
       return;
     }
     // A scene file is taken as it is unless refinement is asked for: the paper defaults are for
@@ -501,8 +538,7 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
       if (cmd->count("--face-levels") == 0) o->scene.face_levels = plain.face_levels;
       if (cmd->count("--patch-levels") == 0) o->scene.patch_levels = plain.patch_levels;
     }
-    const Study study = study_from_options(*o);
-    exit_code = o->list_fields ? run_list_fields(study) : run_sweep(*o, study);
+    exit_code = run(study_from_options(*o));
   });
 }
 

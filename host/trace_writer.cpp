@@ -1,7 +1,8 @@
 #include "host/trace_writer.h"
 
-#include <fstream>
 #include <stdexcept>
+
+#include "io/output_file.h"
 
 namespace rc {
 
@@ -34,7 +35,7 @@ void TraceWriter::instant(const std::string& track, const std::string& name, con
   events_.push_back(std::move(e));
 }
 
-void TraceWriter::write(const std::string& path) const {
+std::string TraceWriter::text() const {
   nlohmann::ordered_json events = nlohmann::ordered_json::array();
   events.push_back({{"name", "process_name"}, {"ph", "M"}, {"pid", 1}, {"args", {{"name", "rc2000sim"}}}});
   for (std::size_t i = 0; i < track_order_.size(); ++i) {
@@ -43,9 +44,9 @@ void TraceWriter::write(const std::string& path) const {
     events.push_back({{"name", "thread_sort_index"}, {"ph", "M"}, {"pid", 1}, {"tid", id}, {"args", {{"sort_index", id}}}});
   }
   for (const auto& e : events_) events.push_back(e);
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("cannot write trace " + path);
-  out << nlohmann::ordered_json{{"displayTimeUnit", "ns"}, {"traceEvents", events}}.dump() << "\n";
+  return nlohmann::ordered_json{{"displayTimeUnit", "ns"}, {"traceEvents", events}}.dump() + "\n";
 }
+
+void TraceWriter::write(const std::string& path) const { io::write_file_atomically(path, text()); }
 
 }  // namespace rc

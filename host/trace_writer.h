@@ -23,7 +23,8 @@ class TraceWriter {
   void instant(const std::string& track, const std::string& name, const sc_core::sc_time& at,
                nlohmann::ordered_json args = nullptr);
   std::size_t size() const { return events_.size(); }
-  void write(const std::string& path) const;  // throws std::runtime_error if the file cannot be written
+  std::string text() const;                   // the trace.json document
+  void write(const std::string& path) const;  // atomically (io/output_file.h); throws io::OutputFileError
 
  private:
   int track_id(const std::string& track);

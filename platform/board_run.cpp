@@ -44,7 +44,7 @@ BoardSetup make_board_setup(const BoardRunOptions& o) {
   s.driver.concurrent = o.concurrent;
   s.driver.allow_batching = o.allow_batching;
   s.driver.oracle = o.oracle;
-  if (!o.trace_path.empty()) {
+  if (o.trace) {
     s.trace_first_step = o.trace_first_step;
     s.trace_last_step = o.trace_last_step;
   }
@@ -356,8 +356,7 @@ BoardRunResult run_radiosity_on_board(const Scene& scene, const SolverOptions& s
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (vcd != nullptr) sc_core::sc_close_vcd_trace_file(vcd);
   system->rethrow_if_failed();
-  if (!options.trace_path.empty()) system->trace().write(options.trace_path);
-  return {system->result(), system->report(wall)};
+  return {system->result(), system->report(wall), options.trace ? system->trace().text() : std::string()};
 }
 
 }  // namespace rc

@@ -50,9 +50,14 @@ struct BoardRunOptions {
   bool concurrent = false;              // paper sec 4.3
   std::string host = "athlon-mp-2600";  // configs/hosts/NAME.json, or a path
   std::optional<HostProfile> host_profile;  // when set, this profile instead of `host` (calibration variants)
-  std::string trace_path;               // Chrome/Perfetto trace.json of steps trace_first..trace_last
+  // Record a Chrome/Perfetto trace of steps trace_first..trace_last: BoardRunResult::trace_json (the
+  // caller writes it, with its other outputs).
+  bool trace = false;
   int trace_first_step = 1, trace_last_step = 3;
-  std::string vcd_path;                 // VCD of start/busy/done/irq
+  // Where SystemC writes a VCD of start/busy/done/irq while the run simulates (empty: none). It is
+  // written as the simulation goes, so the run command points it at a temporary file and moves that
+  // into place with its other outputs when the run has succeeded.
+  std::string vcd_path;
   std::uint64_t bank_capacity_bytes = 0;  // 0: the profile's (tests force batching with small banks)
   bool allow_batching = true;
   board::WrapperModel model = board::WrapperModel::fast;  // cycle: tests on small scenes only
@@ -68,7 +73,8 @@ struct BoardRunOptions {
 
 struct BoardRunResult {
   SolverResult solver;
-  RunReport report;  // to_json(report) is the report.json document
+  RunReport report;        // to_json(report) is the report.json document
+  std::string trace_json;  // BoardRunOptions::trace: the trace.json document; else empty
 };
 
 // Throws std::invalid_argument for bad options (profiles, layout, width, capacity without

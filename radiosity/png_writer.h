@@ -1,4 +1,5 @@
-// 8-bit RGB PNG output through libpng.
+// 8-bit RGB PNG output through libpng: encoded in memory, then written atomically (io/output_file.h),
+// so a failed or interrupted write never leaves half a picture.
 #pragma once
 
 #include <cstdint>
@@ -13,7 +14,12 @@ struct RgbImage {
   std::vector<std::uint8_t> pixels;  // row-major, 3 bytes per pixel, top row first
 };
 
-// Throws std::runtime_error naming the path when the file cannot be written.
+// The PNG file's bytes. Throws std::runtime_error if libpng fails or the image's pixels do not
+// match its size.
+std::string encode_png(const RgbImage& image);
+
+// encode_png, then io::write_file_atomically. Throws io::OutputFileError naming the path when the
+// file cannot be written (and std::runtime_error as encode_png).
 void write_png(const std::string& path, const RgbImage& image);
 
 }  // namespace rc

@@ -66,7 +66,7 @@ def main(csv_path, png_path):
     right.grid(True, which="both", lw=0.3)
     right.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(png_path, dpi=120)
+    entry.save(fig, png_path, dpi=120)
 
 
 if __name__ == "__main__":

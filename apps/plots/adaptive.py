@@ -47,7 +47,7 @@ def main(csv_path, png_path):
     axes[0].legend(fontsize=7)
     fig.suptitle("Adaptive against uniform patches at equal patch count (labels: patches)", fontsize=10)
     fig.tight_layout()
-    fig.savefig(png_path, dpi=110)
+    entry.save(fig, png_path, dpi=110)
     plt.close(fig)
 
 

@@ -52,7 +52,7 @@ def main(csv_path, png_path):
         ax.grid(True, which="both", lw=0.3)
     axes[0].legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(png_path, dpi=110)
+    entry.save(fig, png_path, dpi=110)
 
 
 if __name__ == "__main__":

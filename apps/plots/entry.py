@@ -5,7 +5,20 @@
                         interpreter (and matplotlib's import, ~0.4 s) while it is still computing on
                         the other core, and sends the request when the CSV is written (apps/plot.h).
 """
+import os
 import sys
+
+
+def save(fig, path, **options):
+    """fig.savefig(path), atomically: a temporary file beside it, then a rename, so a reader never
+    sees half a picture and a drawing that fails leaves none (docs/outputs.md)."""
+    temporary = f"{path}.partial-{os.getpid()}"
+    try:
+        fig.savefig(temporary, format="png", **options)
+        os.replace(temporary, path)
+    finally:
+        if os.path.exists(temporary):
+            os.remove(temporary)
 
 
 def run(main, usage):

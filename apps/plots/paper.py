@@ -53,7 +53,7 @@ def table2(rows, out):
     ax.legend(fontsize=8)
     ax.grid(True, axis="y", which="both", lw=0.3)
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "table2.png"), dpi=110)
+    entry.save(fig, os.path.join(out, "table2.png"), dpi=110)
 
 
 def estimates(rows, out):
@@ -76,7 +76,7 @@ def estimates(rows, out):
     ax.set_title("Sec 5.6: intersection rates, the paper's rule and the model")
     ax.legend(handles=handles, fontsize=8, loc="lower right")
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "estimates.png"), dpi=110)
+    entry.save(fig, os.path.join(out, "estimates.png"), dpi=110)
 
 
 def main(csv_path, out):

@@ -107,7 +107,7 @@ def lanes_plot(rows, bits, drv, out):
     fig.suptitle(f"Simulated and FPGA busy time against lanes ({bits}-bit, {drv} driver); marker: bottleneck",
                  fontsize=10)
     fig.tight_layout(rect=(0, 0, 1 - legend_inches / width, 0.95))
-    fig.savefig(os.path.join(out, f"lanes_b{bits}_{drv}.png"), dpi=110)
+    entry.save(fig, os.path.join(out, f"lanes_b{bits}_{drv}.png"), dpi=110)
     plt.close(fig)
 
 
@@ -162,7 +162,7 @@ def heatmap(rows, device, bits, drv, out):
         note += f"\nnot shown: {len(lanes) - len(fits)} lane count(s) that do not fit the device"
     fig.text(0.01, 0.005, note, fontsize=6, va="bottom", wrap=True)
     fig.tight_layout(rect=(0, 0.06, 1, 1))
-    fig.savefig(os.path.join(out, f"heatmap_{slug(device)}_b{bits}_{drv}.png"), dpi=110)
+    entry.save(fig, os.path.join(out, f"heatmap_{slug(device)}_b{bits}_{drv}.png"), dpi=110)
     plt.close(fig)
 
 
@@ -221,7 +221,7 @@ def axis_plot(rows, axis, extras, out):
     ax.legend(handles=handles, fontsize=7)
     ax.set_title(f"The fastest configuration against {axis}; marker: its bottleneck", fontsize=10)
     fig.tight_layout()
-    fig.savefig(os.path.join(out, f"axis_{slug(axis)}.png"), dpi=110)
+    entry.save(fig, os.path.join(out, f"axis_{slug(axis)}.png"), dpi=110)
     plt.close(fig)
 
 

@@ -275,7 +275,7 @@ TEST(MultiCard, ReportHasPerCardFiguresAndTheTraceATrackPerCard) {
   const Scene scene = small_cornell_box();
   BoardRunOptions o = cards(2, CardSplit::faces, CardBus::shared);
   o.concurrent = true;
-  o.trace_path = "unused";  // make_board_setup takes the step range only when a trace is asked for
+  o.trace = true;  // make_board_setup takes the step range only when a trace is asked for
   o.trace_first_step = 1;
   o.trace_last_step = 2;
   BoardSystem s("board", scene, steps(3), setup(o));

@@ -169,14 +169,15 @@ TEST(BoardSystem, CycleLevelModelMatchesFastModelInTheSolver) {
   }
 }
 
-// The runner: report, trace and VCD files; once per process.
-TEST(BoardRunner, WritesReportTraceAndVcd) {
+// The runner: the report, the trace document (the caller writes it) and the VCD SystemC writes as it
+// simulates; once per process.
+TEST(BoardRunner, ReportsTraceAndWritesVcd) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("rc_board_runner_" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
   BoardRunOptions o;
   o.lanes = 2;
   o.concurrent = true;
-  o.trace_path = (dir / "trace.json").string();
+  o.trace = true;
   o.trace_first_step = 2;
   o.trace_last_step = 3;
   o.vcd_path = (dir / "signals.vcd").string();
@@ -196,8 +197,7 @@ TEST(BoardRunner, WritesReportTraceAndVcd) {
   EXPECT_EQ(report["banks"][5]["role"], "own-face table");
   EXPECT_GT(report["intersections"]["tests"].get<double>(), 0);
 
-  std::ifstream trace_file(o.trace_path);
-  const nlohmann::json trace = nlohmann::json::parse(trace_file);
+  const nlohmann::json trace = nlohmann::json::parse(r.trace_json);
   std::set<std::string> tracks;
   for (const auto& e : trace["traceEvents"])
     if (e["name"] == "thread_name") tracks.insert(e["args"]["name"].get<std::string>());

@@ -1,0 +1,129 @@
+#!/usr/bin/env bash
+# rc2000sim refuses bad profiles, options that do not apply and unwritable outputs (issue 15;
+# docs/outputs.md, "Which options apply where" and "When a command fails"; docs/board.md, "Profiles"):
+# each bad input exits non-zero (1 or CLI11's 105, never a signal: 128+), says what is wrong (the
+# message checked), and leaves no output file or folder behind. The good paths still exit 0 and
+# leave no temporary file. Every case is refused before any solve, so the whole test takes seconds.
+# usage: cli_errors_test.sh RC2000SIM REPO_ROOT
+set -euo pipefail
+sim="$1"
+root="$2"
+work="$(mktemp -d "${TMPDIR:-/tmp}/cli-errors-test.XXXXXX")"
+trap 'rm -rf "$work"' EXIT
+export SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1
+fail() { echo "FAIL: $*" >&2; exit 1; }
+cases=0
+
+# refused OUT EXPECTED-TEXT ARGS...: rc2000sim ARGS must fail (not by a signal), say EXPECTED-TEXT on
+# stderr, print no "wrote" on stdout, and leave nothing at OUT.
+refused() {
+  local out="$1" expected="$2"; shift 2
+  local rc=0
+  "$sim" "$@" > "$work/stdout.txt" 2> "$work/stderr.txt" || rc=$?
+  [ "$rc" -ne 0 ] || fail "accepted: $*"
+  [ "$rc" -lt 128 ] || { cat "$work/stderr.txt" >&2; fail "killed by signal $((rc - 128)): $*"; }
+  grep -qF -- "$expected" "$work/stderr.txt" || { cat "$work/stderr.txt" >&2; fail "'$expected' not in the error of: $*"; }
+  ! grep -q "wrote" "$work/stdout.txt" || fail "says it wrote something: $*"
+  [ ! -e "$out" ] || fail "left $out behind: $*"
+  cases=$((cases + 1))
+}
+
+# A copy of a shipped profile with one change: profile KIND NAME OUT PYTHON-STATEMENT (on p).
+profile() {
+  python3 - "$root/configs/$1/$2.json" "$3" "$4" <<'PY'
+import json, sys
+p = json.load(open(sys.argv[1]))
+exec(sys.argv[3])
+json.dump(p, open(sys.argv[2], "w"), indent=2)
+PY
+}
+device() { profile devices xc2v6000 "$work/$1.json" "$2"; }
+
+tiny=(--faces 0 --face-levels 0 --patch-levels 0 --steps 3 --image-size 16 --quiet)
+board=(run --impl board "${tiny[@]}")
+
+echo "1. device and host profiles, against the limits the model derives"
+device small 'p["banks"]["capacity_bytes"]["value"] = 16'
+refused "$work/o" "small.json: banks.capacity_bytes = 16 is smaller than one face record and its own-face table entry (40 bytes" \
+  "${board[@]}" --device "$work/small.json" --out "$work/o"
+refused "$work/o" "rc2000sim run: failed: " "${board[@]}" --device "$work/small.json" --out "$work/o"
+refused "$work/o" "nothing written to $work/o/" "${board[@]}" --device "$work/small.json" --out "$work/o"
+refused "$work/o" "banks.capacity_bytes = 16 is smaller than one face record" \
+  sweep --devices "$work/small.json" --faces 0 --face-levels 0 --patch-levels 0 --steps 3 --lanes 1 --banks 6 --quiet --out "$work/o"
+device parts 'p["banks"]["capacity_bytes"]["value"] = 4194305'
+refused "$work/o" "banks.capacity_bytes = 4194305 is not a whole number of 4-byte words" \
+  "${board[@]}" --device "$work/parts.json" --out "$work/o"
+device huge 'p["banks"]["capacity_bytes"]["value"] = 2**40'
+refused "$work/o" "banks.capacity_bytes = 1099511627776 is larger than the wrapper can address (171798691800 bytes" \
+  "${board[@]}" --device "$work/huge.json" --out "$work/o"
+device lanes 'p["clock"]["mhz_by_lanes"]["2abc"] = p["clock"]["mhz_by_lanes"].pop("2")'
+refused "$work/o" "lanes.json: clock.mhz_by_lanes.2abc: key must be a lane count, a whole number 1..255" \
+  "${board[@]}" --device "$work/lanes.json" --lanes 2 --out "$work/o"
+device typo 'p["banks"]["clock_mhzz"] = p["banks"]["clock_mhz"]'
+refused "$work/o" "typo.json: banks.clock_mhzz: unknown key (known in banks:" \
+  "${board[@]}" --device "$work/typo.json" --out "$work/o"
+device four 'p["banks"]["count"]["value"] = 4'
+refused "$work/o" "banks.count = 4 is fewer than the 5 banks the wrapper needs" \
+  "${board[@]}" --device "$work/four.json" --out "$work/o"
+device slow 'p["banks"]["clock_mhz"]["value"] = 0'
+refused "$work/o" "slow.json: banks.clock_mhz: value 0 is outside" "${board[@]}" --device "$work/slow.json" --out "$work/o"
+profile hosts athlon-mp-2600 "$work/host.json" 'p["driver_seconds"]["word_stor"] = p["driver_seconds"]["word_store"]'
+refused "$work/o" "host.json: driver_seconds.word_stor: unknown key" \
+  "${board[@]}" --host "$work/host.json" --out "$work/o"
+printf '[[scenes]]\npaper = { faces = 70, patches = 280 }\n[axes]\ndevices = ["xc2v6000"]\n"banks.capacity_bytes" = [16]\n' \
+  > "$work/capacity.toml"
+refused "$work/o" "banks.capacity_bytes=16 (study $work/capacity.toml): banks.capacity_bytes = 16 is smaller than one face record" \
+  sweep --study "$work/capacity.toml" --quiet --out "$work/o"
+
+echo "2. options that do not apply"
+for option in "--lanes 2" "--banks 6" "--concurrent" "--device xc2v6000" "--host athlon-mp-2600" "--trace $work/t.json" \
+              "--vcd $work/v.vcd" "--cards 2" "--lanes-compute"; do
+  # shellcheck disable=SC2086  # the option and its value are two words
+  refused "$work/o" "${option%% *} applies to --impl board only" run "${tiny[@]}" $option --out "$work/o"
+done
+refused "$work/o" "--visibility applies to --impl software only" "${board[@]}" --visibility fixed --out "$work/o"
+refused "$work/o" "--bits does not apply with --visibility float" run "${tiny[@]}" --bits 12 --out "$work/o"
+refused "$work/o" "--bits does not apply with --arith float:5,10" run "${tiny[@]}" --arith float:5,10 --bits 12 --out "$work/o"
+refused "$work/o" "--steps must be at least 1; omit it to run to convergence" run --steps 0 --quiet --out "$work/o"
+refused "$work/o" "--steps must be at least 1; omit it to run to convergence" accuracy --steps 0 --quiet --out "$work/o"
+refused "$work/o" "--convergence does not apply with --steps" run --steps 5 --convergence 0.9 --quiet --out "$work/o"
+refused "$work/o" "1 is not strictly between 0 and 1" run --convergence 1 --quiet --out "$work/o"
+refused "$work/o" "--trace-steps applies only with --trace" "${board[@]}" --trace-steps 1:2 --out "$work/o"
+refused "$work/o" "--trace-steps expects FIRST:LAST, e.g. 1:3, got '1x:3'" \
+  "${board[@]}" --trace "$work/t.json" --trace-steps 1x:3 --out "$work/o"
+refused "$work/o" "--card-split applies only with more than one card" "${board[@]}" --card-split faces --out "$work/o"
+refused "$work/o" "--patch-levels does not apply to bench" bench --patch-levels 2 --quiet --out "$work/o"
+refused "$work/o" "--patch-size does not apply to adaptive" adaptive --patch-size 0.1 --quiet --out "$work/o"
+refused "$work/o" "--out does not apply with --list-fields" sweep --list-fields --out "$work/o"
+refused "$work/o" "--lanes does not apply to sweep merge" sweep --lanes 2 merge "$work" --out "$work/o"
+refused "$work/o" "--shard: expected I/N" sweep --study "$root/tests/studies/data/small.toml" --shard 1x/3 --out "$work/o"
+refused "$work/o" "--lanes does not apply with --study" sweep --study "$root/tests/studies/data/small.toml" --lanes 2 --out "$work/o"
+
+echo "3. outputs that cannot be written: refused before any work, nothing written, no 'wrote'"
+refused "$work/nothing" "/dev/full: exists and is not a regular file; not replaced" \
+  calibrate --out /dev/full --variants-out "$work/nothing/v.json" --quiet
+touch "$work/file"
+refused "$work/file/x.json" "$work/file/x.json: cannot be written: $work/file is not a folder" \
+  calibrate --out "$work/file/x.json" --variants-out "$work/file/v.json" --quiet
+refused "$work/file/o" "is not a folder; nothing written to $work/file/o/" run "${tiny[@]}" --out "$work/file/o"
+refused "$work/o" "$work/o/report.json: named twice among this command's outputs" \
+  "${board[@]}" --trace "$work/o/report.json" --out "$work/o"
+mkdir "$work/t"
+refused "$work/o" "$work/t: exists and is not a regular file; not replaced" "${board[@]}" --trace "$work/t" --out "$work/o"
+rmdir "$work/t"
+
+echo "4. good paths still work and leave no temporary file"
+"$sim" run "${tiny[@]}" --out "$work/soft" > /dev/null || fail "a software run failed"
+"$sim" "${board[@]}" --lanes 2 --trace "$work/board/trace.json" --vcd "$work/board/signals.vcd" --out "$work/board" \
+  > "$work/stdout.txt" || fail "a board run failed"
+grep -q "wrote .*report.json" "$work/stdout.txt" || fail "the board run does not say what it wrote"
+for f in soft/report.json soft/patches.csv soft/image.png board/report.json board/trace.json board/signals.vcd; do
+  [ -s "$work/$f" ] || fail "$f missing or empty"
+done
+python3 -c "import json, sys; r = json.load(open(sys.argv[1])); sys.exit(r['settings']['bits'] is not None)" \
+  "$work/soft/report.json" || fail "a float-visibility run records a fractional width"
+! find "$work" -name '*.partial-*' | grep -q . || fail "a temporary file was left: $(find "$work" -name '*.partial-*')"
+"$sim" sweep --devices xc2v6000 --faces 0 --face-levels 0 --patch-levels 0 --steps 3 --lanes 1-2 --banks 6 --quiet \
+  --out "$work/sweep" > /dev/null || fail "a sweep failed"
+[ -s "$work/sweep/sweep.csv" ] && [ -s "$work/sweep/study.json" ] || fail "the sweep wrote no sweep.csv or study.json"
+echo "PASS: $cases refusals, each with its message and nothing written; the good paths write their files"

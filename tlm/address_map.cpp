@@ -1,5 +1,6 @@
 #include "tlm/address_map.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace rc::tlmx {
@@ -28,6 +29,20 @@ std::optional<Decoded> AddressMap::decode(std::uint64_t address, std::uint64_t b
     return Decoded{&w, offset};
   }
   return std::nullopt;
+}
+
+std::optional<AddressMap::Gap> AddressMap::gap(std::uint64_t address) const {
+  Gap g{0, UINT64_MAX};
+  for (const AddressWindow& w : m_windows) {
+    if (w.base > address) {
+      g.last = std::min(g.last, w.base - 1);
+    } else if (last(w) < address) {
+      g.first = std::max(g.first, last(w) + 1);
+    } else {
+      return std::nullopt;  // mapped
+    }
+  }
+  return g;
 }
 
 }  // namespace rc::tlmx

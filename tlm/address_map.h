@@ -32,6 +32,15 @@ class AddressMap {
   // edge does not decode: it would otherwise reach two targets with one transaction.
   std::optional<Decoded> decode(std::uint64_t address, std::uint64_t bytes) const;
 
+  // The unmapped range around an address that no window holds: [first, last], bounded by the
+  // neighbouring windows (or by 0 and 2^64 - 1). Nothing if a window holds the address. An
+  // interconnect refusing DMI there states this range, so the initiator need not ask again inside it.
+  struct Gap {
+    std::uint64_t first = 0;
+    std::uint64_t last = 0;
+  };
+  std::optional<Gap> gap(std::uint64_t address) const;
+
   const std::vector<AddressWindow>& windows() const { return m_windows; }
 
  private:

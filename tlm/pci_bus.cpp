@@ -13,16 +13,19 @@ constexpr const char* kMsgType = "rc/tlmx/PciBus";
 }
 
 PciBus::PciBus(const sc_core::sc_module_name& name, const PciBusConfig& config)
-    : sc_core::sc_module(name), in("in"), out("out"), m_config(config) {
+    : sc_core::sc_module(name), in("in"), out("out"), m_config(config), m_peq("responses", this, &PciBus::deliver) {
   if (m_config.width_bits == 0 || m_config.width_bits % 8 != 0)
     SC_REPORT_ERROR(kMsgType, "width_bits must be a positive multiple of 8 (PCI: 32 or 64)");
   if (!(m_config.burst_efficiency > 0.0 && m_config.burst_efficiency <= 1.0))
     SC_REPORT_ERROR(kMsgType, "burst_efficiency must be in (0, 1]");
   if (m_config.max_burst_bytes == 0) SC_REPORT_ERROR(kMsgType, "max_burst_bytes must be positive");
-  // get_direct_mem_ptr is deliberately not registered: the socket's default answers "no DMI
-  // anywhere", which is what a timed, arbitrated bus must say.
   in.register_b_transport(this, &PciBus::b_transport);
+  in.register_nb_transport_fw(this, &PciBus::nb_transport_fw);
   in.register_transport_dbg(this, &PciBus::transport_dbg);
+  in.register_get_direct_mem_ptr(this, &PciBus::get_direct_mem_ptr);
+  out.register_invalidate_direct_mem_ptr(this, &PciBus::invalidate_direct_mem_ptr);
+  SC_HAS_PROCESS(PciBus);
+  SC_THREAD(carry_requests_thread);
 }
 
 void PciBus::map(std::uint64_t base, std::uint64_t size, unsigned port, const std::string& name) {
@@ -75,24 +78,135 @@ sc_core::sc_time PciBus::master_abort(tlm::tlm_generic_payload& trans) {
   return cycles(m_config.master_abort_cycles, m_config.clock_period);
 }
 
-void PciBus::b_transport(int port, tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) {
-  const sc_core::sc_time request = sc_core::sc_time_stamp() + delay;
-  const std::uint64_t bytes = trans.get_data_length();
-  const std::optional<Decoded> hit = m_map.decode(trans.get_address(), bytes);
+// The bus's own time for the payload, before the target's wait states.
+sc_core::sc_time PciBus::bus_time(const tlm::tlm_generic_payload& trans) const {
+  const std::uint64_t bytes = trans.get_command() == tlm::TLM_IGNORE_COMMAND ? 0 : trans.get_data_length();
+  const ProgrammedIoExtension* pio = trans.get_extension<ProgrammedIoExtension>();
+  return pio != nullptr ? programmed_io_time(bytes, pio->access_bytes, trans.is_read(), pio->read_round_trip)
+                        : transfer_time(bytes);
+}
+
+// One transaction, LT or AT alike: arbitration at `request`, the target's call, the counters.
+PciBus::Carried PciBus::carry(int port, tlm::tlm_generic_payload& trans, const sc_core::sc_time& request) {
+  const std::optional<Decoded> hit = m_map.decode(trans.get_address(), trans.get_data_length());
   sc_core::sc_time& bus_free_at = m_arbiter->m_bus_free_at;
   const sc_core::sc_time start = std::max(request, bus_free_at);
-  const ProgrammedIoExtension* pio = trans.get_extension<ProgrammedIoExtension>();
-  const sc_core::sc_time bus_time =
-      pio != nullptr ? programmed_io_time(bytes, pio->access_bytes, trans.is_read(), pio->read_round_trip)
-                     : transfer_time(bytes);
-  const sc_core::sc_time occupancy = hit ? std::max(bus_time, forward(trans, *hit, start)) : master_abort(trans);
+  const sc_core::sc_time occupancy = hit ? std::max(bus_time(trans), forward(trans, *hit, start)) : master_abort(trans);
   bus_free_at = start + occupancy;
   PciInitiatorReport& c = counters(port);
   count(c, trans, occupancy, start - request);
   if (!hit) ++c.address_errors;
+  return {start, start + occupancy};
+}
+
+void PciBus::b_transport(int port, tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) {
+  carry_queued_requests();  // AT requests that arrived before this call go first
+  const Carried carried = carry(port, trans, sc_core::sc_time_stamp() + delay);
   // A target that called wait() may have moved simulated time past the completion time.
   const sc_core::sc_time now = sc_core::sc_time_stamp();
-  delay = bus_free_at > now ? bus_free_at - now : sc_core::SC_ZERO_TIME;
+  delay = carried.end > now ? carried.end - now : sc_core::SC_ZERO_TIME;
+}
+
+// ---- approximately timed ----
+
+PciBus::AtPort& PciBus::at_port(int port) {
+  if (static_cast<std::size_t>(port) >= m_at_ports.size()) m_at_ports.resize(port + 1);
+  return m_at_ports[port];
+}
+
+void PciBus::protocol_error(int port, const std::string& what) const {
+  const std::string msg = std::string(name()) + ": in[" + std::to_string(port) + "]: " + what;
+  SC_REPORT_ERROR(kMsgType, msg.c_str());
+}
+
+tlm::tlm_sync_enum PciBus::nb_transport_fw(int port, tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase,
+                                           sc_core::sc_time& delay) {
+  if (phase == tlm::BEGIN_REQ) {
+    AtPort& p = at_port(port);
+    if (p.request_open) protocol_error(port, "BEGIN_REQ before the END_REQ of the previous request (exclusion rule)");
+    p.request_open = true;
+    if (trans.has_mm()) trans.acquire();
+    m_at_port_of[&trans] = port;
+    m_requests.push_back({port, &trans, sc_core::sc_time_stamp() + delay});
+    m_request_arrived.notify();  // immediate: carried in this evaluation phase, before time moves
+    return tlm::TLM_ACCEPTED;
+  }
+  if (phase == tlm::END_RESP) {
+    if (at_port(port).responding != &trans) protocol_error(port, "END_RESP for a transaction without an open response");
+    end_response_at(port, trans, delay);
+    return tlm::TLM_COMPLETED;
+  }
+  std::ostringstream what;
+  what << "phase " << phase << " is not a forward phase of the base protocol";
+  protocol_error(port, what.str());
+  return tlm::TLM_COMPLETED;
+}
+
+void PciBus::carry_requests_thread() {
+  for (;;) {
+    sc_core::wait(m_request_arrived);
+    carry_queued_requests();
+  }
+}
+
+// Carries the queued AT requests in arrival order (always from a thread: targets get b_transport),
+// sends END_REQ at each one's start and schedules its BEGIN_RESP at its end.
+void PciBus::carry_queued_requests() {
+  while (!m_requests.empty()) {
+    const AtRequest r = m_requests.front();
+    m_requests.pop_front();
+    const Carried carried = carry(r.port, *r.trans, r.request);
+    at_port(r.port).request_open = false;
+    const sc_core::sc_time now = sc_core::sc_time_stamp();
+    tlm::tlm_phase phase = tlm::END_REQ;
+    sc_core::sc_time delay = carried.start > now ? carried.start - now : sc_core::SC_ZERO_TIME;
+    const tlm::tlm_sync_enum answer = in[r.port]->nb_transport_bw(*r.trans, phase, delay);
+    if (answer == tlm::TLM_COMPLETED) {  // the initiator ended the transaction early: no response
+      m_at_port_of.erase(r.trans);
+      if (r.trans->has_mm()) r.trans->release();
+      continue;
+    }
+    if (answer != tlm::TLM_ACCEPTED) protocol_error(r.port, "END_REQ must be answered TLM_ACCEPTED or TLM_COMPLETED");
+    m_peq.notify(*r.trans, tlm::BEGIN_RESP, carried.end > now ? carried.end - now : sc_core::SC_ZERO_TIME);
+  }
+}
+
+void PciBus::deliver(tlm::tlm_generic_payload& trans, const tlm::tlm_phase& phase) {
+  const int port = m_at_port_of.at(&trans);
+  if (phase == tlm::END_RESP) return response_ended(port, trans);
+  AtPort& p = at_port(port);
+  if (p.responding != nullptr) {
+    p.due.push_back(&trans);  // BEGIN_RESP exclusion: after the open response's END_RESP
+  } else {
+    send_response(port, trans);
+  }
+}
+
+void PciBus::send_response(int port, tlm::tlm_generic_payload& trans) {
+  at_port(port).responding = &trans;
+  tlm::tlm_phase phase = tlm::BEGIN_RESP;
+  sc_core::sc_time delay = sc_core::SC_ZERO_TIME;
+  const tlm::tlm_sync_enum answer = in[port]->nb_transport_bw(trans, phase, delay);
+  if (answer == tlm::TLM_ACCEPTED) return;  // END_RESP comes on the forward path
+  if (answer == tlm::TLM_UPDATED && phase != tlm::END_RESP) protocol_error(port, "BEGIN_RESP updated to a phase other than END_RESP");
+  end_response_at(port, trans, delay);
+}
+
+// END_RESP at sc_time_stamp() + delay: the port's next response may go from then on.
+void PciBus::end_response_at(int port, tlm::tlm_generic_payload& trans, const sc_core::sc_time& delay) {
+  if (delay == sc_core::SC_ZERO_TIME) return response_ended(port, trans);
+  m_peq.notify(trans, tlm::END_RESP, delay);
+}
+
+void PciBus::response_ended(int port, tlm::tlm_generic_payload& trans) {
+  AtPort& p = at_port(port);
+  p.responding = nullptr;
+  m_at_port_of.erase(&trans);
+  if (trans.has_mm()) trans.release();  // may free the payload: not touched after this
+  if (p.due.empty()) return;
+  tlm::tlm_generic_payload* next = p.due.front();
+  p.due.pop_front();
+  send_response(port, *next);
 }
 
 unsigned int PciBus::transport_dbg(int, tlm::tlm_generic_payload& trans) {
@@ -108,6 +222,19 @@ unsigned int PciBus::transport_dbg(int, tlm::tlm_generic_payload& trans) {
   trans.set_data_length(length);
   return done;
 }
+
+// Refused everywhere: every PCI access must be arbitrated and timed. The descriptor states the
+// range the refusal holds for, the whole address space, with no access granted.
+bool PciBus::get_direct_mem_ptr(int, tlm::tlm_generic_payload&, tlm::tlm_dmi& dmi) {
+  dmi.set_dmi_ptr(nullptr);
+  dmi.allow_none();
+  dmi.set_start_address(0);
+  dmi.set_end_address(~sc_dt::uint64{0});
+  return false;
+}
+
+// The bus never passes a DMI grant to its initiators, so a target's invalidation concerns nobody.
+void PciBus::invalidate_direct_mem_ptr(int, sc_dt::uint64, sc_dt::uint64) {}
 
 void PciBus::share_arbitration_with(PciBus& owner) {
   if (sc_core::sc_get_status() != sc_core::SC_ELABORATION && sc_core::sc_get_status() != sc_core::SC_BEFORE_END_OF_ELABORATION) {

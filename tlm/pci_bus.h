@@ -1,6 +1,7 @@
-// A shared PCI bus as a loosely-timed TLM-2.0 interconnect: any number of initiators (host driver,
-// DMA engines, other cards) bind to `in`; BAR windows route each transaction to one of the targets
-// bound to `out`; the bus is one shared resource, so transfers are serialised and timed.
+// A shared PCI bus as a TLM-2.0 interconnect for loosely-timed (b_transport) and approximately-timed
+// (nb_transport, base protocol) initiators: any number of initiators (host driver, DMA engines,
+// other cards) bind to `in`; BAR windows route each transaction to one of the targets bound to
+// `out`; the bus is one shared resource, so transfers are serialised and timed.
 //
 // Timing (W = width_bits / 8 bytes per data phase, E = burst_efficiency in (0, 1], S = setup_cycles,
 // M = max_burst_bytes, P = clock_period). A transaction of n bytes is carried as
@@ -9,6 +10,7 @@
 //   burst_cycles(b)  = S + ceil(ceil(b / W) / E)
 //   transfer_time(n) = (sum of burst_cycles over the bursts) * P
 // ceil(x / E) takes x / E within a relative 1e-9 of an integer as that integer (see timing.h).
+// A TLM_IGNORE_COMMAND moves no data whatever its length: it is timed as n = 0.
 // The target behind the window is called with the transaction's start on the bus as its delay
 // (start - sc_time_stamp(), see Arbitration), so a target with side effects (registers) can time
 // them at the access; it adds its own delay D_t, wait states that overlap the bus data phases, so
@@ -19,9 +21,10 @@
 // An unmapped address is a master abort: occupancy = master_abort_cycles * P and
 // TLM_ADDRESS_ERROR_RESPONSE.
 //
-// Arbitration: first come, first served in the order b_transport is called, with the bus reserved
-// at call time. With request = sc_time_stamp() + delay (the initiator's local time, so temporal
-// decoupling is honoured) and bus_free_at the end of the last reservation:
+// Arbitration: first come, first served in the order transactions reach the bus (b_transport
+// calls and BEGIN_REQs), with the bus reserved on arrival. With request = sc_time_stamp() + delay
+// (the initiator's local time, so temporal decoupling is honoured) and bus_free_at the end of the
+// last reservation:
 //   start       = max(request, bus_free_at)
 //   wait        = start - request                     (counted per initiator)
 //   bus_free_at = start + occupancy
@@ -32,23 +35,43 @@
 // their local offset) before each transfer; DmaEngine does whenever its quantum keeper asks, which
 // is before every burst with the default global quantum of zero.
 //
+// Approximately timed (base protocol, BEGIN_REQ -> END_REQ -> BEGIN_RESP -> END_RESP): a BEGIN_REQ
+// at sc_time_stamp() + delay is the same request as a b_transport with that delay. The bus answers
+// TLM_ACCEPTED and carries it, in arrival order, from its own thread (or from the next b_transport
+// caller, whichever runs first, so no later b_transport overtakes it): the same arbitration, the
+// same target call, the same occupancy and counters. END_REQ goes back (nb_transport_bw, annotated)
+// at `start`, when the bus takes the transaction; BEGIN_RESP at start + occupancy, the time a
+// b_transport would have returned. Per `in` port one response is open at a time (response
+// exclusion rule): a response that is due while the initiator still holds the previous one
+// (TLM_ACCEPTED, END_RESP later) waits for its END_RESP. A second BEGIN_REQ on a port before the
+// END_REQ of the first breaks the request exclusion rule (SC_REPORT_ERROR). The bus acquires a
+// payload with a memory manager from BEGIN_REQ to the end of its response and releases it then.
+// Towards the targets the bus always calls b_transport (always from a thread): it must know a
+// target's wait states when it reserves itself, so targets behind a PciBus must not wait() in
+// b_transport (none of the parts here do; LT-only targets on simple_target_sockets are fine).
+//
 // Shared arbitration (several cards on one bus): each card keeps its own PciBus (its BAR windows,
 // its counters), and share_arbitration_with(owner) makes this bus use the owner's bus_free_at, so a
 // transfer on any of the buses waits for every other one exactly as the policy above says, as if
 // they were one bus. Without it nothing changes.
 //
-// Only b_transport and transport_dbg are offered: DMI is refused (every PCI access must be
-// arbitrated and timed), and nb_transport (AT) is not modelled.
+// Byte enables and streaming width pass to the target untouched. transport_dbg is routed (clipped
+// to the window, no time). DMI is refused everywhere (every PCI access must be arbitrated and
+// timed): get_direct_mem_ptr returns false with DMI_ACCESS_NONE over [0, 2^64 - 1], the whole
+// range the refusal holds for, and forwarded transactions come back with the DMI hint cleared.
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include <systemc>
 #include <tlm>
 #include <tlm_utils/multi_passthrough_initiator_socket.h>
 #include <tlm_utils/multi_passthrough_target_socket.h>
+#include <tlm_utils/peq_with_cb_and_phase.h>
 
 #include "tlm/address_map.h"
 
@@ -66,7 +89,7 @@ struct PciBusConfig {
 
 // Counters of one initiator port (or of all, in PciBusReport::total).
 struct PciInitiatorReport {
-  std::uint64_t transactions = 0;    // b_transport calls, including failed ones
+  std::uint64_t transactions = 0;    // b_transport calls and AT requests, including failed ones
   std::uint64_t bytes_written = 0;   // initiator -> target (successful writes)
   std::uint64_t bytes_read = 0;      // target -> initiator (successful reads)
   sc_core::sc_time busy = sc_core::SC_ZERO_TIME;  // bus occupancy of this initiator's transfers
@@ -110,17 +133,51 @@ class PciBus : public sc_core::sc_module {
   std::string summary() const;
 
  private:
+  // When a transaction is on the bus: from start (the grant) to end = start + occupancy.
+  struct Carried {
+    sc_core::sc_time start;
+    sc_core::sc_time end;
+  };
+  // An AT request waiting to be carried, with its request time.
+  struct AtRequest {
+    int port;
+    tlm::tlm_generic_payload* trans;
+    sc_core::sc_time request;
+  };
+  // The base-protocol state of one `in` port.
+  struct AtPort {
+    bool request_open = false;                         // BEGIN_REQ received, END_REQ not yet sent
+    tlm::tlm_generic_payload* responding = nullptr;    // BEGIN_RESP sent, END_RESP not yet reached
+    std::deque<tlm::tlm_generic_payload*> due;         // responses due while another was open
+  };
+
   void b_transport(int port, tlm::tlm_generic_payload& trans, sc_core::sc_time& delay);
+  tlm::tlm_sync_enum nb_transport_fw(int port, tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase,
+                                     sc_core::sc_time& delay);
   unsigned int transport_dbg(int port, tlm::tlm_generic_payload& trans);
+  bool get_direct_mem_ptr(int port, tlm::tlm_generic_payload& trans, tlm::tlm_dmi& dmi);
+  void invalidate_direct_mem_ptr(int port, sc_dt::uint64 start, sc_dt::uint64 end);
   void end_of_elaboration() override;
   void end_of_simulation() override;
 
   std::uint64_t burst_cycles(std::uint64_t bytes) const;
+  Carried carry(int port, tlm::tlm_generic_payload& trans, const sc_core::sc_time& request);
+  sc_core::sc_time bus_time(const tlm::tlm_generic_payload& trans) const;
   sc_core::sc_time forward(tlm::tlm_generic_payload& trans, const Decoded& hit, const sc_core::sc_time& start);
   sc_core::sc_time master_abort(tlm::tlm_generic_payload& trans);
   PciInitiatorReport& counters(int port);
   void count(PciInitiatorReport& c, const tlm::tlm_generic_payload& trans, const sc_core::sc_time& occupancy,
              const sc_core::sc_time& wait);
+
+  // Approximately timed path.
+  void carry_requests_thread();
+  void carry_queued_requests();
+  void deliver(tlm::tlm_generic_payload& trans, const tlm::tlm_phase& phase);  // m_peq callback
+  void send_response(int port, tlm::tlm_generic_payload& trans);
+  void response_ended(int port, tlm::tlm_generic_payload& trans);
+  void end_response_at(int port, tlm::tlm_generic_payload& trans, const sc_core::sc_time& delay);
+  AtPort& at_port(int port);
+  void protocol_error(int port, const std::string& what) const;
 
   PciBusConfig m_config;
   AddressMap m_map;
@@ -128,6 +185,12 @@ class PciBus : public sc_core::sc_module {
   PciBus* m_arbiter = this;  // whose bus_free_at arbitrates this bus (itself unless shared)
   unsigned m_sharers = 0;    // buses arbitrating through this one
   std::vector<PciInitiatorReport> m_initiators;
+
+  std::deque<AtRequest> m_requests;  // AT requests not yet carried, in arrival order
+  sc_core::sc_event m_request_arrived;
+  tlm_utils::peq_with_cb_and_phase<PciBus> m_peq;  // BEGIN_RESP due, annotated END_RESP reached
+  std::unordered_map<const tlm::tlm_generic_payload*, int> m_at_port_of;  // AT transactions in flight
+  std::vector<AtPort> m_at_ports;
 };
 
 }  // namespace rc::tlmx

@@ -1,0 +1,535 @@
+// Base-protocol checking initiators for the TLM parts' tests: an LT initiator (b_transport) and an
+// AT initiator (nb_transport, BEGIN_REQ -> END_REQ -> BEGIN_RESP -> END_RESP) that drive any target
+// or interconnect and record every breach of the TLM-2.0 base protocol rules (IEEE 1666-2011) they
+// can see from the initiator's side:
+//   - phases in order on the hop, and only the phases of the base protocol on each path;
+//   - the exclusion rules: no BEGIN_RESP while another response on the socket is open;
+//   - timing annotations that never decrease (each phase takes effect no earlier than the last);
+//   - a response status set by the target (never left TLM_INCOMPLETE_RESPONSE);
+//   - the attributes a target and the interconnects must leave alone as the initiator sees them
+//     when the response reaches it: command, address, data pointer, data length, byte-enable
+//     pointer and length, streaming width;
+//   - a DMI hint that holds: dmi_allowed set means get_direct_mem_ptr grants the address for the
+//     command;
+//   - every payload given back to the memory manager once the transaction is over (AT).
+// Each breach is a line in violations(); a test asserts it is empty. The outcome of each transaction
+// (status, and the time each phase took effect) is returned for the test's exact timing checks.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include <systemc>
+#include <tlm>
+#include <tlm_utils/peq_with_cb_and_phase.h>
+#include <tlm_utils/simple_initiator_socket.h>
+#include <tlm_utils/simple_target_socket.h>
+
+namespace rc::tlmx::test {
+
+// One transaction as an initiator asks for it.
+struct Request {
+  tlm::tlm_command command = tlm::TLM_READ_COMMAND;
+  std::uint64_t address = 0;
+  unsigned char* data = nullptr;
+  unsigned int length = 0;
+  unsigned int streaming_width = 0;  // 0: equal to the length (no streaming)
+  unsigned char* byte_enable = nullptr;
+  unsigned int byte_enable_length = 0;
+  sc_core::sc_time delay = sc_core::SC_ZERO_TIME;  // local time offset at which it is issued
+};
+
+inline Request read_request(std::uint64_t address, void* data, unsigned int length,
+                            sc_core::sc_time delay = sc_core::SC_ZERO_TIME) {
+  Request r;
+  r.command = tlm::TLM_READ_COMMAND;
+  r.address = address;
+  r.data = static_cast<unsigned char*>(data);
+  r.length = length;
+  r.delay = delay;
+  return r;
+}
+
+inline Request write_request(std::uint64_t address, void* data, unsigned int length,
+                             sc_core::sc_time delay = sc_core::SC_ZERO_TIME) {
+  Request r = read_request(address, data, length, delay);
+  r.command = tlm::TLM_WRITE_COMMAND;
+  return r;
+}
+
+// What came back, with the simulated time at which each phase took effect (sc_time_stamp() +
+// annotated delay). For b_transport: request = the call's local time, response = the returned one.
+struct Outcome {
+  tlm::tlm_response_status status = tlm::TLM_INCOMPLETE_RESPONSE;
+  bool dmi_hint = false;
+  sc_core::sc_time request;                     // BEGIN_REQ
+  std::optional<sc_core::sc_time> end_request;  // END_REQ received as such (AT)
+  sc_core::sc_time response;                    // BEGIN_RESP, or TLM_COMPLETED
+  sc_core::sc_time end_response;                // END_RESP (AT; equal to response when completed at once)
+};
+
+// The attributes an initiator sets and nobody else may change.
+struct Attributes {
+  tlm::tlm_command command = tlm::TLM_IGNORE_COMMAND;
+  std::uint64_t address = 0;
+  unsigned char* data = nullptr;
+  unsigned int length = 0;
+  unsigned char* byte_enable = nullptr;
+  unsigned int byte_enable_length = 0;
+  unsigned int streaming_width = 0;
+
+  static Attributes of(const tlm::tlm_generic_payload& t) {
+    return {t.get_command(),         t.get_address(),     t.get_data_ptr(),       t.get_data_length(),
+            t.get_byte_enable_ptr(), t.get_byte_enable_length(), t.get_streaming_width()};
+  }
+  // The names of the attributes that differ in `now`, comma separated ("" if none).
+  std::string changed_in(const Attributes& now) const {
+    std::string names;
+    auto note = [&](bool differs, const char* name) {
+      if (differs) names += names.empty() ? name : std::string(", ") + name;
+    };
+    note(now.command != command, "command");
+    note(now.address != address, "address");
+    note(now.data != data, "data pointer");
+    note(now.length != length, "data length");
+    note(now.byte_enable != byte_enable, "byte-enable pointer");
+    note(now.byte_enable_length != byte_enable_length, "byte-enable length");
+    note(now.streaming_width != streaming_width, "streaming width");
+    return names;
+  }
+};
+
+inline void fill(tlm::tlm_generic_payload& trans, const Request& r) {
+  trans.set_command(r.command);
+  trans.set_address(r.address);
+  trans.set_data_ptr(r.data);
+  trans.set_data_length(r.length);
+  trans.set_streaming_width(r.streaming_width == 0 ? r.length : r.streaming_width);
+  trans.set_byte_enable_ptr(r.byte_enable);
+  trans.set_byte_enable_length(r.byte_enable_length);
+  trans.set_dmi_allowed(false);
+  trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+}
+
+// Violations, each a line naming the initiator, the transaction and the rule.
+class ViolationLog {
+ public:
+  explicit ViolationLog(std::string who) : m_who(std::move(who)) {}
+  void add(const Request& r, const std::string& what) {
+    std::ostringstream line;
+    line << m_who << ": " << (r.command == tlm::TLM_READ_COMMAND ? "read" : r.command == tlm::TLM_WRITE_COMMAND ? "write" : "ignore")
+         << " 0x" << std::hex << r.address << std::dec << " + " << r.length << " at "
+         << sc_core::sc_time_stamp() << ": " << what;
+    m_lines.push_back(line.str());
+  }
+  const std::vector<std::string>& lines() const { return m_lines; }
+
+ private:
+  std::string m_who;
+  std::vector<std::string> m_lines;
+};
+
+// The checks made when a response reaches the initiator, LT or AT.
+inline void check_response(tlm::tlm_generic_payload& trans, const Request& r, const Attributes& sent,
+                           tlm::tlm_fw_transport_if<>& path, ViolationLog& log) {
+  if (trans.get_response_status() == tlm::TLM_INCOMPLETE_RESPONSE)
+    log.add(r, "response status left TLM_INCOMPLETE_RESPONSE");
+  const std::string changed = sent.changed_in(Attributes::of(trans));
+  if (!changed.empty()) log.add(r, "attributes changed on the way: " + changed);
+  if (!trans.is_dmi_allowed()) return;
+  // The hint says DMI would be granted here: ask, with a fresh payload and descriptor.
+  tlm::tlm_generic_payload probe;
+  probe.set_command(r.command);
+  probe.set_address(r.address);
+  tlm::tlm_dmi dmi;
+  const bool granted = path.get_direct_mem_ptr(probe, dmi);
+  const bool allowed = r.command == tlm::TLM_WRITE_COMMAND ? dmi.is_write_allowed() : dmi.is_read_allowed();
+  if (!granted || !allowed || dmi.get_start_address() > r.address || dmi.get_end_address() < r.address)
+    log.add(r, "DMI hint set, but get_direct_mem_ptr does not grant the address for the command");
+}
+
+// Owns the AT payloads; counts those not yet given back.
+class PayloadPool : public tlm::tlm_mm_interface {
+ public:
+  tlm::tlm_generic_payload* take() {
+    if (m_free.empty()) {
+      m_all.push_back(std::make_unique<tlm::tlm_generic_payload>(this));
+      m_free.push_back(m_all.back().get());
+    }
+    tlm::tlm_generic_payload* trans = m_free.back();
+    m_free.pop_back();
+    trans->acquire();
+    return trans;
+  }
+  void free(tlm::tlm_generic_payload* trans) override {
+    trans->reset();
+    m_free.push_back(trans);
+  }
+  std::size_t in_use() const { return m_all.size() - m_free.size(); }
+
+ private:
+  std::vector<std::unique_ptr<tlm::tlm_generic_payload>> m_all;
+  std::vector<tlm::tlm_generic_payload*> m_free;
+};
+
+// A loosely-timed initiator running `script` in its thread.
+class LtInitiator : public sc_core::sc_module {
+ public:
+  tlm_utils::simple_initiator_socket<LtInitiator> out;
+
+  LtInitiator(const sc_core::sc_module_name& name, std::function<void(LtInitiator&)> script)
+      : sc_core::sc_module(name), out("out"), m_script(std::move(script)), m_log(this->name()) {
+    SC_HAS_PROCESS(LtInitiator);
+    SC_THREAD(run);
+  }
+
+  // One b_transport at local offset r.delay; returns without waiting (the caller owns local time).
+  Outcome transport(const Request& r) {
+    tlm::tlm_generic_payload trans;
+    fill(trans, r);
+    const Attributes sent = Attributes::of(trans);
+    sc_core::sc_time delay = r.delay;
+    out->b_transport(trans, delay);
+    if (delay < r.delay) m_log.add(r, "b_transport returned a smaller delay than it was given");
+    check_response(trans, r, sent, *out.operator->(), m_log);
+    Outcome o;
+    o.status = trans.get_response_status();
+    o.dmi_hint = trans.is_dmi_allowed();
+    o.request = sc_core::sc_time_stamp() + r.delay;
+    o.response = o.end_response = sc_core::sc_time_stamp() + delay;
+    return o;
+  }
+
+  const std::vector<std::string>& violations() const { return m_log.lines(); }
+  bool finished() const { return m_finished; }
+
+ private:
+  void run() {
+    m_script(*this);
+    m_finished = true;
+  }
+
+  std::function<void(LtInitiator&)> m_script;
+  ViolationLog m_log;
+  bool m_finished = false;
+};
+
+// How the AT initiator answers a BEGIN_RESP: TLM_COMPLETED, TLM_UPDATED with END_RESP, or
+// TLM_ACCEPTED followed by END_RESP on the forward path `hold` later.
+enum class EndResponse { completed, updated, accepted };
+
+// An approximately-timed initiator running `script` in its thread. issue() sends BEGIN_REQ and
+// returns at the end of the request phase (the next BEGIN_REQ may follow); finish() returns when
+// the transaction is over, at its END_RESP time.
+class AtInitiator : public sc_core::sc_module {
+ public:
+  tlm_utils::simple_initiator_socket<AtInitiator> out;
+
+  AtInitiator(const sc_core::sc_module_name& name, std::function<void(AtInitiator&)> script)
+      : sc_core::sc_module(name),
+        out("out"),
+        m_script(std::move(script)),
+        m_log(this->name()),
+        m_end_responses("end_responses", this, &AtInitiator::send_end_response) {
+    out.register_nb_transport_bw(this, &AtInitiator::nb_transport_bw);
+    SC_HAS_PROCESS(AtInitiator);
+    SC_THREAD(run);
+  }
+
+  using Ticket = std::size_t;
+
+  Ticket issue(const Request& r, EndResponse answer = EndResponse::completed,
+               sc_core::sc_time hold = sc_core::SC_ZERO_TIME) {
+    m_records.emplace_back();
+    const Ticket ticket = m_records.size() - 1;
+    Record& rec = m_records.back();
+    rec.request = r;
+    rec.answer = answer;
+    rec.hold = hold;
+    rec.trans = m_pool.take();
+    fill(*rec.trans, r);
+    rec.sent = Attributes::of(*rec.trans);
+    rec.outcome.request = rec.last = sc_core::sc_time_stamp() + r.delay;
+    m_active[rec.trans] = &rec;
+    tlm::tlm_phase phase = tlm::BEGIN_REQ;
+    sc_core::sc_time delay = r.delay;
+    const tlm::tlm_sync_enum status = out->nb_transport_fw(*rec.trans, phase, delay);
+    if (status == tlm::TLM_ACCEPTED && phase != tlm::BEGIN_REQ) m_log.add(r, "TLM_ACCEPTED with a changed phase");
+    if (status == tlm::TLM_UPDATED) returned_phase(rec, phase, delay);
+    if (status == tlm::TLM_COMPLETED) completed(rec, delay);
+    while (!rec.request_over) sc_core::wait(rec.request_over_event);
+    sync_to(rec.request_end);
+    return ticket;
+  }
+
+  Outcome finish(Ticket ticket) {
+    Record& rec = m_records.at(ticket);
+    while (!rec.over) sc_core::wait(rec.over_event);
+    sync_to(rec.outcome.end_response);
+    return rec.outcome;
+  }
+
+  Outcome transport(const Request& r, EndResponse answer = EndResponse::completed,
+                    sc_core::sc_time hold = sc_core::SC_ZERO_TIME) {
+    return finish(issue(r, answer, hold));
+  }
+
+  const std::vector<std::string>& violations() const { return m_log.lines(); }
+  std::size_t payloads_in_use() const { return m_pool.in_use(); }
+  bool finished() const { return m_finished; }
+
+ private:
+  enum class Phase { begin_req, end_req, begin_resp, over };
+  struct Record {
+    Request request;
+    EndResponse answer = EndResponse::completed;
+    sc_core::sc_time hold;
+    tlm::tlm_generic_payload* trans = nullptr;
+    Attributes sent;
+    Phase phase = Phase::begin_req;
+    sc_core::sc_time last;         // when the last phase took effect
+    sc_core::sc_time request_end;  // END_REQ, or what implied it
+    Outcome outcome;
+    bool request_over = false;
+    bool over = false;
+    sc_core::sc_event request_over_event, over_event;
+  };
+
+  void run() {
+    m_script(*this);
+    m_finished = true;
+  }
+
+  static void sync_to(const sc_core::sc_time& t) {
+    if (t > sc_core::sc_time_stamp()) sc_core::wait(t - sc_core::sc_time_stamp());
+  }
+
+  // A phase taking effect at `at`: annotations must not go back in time.
+  void advance(Record& rec, const sc_core::sc_time& at, const char* phase) {
+    if (at < rec.last) {
+      std::ostringstream what;
+      what << phase << " at " << at << ", before the previous phase at " << rec.last << " (decreasing timing annotation)";
+      m_log.add(rec.request, what.str());
+    }
+    rec.last = at;
+  }
+
+  void end_request(Record& rec, const sc_core::sc_time& at) {
+    rec.request_end = at;
+    rec.request_over = true;
+    rec.request_over_event.notify();
+  }
+
+  void got_end_req(Record& rec, const sc_core::sc_time& at) {
+    advance(rec, at, "END_REQ");
+    if (rec.phase != Phase::begin_req) m_log.add(rec.request, "END_REQ out of order");
+    rec.phase = Phase::end_req;
+    rec.outcome.end_request = at;
+    end_request(rec, at);
+  }
+
+  void got_begin_resp(Record& rec, const sc_core::sc_time& at) {
+    advance(rec, at, "BEGIN_RESP");
+    if (rec.phase != Phase::begin_req && rec.phase != Phase::end_req) m_log.add(rec.request, "BEGIN_RESP out of order");
+    if (m_open_response != nullptr)
+      m_log.add(rec.request, "BEGIN_RESP while another response on the socket is open (exclusion rule)");
+    if (at < m_responses_free_at)
+      m_log.add(rec.request, "BEGIN_RESP before the END_RESP of the previous response (exclusion rule)");
+    if (!rec.request_over) end_request(rec, at);
+    rec.phase = Phase::begin_resp;
+    rec.outcome.response = at;
+    check_response(*rec.trans, rec.request, rec.sent, *out.operator->(), m_log);
+    rec.outcome.status = rec.trans->get_response_status();
+    rec.outcome.dmi_hint = rec.trans->is_dmi_allowed();
+  }
+
+  void over(Record& rec, const sc_core::sc_time& at) {
+    rec.outcome.end_response = at;
+    rec.phase = Phase::over;
+    if (m_open_response == &rec) m_open_response = nullptr;
+    m_responses_free_at = std::max(m_responses_free_at, at);
+    m_active.erase(rec.trans);
+    rec.trans->release();
+    rec.trans = nullptr;
+    rec.over = true;
+    rec.over_event.notify();
+  }
+
+  // TLM_COMPLETED from the target side: request, response and its end all at `at`.
+  void completed(Record& rec, const sc_core::sc_time& delay) {
+    const sc_core::sc_time at = sc_core::sc_time_stamp() + delay;
+    got_begin_resp(rec, at);
+    over(rec, at);
+  }
+
+  // TLM_UPDATED returned to BEGIN_REQ: END_REQ, or BEGIN_RESP (after which END_RESP is ours to send).
+  void returned_phase(Record& rec, const tlm::tlm_phase& phase, const sc_core::sc_time& delay) {
+    const sc_core::sc_time at = sc_core::sc_time_stamp() + delay;
+    if (phase == tlm::END_REQ) return got_end_req(rec, at);
+    if (phase != tlm::BEGIN_RESP) return m_log.add(rec.request, "TLM_UPDATED to a phase other than END_REQ or BEGIN_RESP");
+    got_begin_resp(rec, at);
+    m_open_response = &rec;
+    m_end_responses.notify(*rec.trans, tlm::END_RESP, delay + rec.hold);
+  }
+
+  tlm::tlm_sync_enum nb_transport_bw(tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase, sc_core::sc_time& delay) {
+    const auto it = m_active.find(&trans);
+    if (it == m_active.end()) {
+      m_log.add(Request{}, "nb_transport_bw for a transaction not in flight");
+      return tlm::TLM_COMPLETED;
+    }
+    Record& rec = *it->second;
+    const sc_core::sc_time at = sc_core::sc_time_stamp() + delay;
+    if (phase == tlm::END_REQ) {
+      got_end_req(rec, at);
+      return tlm::TLM_ACCEPTED;
+    }
+    if (phase != tlm::BEGIN_RESP) {
+      m_log.add(rec.request, "a phase other than END_REQ or BEGIN_RESP on the backward path");
+      return tlm::TLM_COMPLETED;
+    }
+    got_begin_resp(rec, at);
+    switch (rec.answer) {
+      case EndResponse::completed:
+        over(rec, at);
+        return tlm::TLM_COMPLETED;
+      case EndResponse::updated:
+        over(rec, at);
+        phase = tlm::END_RESP;
+        return tlm::TLM_UPDATED;
+      case EndResponse::accepted:
+        break;
+    }
+    m_open_response = &rec;
+    m_end_responses.notify(trans, tlm::END_RESP, delay + rec.hold);
+    return tlm::TLM_ACCEPTED;
+  }
+
+  void send_end_response(tlm::tlm_generic_payload& trans, const tlm::tlm_phase&) {
+    Record& rec = *m_active.at(&trans);
+    const sc_core::sc_time at = sc_core::sc_time_stamp();
+    advance(rec, at, "END_RESP");
+    // Given with the call: the target side may send the next BEGIN_RESP from inside it.
+    m_open_response = nullptr;
+    m_responses_free_at = std::max(m_responses_free_at, at);
+    tlm::tlm_phase phase = tlm::END_RESP;
+    sc_core::sc_time delay = sc_core::SC_ZERO_TIME;
+    const tlm::tlm_sync_enum status = out->nb_transport_fw(trans, phase, delay);
+    if (status == tlm::TLM_UPDATED) m_log.add(rec.request, "END_RESP answered TLM_UPDATED");
+    over(rec, at);
+  }
+
+  std::function<void(AtInitiator&)> m_script;
+  ViolationLog m_log;
+  PayloadPool m_pool;
+  std::deque<Record> m_records;  // stable addresses
+  std::unordered_map<const tlm::tlm_generic_payload*, Record*> m_active;
+  Record* m_open_response = nullptr;  // BEGIN_RESP received, END_RESP not yet sent
+  sc_core::sc_time m_responses_free_at = sc_core::SC_ZERO_TIME;
+  tlm_utils::peq_with_cb_and_phase<AtInitiator> m_end_responses;
+  bool m_finished = false;
+};
+
+// An approximately-timed target without storage, for the interconnects' AT paths: it answers
+// every BEGIN_REQ in one style, with END_REQ `accept` and BEGIN_RESP `respond` after the request
+// (respond >= accept), TLM_OK_RESPONSE, reads filled with `fill_byte`. It keeps the exclusion rules
+// of its own socket as a target must (one response open at a time) and records what it saw.
+class AtTarget : public sc_core::sc_module {
+ public:
+  // accepted: TLM_ACCEPTED, then END_REQ and BEGIN_RESP on the backward path;
+  // end_req: TLM_UPDATED with END_REQ, then BEGIN_RESP on the backward path;
+  // begin_resp: TLM_UPDATED with BEGIN_RESP (delay `respond`), END_RESP expected on the forward path;
+  // completed: TLM_COMPLETED (delay `respond`).
+  enum class Style { accepted, end_req, begin_resp, completed };
+
+  tlm_utils::simple_target_socket<AtTarget> in;
+  Style style;
+  sc_core::sc_time accept, respond;
+  unsigned char fill_byte = 0x5A;
+  std::vector<std::uint64_t> addresses;        // address of each BEGIN_REQ as received
+  std::vector<sc_core::sc_time> request_times;  // when each BEGIN_REQ took effect
+  std::vector<std::string> violations;          // requests while a request phase was open
+
+  AtTarget(const sc_core::sc_module_name& name, Style how, sc_core::sc_time accept_after,
+           sc_core::sc_time respond_after)
+      : sc_core::sc_module(name),
+        in("in"),
+        style(how),
+        accept(accept_after),
+        respond(respond_after),
+        m_peq("phases", this, &AtTarget::send) {
+    in.register_nb_transport_fw(this, &AtTarget::nb_transport_fw);
+  }
+
+ private:
+  tlm::tlm_sync_enum nb_transport_fw(tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase, sc_core::sc_time& delay) {
+    if (phase == tlm::END_RESP) {
+      m_response_open = nullptr;
+      if (!m_due.empty()) {
+        tlm::tlm_generic_payload* next = m_due.front();
+        m_due.pop_front();
+        m_peq.notify(*next, tlm::BEGIN_RESP, delay);
+      }
+      return tlm::TLM_COMPLETED;
+    }
+    addresses.push_back(trans.get_address());
+    request_times.push_back(sc_core::sc_time_stamp() + delay);
+    if (m_request_open) violations.push_back(std::string(name()) + ": BEGIN_REQ while a request phase is open");
+    execute(trans);
+    switch (style) {
+      case Style::accepted:
+        m_request_open = true;
+        m_peq.notify(trans, tlm::END_REQ, delay + accept);
+        m_peq.notify(trans, tlm::BEGIN_RESP, delay + respond);
+        return tlm::TLM_ACCEPTED;
+      case Style::end_req:
+        m_peq.notify(trans, tlm::BEGIN_RESP, delay + respond);
+        phase = tlm::END_REQ;
+        delay += accept;
+        return tlm::TLM_UPDATED;
+      case Style::begin_resp:
+        m_response_open = &trans;
+        phase = tlm::BEGIN_RESP;
+        delay += respond;
+        return tlm::TLM_UPDATED;
+      case Style::completed:
+        delay += respond;
+        return tlm::TLM_COMPLETED;
+    }
+    return tlm::TLM_COMPLETED;
+  }
+
+  void execute(tlm::tlm_generic_payload& trans) {
+    if (trans.is_read()) std::fill_n(trans.get_data_ptr(), trans.get_data_length(), fill_byte);
+    trans.set_response_status(tlm::TLM_OK_RESPONSE);
+  }
+
+  void send(tlm::tlm_generic_payload& trans, const tlm::tlm_phase& phase) {
+    if (phase == tlm::BEGIN_RESP && m_response_open != nullptr) {
+      m_due.push_back(&trans);  // after the open response's END_RESP
+      return;
+    }
+    tlm::tlm_phase p = phase;
+    sc_core::sc_time delay = sc_core::SC_ZERO_TIME;
+    if (phase == tlm::END_REQ) m_request_open = false;
+    if (phase == tlm::BEGIN_RESP) m_request_open = false;
+    const tlm::tlm_sync_enum answer = in->nb_transport_bw(trans, p, delay);
+    if (phase == tlm::BEGIN_RESP && answer == tlm::TLM_ACCEPTED) m_response_open = &trans;
+  }
+
+  bool m_request_open = false;
+  tlm::tlm_generic_payload* m_response_open = nullptr;
+  std::deque<tlm::tlm_generic_payload*> m_due;
+  tlm_utils::peq_with_cb_and_phase<AtTarget> m_peq;
+};
+
+}  // namespace rc::tlmx::test

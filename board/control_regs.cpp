@@ -12,6 +12,7 @@ ControlRegs::ControlRegs(const sc_core::sc_module_name& name, sc_core::sc_time a
   m_regs[reg::kSourceFace / 4] = reg::kNoFace;
   in.register_b_transport(this, &ControlRegs::b_transport);
   in.register_transport_dbg(this, &ControlRegs::transport_dbg);
+  in.register_get_direct_mem_ptr(this, &ControlRegs::get_direct_mem_ptr);
   SC_HAS_PROCESS(ControlRegs);
   SC_METHOD(acknowledge_now);
   sensitive << m_acknowledge_event;
@@ -73,35 +74,40 @@ void ControlRegs::write(std::uint64_t offset, std::uint32_t value, const sc_core
   }
 }
 
-// Aligned accesses of whole registers, one or several (a burst writes consecutive registers in
-// address order); anything else is an address or burst error.
-void ControlRegs::b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) {
+// The response a transaction gets, in the order of the header's table.
+tlm::tlm_response_status ControlRegs::check(const tlm::tlm_generic_payload& trans) {
   const std::uint64_t address = trans.get_address();
   const unsigned length = trans.get_data_length();
-  if (address % 4 != 0 || length % 4 != 0 || length == 0 || address + length > reg::kBarSize) {
-    trans.set_response_status(tlm::TLM_ADDRESS_ERROR_RESPONSE);
-    return;
-  }
-  if (trans.get_byte_enable_ptr() != nullptr || trans.get_streaming_width() < length) {
-    trans.set_response_status(tlm::TLM_BURST_ERROR_RESPONSE);
-    return;
-  }
+  if (trans.get_command() == tlm::TLM_IGNORE_COMMAND || length == 0) return tlm::TLM_OK_RESPONSE;
+  if (address % 4 != 0 || address > reg::kBarSize || length > reg::kBarSize - address)
+    return tlm::TLM_ADDRESS_ERROR_RESPONSE;
+  if (trans.get_byte_enable_ptr() != nullptr) return tlm::TLM_BYTE_ENABLE_ERROR_RESPONSE;
+  if (length % 4 != 0 || trans.get_streaming_width() < length) return tlm::TLM_BURST_ERROR_RESPONSE;
+  return tlm::TLM_OK_RESPONSE;
+}
+
+// Aligned accesses of whole registers, one or several (a burst writes consecutive registers in
+// address order).
+void ControlRegs::b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) {
+  trans.set_response_status(check(trans));
+  const bool moves_data = trans.get_command() != tlm::TLM_IGNORE_COMMAND && trans.get_data_length() != 0;
+  if (!trans.is_response_ok() || !moves_data) return;
   ++m_accesses;
   delay += m_access_time;
   const sc_core::sc_time effective = sc_core::sc_time_stamp() + delay;
+  const std::uint64_t address = trans.get_address();
   unsigned char* data = trans.get_data_ptr();
-  for (unsigned i = 0; i < length; i += 4) {
+  for (unsigned i = 0; i < trans.get_data_length(); i += 4) {
     const std::uint64_t offset = address + i;
     std::uint32_t v = 0;
     if (trans.is_write()) {
       std::memcpy(&v, data + i, 4);
       if (offset < reg::kSize) write(offset, v, effective);
-    } else if (trans.is_read()) {
+    } else {
       v = offset < reg::kSize ? m_regs[offset / 4] : 0;
       std::memcpy(data + i, &v, 4);
     }
   }
-  trans.set_response_status(tlm::TLM_OK_RESPONSE);
 }
 
 unsigned int ControlRegs::transport_dbg(tlm::tlm_generic_payload& trans) {
@@ -113,6 +119,15 @@ unsigned int ControlRegs::transport_dbg(tlm::tlm_generic_payload& trans) {
     std::memcpy(trans.get_data_ptr() + done, &v, 4);
   }
   return done;
+}
+
+// Every access must reach b_transport: registers have side effects.
+bool ControlRegs::get_direct_mem_ptr(tlm::tlm_generic_payload&, tlm::tlm_dmi& dmi) {
+  dmi.set_dmi_ptr(nullptr);
+  dmi.allow_none();
+  dmi.set_start_address(0);
+  dmi.set_end_address(~sc_dt::uint64{0});
+  return false;
 }
 
 }  // namespace rc::board

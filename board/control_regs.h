@@ -6,6 +6,20 @@
 // module's): START is sampled by the wrapper from then (start_time()), and an acknowledge (DONE
 // cleared) lowers the interrupt then, so a temporally decoupled host gets the same times as a
 // synced one.
+//
+// Transactions (b_transport; an AT initiator is served through the socket's nb-to-b conversion),
+// answered in this order:
+//   TLM_IGNORE_COMMAND, or a read/write of 0 bytes      TLM_OK_RESPONSE, nothing touched, no time
+//   (the LRM forbids initiators a zero-length read or write, 14.12, and leaves the target's answer
+//   open; every target here answers it OK with no effect)
+//   address not 4-byte aligned, or [a, a + n) not in the BAR    TLM_ADDRESS_ERROR_RESPONSE
+//   byte enables (any)                                          TLM_BYTE_ENABLE_ERROR_RESPONSE
+//   length not a multiple of 4, or streaming width < length     TLM_BURST_ERROR_RESPONSE
+//   otherwise: whole registers in address order, TLM_OK_RESPONSE; offsets past the register
+//   file (up to the BAR size) read 0 and ignore writes.
+// Byte enables are refused rather than handled: a partial write of START or of the write-1-to-clear
+// STATUS bits has no sensible meaning here, and the driver never uses them.
+// DMI is refused over the whole address space (reads and writes have side effects).
 #pragma once
 
 #include <array>
@@ -41,6 +55,8 @@ class ControlRegs : public sc_core::sc_module {
  private:
   void b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& delay);
   unsigned int transport_dbg(tlm::tlm_generic_payload& trans);
+  bool get_direct_mem_ptr(tlm::tlm_generic_payload& trans, tlm::tlm_dmi& dmi);
+  static tlm::tlm_response_status check(const tlm::tlm_generic_payload& trans);
   void write(std::uint64_t offset, std::uint32_t value, const sc_core::sc_time& effective);
   void acknowledge_now();  // an acknowledge written ahead of simulated time, at its time
 

@@ -78,7 +78,8 @@ void ControlRegs::write(std::uint64_t offset, std::uint32_t value, const sc_core
 tlm::tlm_response_status ControlRegs::check(const tlm::tlm_generic_payload& trans) {
   const std::uint64_t address = trans.get_address();
   const unsigned length = trans.get_data_length();
-  if (trans.get_command() == tlm::TLM_IGNORE_COMMAND || length == 0) return tlm::TLM_OK_RESPONSE;
+  if (trans.get_command() == tlm::TLM_IGNORE_COMMAND) return tlm::TLM_OK_RESPONSE;
+  if (length == 0) return tlm::TLM_BURST_ERROR_RESPONSE;  // nothing to address: the length first
   if (address % 4 != 0 || address > reg::kBarSize || length > reg::kBarSize - address)
     return tlm::TLM_ADDRESS_ERROR_RESPONSE;
   if (trans.get_byte_enable_ptr() != nullptr) return tlm::TLM_BYTE_ENABLE_ERROR_RESPONSE;
@@ -90,8 +91,7 @@ tlm::tlm_response_status ControlRegs::check(const tlm::tlm_generic_payload& tran
 // address order).
 void ControlRegs::b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) {
   trans.set_response_status(check(trans));
-  const bool moves_data = trans.get_command() != tlm::TLM_IGNORE_COMMAND && trans.get_data_length() != 0;
-  if (!trans.is_response_ok() || !moves_data) return;
+  if (!trans.is_response_ok() || trans.get_command() == tlm::TLM_IGNORE_COMMAND) return;
   ++m_accesses;
   delay += m_access_time;
   const sc_core::sc_time effective = sc_core::sc_time_stamp() + delay;

@@ -9,14 +9,15 @@
 //
 // Transactions (b_transport; an AT initiator is served through the socket's nb-to-b conversion),
 // answered in this order:
-//   TLM_IGNORE_COMMAND, or a read/write of 0 bytes      TLM_OK_RESPONSE, nothing touched, no time
-//   (the LRM forbids initiators a zero-length read or write, 14.12, and leaves the target's answer
-//   open; every target here answers it OK with no effect)
+//   TLM_IGNORE_COMMAND                                          TLM_OK_RESPONSE, nothing touched
+//   a read or write of 0 bytes (outside the base protocol,
+//   IEEE 1666-2011 14.12; as every part answers it)             TLM_BURST_ERROR_RESPONSE
 //   address not 4-byte aligned, or [a, a + n) not in the BAR    TLM_ADDRESS_ERROR_RESPONSE
 //   byte enables (any)                                          TLM_BYTE_ENABLE_ERROR_RESPONSE
 //   length not a multiple of 4, or streaming width < length     TLM_BURST_ERROR_RESPONSE
 //   otherwise: whole registers in address order, TLM_OK_RESPONSE; offsets past the register
 //   file (up to the BAR size) read 0 and ignore writes.
+// Only the last takes time (the access time) or touches a register; the others count no access.
 // Byte enables are refused rather than handled: a partial write of START or of the write-1-to-clear
 // STATUS bits has no sensible meaning here, and the driver never uses them.
 // DMI is refused over the whole address space (reads and writes have side effects).

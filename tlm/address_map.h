@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <tlm>
+
 namespace rc::tlmx {
 
 struct AddressWindow {
@@ -21,6 +23,14 @@ struct Decoded {
   const AddressWindow* window = nullptr;  // into AddressMap::windows(); valid until the next add()
   std::uint64_t offset = 0;  // address - window->base
 };
+
+// A read or write of 0 bytes. The base protocol has none (IEEE 1666-2011 14.12: an initiator moves
+// zero bytes with TLM_IGNORE_COMMAND), so every part answers it TLM_BURST_ERROR_RESPONSE, the
+// status for a data length a target cannot act on (14.17), with no time and no effect; the
+// interconnects do so before decoding, as the banks check the length before the address.
+inline bool zero_length_transfer(const tlm::tlm_generic_payload& trans) {
+  return trans.get_data_length() == 0 && trans.get_command() != tlm::TLM_IGNORE_COMMAND;
+}
 
 class AddressMap {
  public:

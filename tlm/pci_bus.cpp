@@ -100,6 +100,7 @@ PciBus::Carried PciBus::carry(int port, tlm::tlm_generic_payload& trans, const s
 }
 
 void PciBus::b_transport(int port, tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) {
+  if (zero_length_transfer(trans)) return trans.set_response_status(tlm::TLM_BURST_ERROR_RESPONSE);
   carry_queued_requests();  // AT requests that arrived before this call go first
   const Carried carried = carry(port, trans, sc_core::sc_time_stamp() + delay);
   // A target that called wait() may have moved simulated time past the completion time.
@@ -121,6 +122,10 @@ void PciBus::protocol_error(int port, const std::string& what) const {
 
 tlm::tlm_sync_enum PciBus::nb_transport_fw(int port, tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase,
                                            sc_core::sc_time& delay) {
+  if (phase == tlm::BEGIN_REQ && zero_length_transfer(trans)) {
+    trans.set_response_status(tlm::TLM_BURST_ERROR_RESPONSE);
+    return tlm::TLM_COMPLETED;  // at once, as for b_transport
+  }
   if (phase == tlm::BEGIN_REQ) {
     AtPort& p = at_port(port);
     if (p.request_open) protocol_error(port, "BEGIN_REQ before the END_REQ of the previous request (exclusion rule)");

@@ -6,11 +6,13 @@
 // Timing (W = width_bits / 8 bytes per data phase, E = burst_efficiency in (0, 1], S = setup_cycles,
 // M = max_burst_bytes, P = clock_period). A transaction of n bytes is carried as
 // bursts = n == 0 ? 1 : ceil(n / M) bursts of M bytes, the last one holding the remainder (a
-// zero-length transaction is one burst of 0 bytes), and
+// transaction without data is one burst of 0 bytes), and
 //   burst_cycles(b)  = S + ceil(ceil(b / W) / E)
 //   transfer_time(n) = (sum of burst_cycles over the bursts) * P
 // ceil(x / E) takes x / E within a relative 1e-9 of an integer as that integer (see timing.h).
-// A TLM_IGNORE_COMMAND moves no data whatever its length: it is timed as n = 0.
+// A TLM_IGNORE_COMMAND moves no data whatever its length: it is timed as n = 0. A read or write of
+// 0 bytes is outside the base protocol: TLM_BURST_ERROR_RESPONSE at once, not arbitrated, no time,
+// not counted (address_map.h, zero_length_transfer).
 // The target behind the window is called with the transaction's start on the bus as its delay
 // (start - sc_time_stamp(), see Arbitration), so a target with side effects (registers) can time
 // them at the access; it adds its own delay D_t, wait states that overlap the bus data phases, so

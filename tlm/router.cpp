@@ -35,6 +35,7 @@ void Router::unmapped(tlm::tlm_generic_payload& trans) {
 }
 
 void Router::b_transport(int, tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) {
+  if (zero_length_transfer(trans)) return trans.set_response_status(tlm::TLM_BURST_ERROR_RESPONSE);
   const std::uint64_t address = trans.get_address();
   const std::optional<Decoded> hit = m_map.decode(address, trans.get_data_length());
   if (!hit) return unmapped(trans);
@@ -86,6 +87,10 @@ tlm::tlm_sync_enum Router::nb_transport_fw(int port, tlm::tlm_generic_payload& t
 
 tlm::tlm_sync_enum Router::begin_request(int port, tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase,
                                          sc_core::sc_time& delay) {
+  if (zero_length_transfer(trans)) {
+    trans.set_response_status(tlm::TLM_BURST_ERROR_RESPONSE);
+    return tlm::TLM_COMPLETED;  // no time, as for b_transport
+  }
   const std::uint64_t address = trans.get_address();
   const std::optional<Decoded> hit = m_map.decode(address, trans.get_data_length());
   if (!hit) {

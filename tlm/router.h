@@ -5,6 +5,7 @@
 //
 //   delay += latency_cycles * clock_period     (on every decoded transaction, before the target's)
 //   unmapped or straddling address -> TLM_ADDRESS_ERROR_RESPONSE, no time, counted and warned
+//   read or write of 0 bytes       -> TLM_BURST_ERROR_RESPONSE, no time, not routed (address_map.h)
 //
 // Loosely and approximately timed alike. b_transport is forwarded and the initiator's address
 // restored on return. nb_transport (base protocol, BEGIN_REQ -> END_REQ -> BEGIN_RESP -> END_RESP)
@@ -26,7 +27,7 @@
 //     delivered at max(its time, the END_RESP time of the previous one); the target gets its
 //     END_RESP when the initiator gives it.
 // A payload with a memory manager is acquired from BEGIN_REQ to its end at the router. An unmapped
-// BEGIN_REQ is completed at once (TLM_COMPLETED, address error, no time). Targets may be AT or
+// or zero-length BEGIN_REQ is completed at once (TLM_COMPLETED with its error, no time). Targets may be AT or
 // LT-only (simple_target_socket converts; it answers BEGIN_REQ with TLM_ACCEPTED and no END_REQ
 // before its BEGIN_RESP, so requests to it are serialised). Byte enables and streaming width pass
 // untouched.

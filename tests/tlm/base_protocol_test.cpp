@@ -177,14 +177,15 @@ TEST(BaseProtocol, PciBusLooselyAndApproximatelyTimed) {
   EXPECT_EQ(r.initiators.at(0).bytes_written, 8u);
 }
 
-// The bus passes byte enables, streaming width and length to the target untouched; a zero-length
-// transfer and a TLM_IGNORE_COMMAND move no data and take one burst's setup (8 cycles); the bus
-// counts no bytes for them.
+// The bus passes byte enables, streaming width and length to the target untouched; a
+// TLM_IGNORE_COMMAND moves no data and takes one burst's setup (8 cycles); a read or write of 0
+// bytes is refused at once (burst error, no time, not forwarded, not counted), LT and AT alike.
 TEST(BaseProtocol, PciBusPassesAttributesThroughAndTimesTransfersWithoutData) {
   PciBus bus("bus");
   RecordingTarget target("target", sc_time(1, SC_NS));
   std::array<std::uint8_t, 8> data{}, enables{0xFF, 0, 0xFF, 0, 0xFF, 0, 0xFF, 0};
   std::vector<Outcome> o;
+  Outcome at_empty;
   LtInitiator driver("driver", [&](LtInitiator& self) {
     Request masked = write_request(0x100, data.data(), 8);
     masked.byte_enable = enables.data();
@@ -196,13 +197,19 @@ TEST(BaseProtocol, PciBusPassesAttributesThroughAndTimesTransfersWithoutData) {
     ignore.command = tlm::TLM_IGNORE_COMMAND;
     o.push_back(self.transport(ignore));
   });
+  AtInitiator dma("dma", [&](AtInitiator& self) {
+    sc_core::wait(sc_time(5, SC_US));
+    at_empty = self.transport(read_request(0x100, data.data(), 0));
+  });
   driver.out.bind(bus.in);
+  dma.out.bind(bus.in);
   bus.out.bind(target.in);
   bus.map(0, 0x1000, 0, "target");
   sc_core::sc_start();
 
   EXPECT_EQ(driver.violations(), Violations{});
-  ASSERT_EQ(target.received.size(), 3u);
+  EXPECT_EQ(dma.violations(), Violations{});
+  ASSERT_EQ(target.received.size(), 2u);
   EXPECT_EQ(target.received[0].byte_enable, enables.data());
   EXPECT_EQ(target.received[0].byte_enable_length, 4u);
   EXPECT_EQ(target.received[0].streaming_width, 4u);
@@ -210,19 +217,22 @@ TEST(BaseProtocol, PciBusPassesAttributesThroughAndTimesTransfersWithoutData) {
   EXPECT_EQ(target.received[0].address, 0x100u);
   ASSERT_EQ(o.size(), 3u);
   EXPECT_EQ(o[0].response, sc_time(10 * 30, SC_NS));
-  EXPECT_EQ(o[1].status, tlm::TLM_OK_RESPONSE);
-  EXPECT_EQ(o[1].response, sc_time(1000 + 8 * 30, SC_NS));
-  EXPECT_EQ(target.received[1].length, 0u);
+  EXPECT_EQ(o[1].status, tlm::TLM_BURST_ERROR_RESPONSE);
+  EXPECT_EQ(o[1].response, sc_time(1000, SC_NS));
   EXPECT_EQ(o[2].status, tlm::TLM_OK_RESPONSE);
   EXPECT_EQ(o[2].response, sc_time(2000 + 8 * 30, SC_NS));
-  EXPECT_EQ(target.received[2].command, tlm::TLM_IGNORE_COMMAND);
+  EXPECT_EQ(target.received[1].command, tlm::TLM_IGNORE_COMMAND);
+  EXPECT_EQ(at_empty.status, tlm::TLM_BURST_ERROR_RESPONSE);
+  EXPECT_EQ(at_empty.response, sc_time(5, SC_US));
+  EXPECT_EQ(bus.report().total.transactions, 2u);
   EXPECT_EQ(bus.report().total.bytes_written, 8u);
   EXPECT_EQ(bus.report().total.bytes_read, 0u);
+  EXPECT_EQ(bus.report().bus_free_at, sc_time(2000 + 8 * 30, SC_NS));
 }
 
 // Router (3 cycles of 10 ns) in front of a bank and a recording target: LT and AT reads and writes
-// with the latency, unmapped and straddling addresses (address error, no time), attributes passed
-// through untouched.
+// with the latency, unmapped and straddling addresses (address error, no time), zero-length reads
+// (burst error, no time, not routed), attributes passed through untouched.
 TEST(BaseProtocol, RouterLooselyAndApproximatelyTimed) {
   RouterConfig config;
   config.latency_cycles = 3;
@@ -239,6 +249,7 @@ TEST(BaseProtocol, RouterLooselyAndApproximatelyTimed) {
     masked.byte_enable = enables.data();
     masked.byte_enable_length = 4;
     lt.push_back(self.transport(masked));
+    lt.push_back(self.transport(read_request(0x20'0040, back.data(), 0, sc_time(2, SC_US))));
   });
   AtInitiator fpga("fpga", [&](AtInitiator& self) {
     sc_core::wait(sc_time(5, SC_US));
@@ -249,6 +260,7 @@ TEST(BaseProtocol, RouterLooselyAndApproximatelyTimed) {
     masked.byte_enable_length = 4;
     masked.streaming_width = 8;
     at.push_back(self.transport(masked, EndResponse::accepted, sc_time(5, SC_NS)));
+    at.push_back(self.transport(read_request(0x20'0040, back.data(), 0)));
   });
   cpu.out.bind(router.in);
   fpga.out.bind(router.in);
@@ -261,8 +273,8 @@ TEST(BaseProtocol, RouterLooselyAndApproximatelyTimed) {
   EXPECT_EQ(cpu.violations(), Violations{});
   EXPECT_EQ(fpga.violations(), Violations{});
   EXPECT_EQ(fpga.payloads_in_use(), 0u);
-  ASSERT_EQ(lt.size(), 4u);
-  ASSERT_EQ(at.size(), 3u);
+  ASSERT_EQ(lt.size(), 5u);
+  ASSERT_EQ(at.size(), 4u);
   EXPECT_EQ(lt[0].status, tlm::TLM_OK_RESPONSE);
   EXPECT_EQ(lt[0].response, sc_time(30 + 40, SC_NS));  // router 30 ns + bank (2 + 2 words) * 10 ns
   EXPECT_TRUE(lt[0].dmi_hint);                        // the bank's hint passes (and DMI is granted)
@@ -279,6 +291,10 @@ TEST(BaseProtocol, RouterLooselyAndApproximatelyTimed) {
   EXPECT_EQ(at[2].status, tlm::TLM_OK_RESPONSE);
   EXPECT_EQ(at[2].response, sc_time(5070 + 37, SC_NS));
   EXPECT_EQ(at[2].end_response, sc_time(5070 + 42, SC_NS));
+  EXPECT_EQ(lt[4].status, tlm::TLM_BURST_ERROR_RESPONSE);
+  EXPECT_EQ(lt[4].response, sc_time(2, SC_US));
+  EXPECT_EQ(at[3].status, tlm::TLM_BURST_ERROR_RESPONSE);
+  EXPECT_EQ(at[3].response, sc_time(5112, SC_NS));
   ASSERT_EQ(target.received.size(), 2u);
   for (const Attributes& a : target.received) {
     EXPECT_EQ(a.address, 0x40u);  // window-relative

@@ -1,6 +1,9 @@
 #include "radiosity/radiosity.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
 #include <stdexcept>
 
 namespace rc {
@@ -23,15 +26,18 @@ double ProgressiveRadiosity::unshot_power(int patch) const {
   return unshot_[patch].sum() * scene_.patches[patch].area;
 }
 
-// The patch with the most unshot power; the lowest index wins ties, so runs are deterministic.
-int ProgressiveRadiosity::choose_shooter() const {
-  int best = 0;
+// The patch with the most unshot power; the lowest index wins ties, so runs are deterministic. The
+// same pass sums the unshot power, in index order, as run() sums the emitted power.
+ProgressiveRadiosity::UnshotScan ProgressiveRadiosity::scan_unshot() const {
+  UnshotScan scan;
   double best_power = unshot_power(0);
+  scan.total = best_power;
   for (int i = 1; i < static_cast<int>(scene_.patches.size()); ++i) {
     const double p = unshot_power(i);
-    if (p > best_power) best = i, best_power = p;
+    scan.total += p;
+    if (p > best_power) scan.shooter = i, best_power = p;
   }
-  return best;
+  return scan;
 }
 
 bool ProgressiveRadiosity::done(int steps, double max_unshot) const {
@@ -51,20 +57,38 @@ SolverResult ProgressiveRadiosity::run() {
     result.energy.emitted += unshot_power(i);
     result.max_initial_power = std::max(result.max_initial_power, unshot_power(i));
   }
+  if (!std::isfinite(result.energy.emitted)) {
+    throw std::invalid_argument("the emitted power (emission x area, summed over patches and bands) is not finite: "
+                                "the emission values are too large");
+  }
   if (result.max_initial_power <= 0) throw std::invalid_argument("scene emits no light");
   initial_max_power_ = result.max_initial_power;
+  // Energy guard. With exact form factors (summing to at most 1 over a shooter's receivers) and
+  // rho < 1, every step loses energy, so the total unshot power never exceeds the emitted power.
+  // The point and disc rules can overshoot near a patch (the default Cornell solve has 15 steps that
+  // add up to 1.3 times the shot power back to unshot), but in every converging solve measured the
+  // total stays below the emitted power (at most 0.9988 of it, docs/radiosity.md, Guards); a solve
+  // that diverges grows it geometrically. So exceeding the emitted power is the error. The computed
+  // sums differ from the exact ones by at most (n + 2) u relative each (Higham's bound for
+  // recursive summation of n products of 3-band sums, u = epsilon / 2); the limit allows twice that.
+  const double rounding = 2.0 * (n + 2) * std::numeric_limits<double>::epsilon();
+  energy_limit_ = result.energy.emitted * (1.0 + rounding);
   visibility_.load_faces(scene_.face_triangles());
 
-  int shooter = choose_shooter();
+  UnshotScan scan = scan_unshot();
   charge(HostWork::PatchScan, n);
-  while (!done(result.steps, unshot_power(shooter))) {
+  while (!done(result.steps, unshot_power(scan.shooter))) {
+    const int shooter = scan.shooter;
     shoot(shooter, result);
     ++result.steps;
     charge(HostWork::Step, 1);
-    shooter = choose_shooter();
+    scan = scan_unshot();
     charge(HostWork::PatchScan, n);
-    if (progress_) progress_({result.steps, 1.0 - unshot_power(shooter) / initial_max_power_});
+    check_energy(result.steps, shooter, scan.total, result);
+    if (progress_) progress_({result.steps, 1.0 - unshot_power(scan.shooter) / initial_max_power_});
   }
+  check_radiosity_finite(result.steps);
+  const int shooter = scan.shooter;
   result.max_unshot_power = unshot_power(shooter);
   result.convergence_reached = 1.0 - result.max_unshot_power / initial_max_power_;
   result.converged = options_.fixed_steps > 0 ? false : result.max_unshot_power < (1.0 - options_.convergence) * initial_max_power_;
@@ -76,6 +100,7 @@ SolverResult ProgressiveRadiosity::run() {
 void ProgressiveRadiosity::shoot(int shooter, SolverResult& result) {
   const Patch& s = scene_.patches[shooter];
   const Spectrum shot = unshot_[shooter];
+  last_shot_ = shot;
   const double shot_power = shot.sum() * s.area;
   unshot_[shooter] = Spectrum{};
 
@@ -145,6 +170,102 @@ void ProgressiveRadiosity::shoot(int shooter, SolverResult& result) {
   }
   charge(HostWork::EnergyUpdate, updated);
   result.energy.escaping += shot_power - arrived;
+}
+
+namespace {
+
+// Vertices of `a` that are also vertices of `b` (exact coordinates: faces that meet share them).
+int shared_vertices(const Triangle& a, const Triangle& b) {
+  int shared = 0;
+  for (const Vec3& v : {a.v0, a.v1, a.v2}) shared += v == b.v0 || v == b.v1 || v == b.v2;
+  return shared;
+}
+
+}  // namespace
+
+std::string ProgressiveRadiosity::patch_name(int patch) const {
+  const int face = scene_.patches[patch].face;
+  const int surface = scene_.faces[face].surface;
+  std::string name = "patch " + std::to_string(patch) + " (face " + std::to_string(face);
+  if (surface >= 0 && surface < static_cast<int>(scene_.surface_names.size())) {
+    name += ", surface '" + scene_.surface_names[surface] + "'";
+  }
+  return name + ")";
+}
+
+// What the last step did, from its scratch (still intact): the receiver with the largest form
+// factor, how much power the step put back into unshot, and what to try.
+std::string ProgressiveRadiosity::last_step_diagnosis(int shooter) const {
+  const Patch& s = scene_.patches[shooter];
+  const double shot_power = last_shot_.sum() * s.area;
+  double reflected = 0;
+  std::size_t largest = receivers_.size();
+  for (std::size_t k = 0; k < receivers_.size(); ++k) {
+    if (!batch_.is_needed(k) || blocked_[k]) continue;
+    const Patch& r = scene_.patches[receivers_[k]];
+    reflected += (scene_.material_of(r).reflectance * last_shot_ * form_factors_[k]).sum() * r.area;
+    if (largest == receivers_.size() || !(form_factors_[k] <= form_factors_[largest])) largest = k;
+  }
+  std::ostringstream m;
+  m.precision(6);
+  m << "That step shot " << shot_power << " from " << patch_name(shooter) << " and gave " << reflected
+    << " back to unshot power";
+  bool folded = false;
+  if (largest < receivers_.size()) {
+    const int r = receivers_[largest];
+    const double F = form_factors_[largest];
+    m << "; its largest form factor, to " << patch_name(r) << " at distance "
+      << std::sqrt(geometry_[largest].distance_squared) << ", is " << F;
+    if (!(F <= 1)) m << " (above 1: the patches are close against their size)";
+    // Two faces that share an edge and face each other: a fold. Its form factor does not shrink
+    // with the patches (the geometry near the edge is the same at every scale).
+    const Face& face_s = scene_.faces[s.face];
+    const Face& face_r = scene_.faces[scene_.patches[r].face];
+    folded = s.face != scene_.patches[r].face && shared_vertices(face_s.tri, face_r.tri) >= 2;
+    if (folded) {
+      const double degrees = std::acos(std::clamp(glm::dot(s.normal, scene_.patches[r].normal), -1.0, 1.0)) * 180 / M_PI;
+      m << ". Faces " << s.face << " and " << scene_.patches[r].face << " share an edge and fold onto each other "
+        << "(their normals are " << std::lround(degrees) << " degrees apart)";
+      if (face_s.surface == face_r.surface) m << ": the two triangles of one quad, which is not planar; fix its vertices";
+    }
+  }
+  m << ". Try ";
+  if (options_.form_factor == FormFactorKind::PointToPoint) m << "--form-factor disc (bounded near a patch), ";
+  if (!folded) {
+    m << "smaller patches (--patch-levels, --patch-size) so that no patch is large against its distance to its "
+         "neighbours, or check the scene for surfaces that fold onto each other";
+  } else {
+    m << "opening the fold (smaller patches do not help: the form factor across a fold is the same at every "
+         "patch size)";
+  }
+  m << " (docs/radiosity.md, Guards)";
+  return m.str();
+}
+
+void ProgressiveRadiosity::check_energy(int step, int shooter, double total_unshot, const SolverResult& result) const {
+  if (std::isfinite(total_unshot) && total_unshot <= energy_limit_) return;
+  std::ostringstream m;
+  m.precision(6);
+  m << "the solve diverged at step " << step << ": ";
+  if (!std::isfinite(total_unshot)) {
+    m << "the total unshot power is " << total_unshot << " (not finite)";
+  } else {
+    m << "the total unshot power " << total_unshot << " exceeds the emitted power " << result.energy.emitted
+      << " (the form factors create energy; a solve that converges only loses it)";
+  }
+  throw SolveDiverged(m.str() + ". " + last_step_diagnosis(shooter));
+}
+
+void ProgressiveRadiosity::check_radiosity_finite(int steps) const {
+  for (int i = 0; i < static_cast<int>(radiosity_.size()); ++i) {
+    for (double b : radiosity_[i].band) {
+      if (std::isfinite(b)) continue;
+      std::ostringstream m;
+      m << "the solve diverged: after " << steps << " steps the radiosity of " << patch_name(i) << " is " << b
+        << " (not finite); try --form-factor disc or smaller patches (docs/radiosity.md, Guards)";
+      throw SolveDiverged(m.str());
+    }
+  }
 }
 
 }  // namespace rc

@@ -1,10 +1,16 @@
 // Progressive-refinement (shooting) radiosity, paper sec 2: shoot from the patch with the most
 // unshot power, update every receiver in front of it with form factor x visibility, until the
 // largest unshot power falls below (1 - convergence) of the largest initial (emitted) power.
+//
+// Guarded (docs/radiosity.md, "Guards"): a solve whose unshot power exceeds the emitted power, or
+// whose radiosity or unshot power is not finite, stops with SolveDiverged, whose message says at
+// which step, which patches and form factor were involved, and what to try.
 #pragma once
 
 #include <cstdint>
 #include <functional>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "radiosity/form_factor.h"
@@ -13,6 +19,14 @@
 #include "scenes/scene.h"
 
 namespace rc {
+
+// The solve has created energy (more power waiting to be shot than the lights ever emitted) or
+// produced a value that is not finite. what() names the step, the patches and the largest form
+// factor of that step, and what to try (--form-factor disc, smaller patches, fixing a folded quad).
+class SolveDiverged : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 struct SolverOptions {
   double convergence = 0.995;  // paper: 99.5%
@@ -62,8 +76,20 @@ class ProgressiveRadiosity {
   SolverResult run();
 
  private:
-  int choose_shooter() const;
+  // One pass over the patches: the next shooter (most unshot power, lowest index on ties) and the
+  // total unshot power, which the energy guard checks.
+  struct UnshotScan {
+    int shooter = 0;
+    double total = 0;
+  };
+  UnshotScan scan_unshot() const;
   double unshot_power(int patch) const;
+  // Throws SolveDiverged when the total unshot power after `step` steps is not finite or exceeds
+  // the emitted power beyond the sums' rounding; `shooter` shot last.
+  void check_energy(int step, int shooter, double total_unshot, const SolverResult& result) const;
+  void check_radiosity_finite(int steps) const;
+  std::string last_step_diagnosis(int shooter) const;
+  std::string patch_name(int patch) const;
   bool done(int steps, double max_unshot) const;
   void shoot(int shooter, SolverResult& result);
   void charge(HostWork work, std::uint64_t count);
@@ -77,6 +103,8 @@ class ProgressiveRadiosity {
   std::vector<Spectrum> radiosity_;
   std::vector<Spectrum> unshot_;
   double initial_max_power_ = 0;
+  double energy_limit_ = 0;  // the emitted power plus the rounding of the sums that measure it
+  Spectrum last_shot_;       // what the last step shot (for SolveDiverged's diagnosis)
   // Per-step scratch, kept to avoid reallocating every step.
   SegmentBatch batch_;
   std::vector<int> receivers_;

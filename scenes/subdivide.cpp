@@ -1,7 +1,8 @@
 #include "scenes/subdivide.h"
 
 #include <algorithm>
-
+#include <cstdint>
+#include <queue>
 #include <stdexcept>
 #include <string>
 
@@ -62,22 +63,64 @@ std::vector<Face> split_faces(const std::vector<Face>& faces, int levels) {
   return out;
 }
 
+namespace {
+
+// A face of the refinement and its place in the output: the index of the face it came from, then
+// the halves taken from there (first half 0, second 1) as bits from the most significant down.
+// Halves replace their parent in place, first then second, so this is the place the list-based
+// definition (bisect the largest, insert the second half after the first) keeps them in; no piece
+// is another's ancestor, so comparing the left-aligned paths compares them lexicographically.
+struct Piece {
+  Face face;
+  double area = 0;
+  std::size_t origin = 0;
+  std::uint64_t path = 0;
+  int depth = 0;
+};
+
+bool placed_before(const Piece& a, const Piece& b) { return a.origin != b.origin ? a.origin < b.origin : a.path < b.path; }
+
+// Priority: the larger area; on equal areas the piece placed first ("lowest index on ties").
+struct SplitLater {
+  bool operator()(const Piece& a, const Piece& b) const { return a.area != b.area ? a.area < b.area : placed_before(b, a); }
+};
+
+}  // namespace
+
+// O(n log n): a heap ordered by (area, place) picks exactly the face the definition picks (the
+// largest, the lowest index on ties), and the pieces are put in place order at the end. Areas are
+// those of Triangle::area, computed once per piece, as the definition computes them.
 std::vector<Face> refine_to_count(const std::vector<Face>& faces, int target) {
   if (target < static_cast<int>(faces.size())) {
     throw std::invalid_argument("cannot refine " + std::to_string(faces.size()) + " faces down to " +
                                 std::to_string(target));
   }
-  std::vector<Face> out = faces;
-  while (static_cast<int>(out.size()) < target) {
-    std::size_t largest = 0;
-    for (std::size_t i = 1; i < out.size(); ++i) {
-      if (out[i].tri.area() > out[largest].tri.area()) largest = i;
-    }
-    const auto [first, second] = bisect_longest_edge(out[largest].tri);
-    const Face parent = out[largest];
-    out[largest].tri = first;
-    out.insert(out.begin() + static_cast<std::ptrdiff_t>(largest) + 1, Face{second, parent.material, parent.surface});
+  std::vector<Piece> start;
+  start.reserve(static_cast<std::size_t>(target));
+  for (std::size_t i = 0; i < faces.size(); ++i) start.push_back({faces[i], faces[i].tri.area(), i, 0, 0});
+  std::priority_queue<Piece, std::vector<Piece>, SplitLater> heap(SplitLater{}, std::move(start));
+  for (std::size_t count = faces.size(); count < static_cast<std::size_t>(target); ++count) {
+    const Piece parent = heap.top();
+    heap.pop();
+    // Each bisection halves the area, and only the largest piece is split, so the pieces of one
+    // face differ in depth by one or two: depth stays near log2(target) < 32.
+    if (parent.depth >= 63) throw std::logic_error("refine_to_count: a face was bisected 63 times");
+    const auto [first, second] = bisect_longest_edge(parent.face.tri);
+    const std::uint64_t second_bit = std::uint64_t{1} << (63 - parent.depth);
+    heap.push({{first, parent.face.material, parent.face.surface}, first.area(), parent.origin, parent.path, parent.depth + 1});
+    heap.push({{second, parent.face.material, parent.face.surface}, second.area(), parent.origin,
+               parent.path | second_bit, parent.depth + 1});
   }
+  std::vector<Piece> pieces;
+  pieces.reserve(heap.size());
+  while (!heap.empty()) {
+    pieces.push_back(heap.top());
+    heap.pop();
+  }
+  std::sort(pieces.begin(), pieces.end(), placed_before);
+  std::vector<Face> out;
+  out.reserve(pieces.size());
+  for (const Piece& p : pieces) out.push_back(p.face);
   return out;
 }
 

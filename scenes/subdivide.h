@@ -13,7 +13,8 @@ namespace rc {
 std::vector<Face> split_faces(const std::vector<Face>& faces, int levels);
 
 // Repeatedly bisects the largest face (lowest index on ties) across its longest edge (first edge
-// on ties) until there are exactly `target` faces. Throws if target < faces.size().
+// on ties) until there are exactly `target` faces, the second half placed right after the first.
+// Runs in O(target log target). Throws if target < faces.size().
 std::vector<Face> refine_to_count(const std::vector<Face>& faces, int target);
 
 // Patches: each face split uniformly into 4^levels sub-triangles, grouped by face in face order.

@@ -144,6 +144,13 @@ HdrImage render_radiosity(const Scene& scene, const std::vector<Spectrum>& radio
   if (options.width <= 0 || options.height <= 0 || options.supersample <= 0) {
     throw std::invalid_argument("image size and supersampling must be positive");
   }
+  // A degenerate camera would project nothing (an all-black picture); NaN radiosity would too.
+  check_camera(scene.camera);
+  for (std::size_t i = 0; i < radiosity.size(); ++i) {
+    for (double b : radiosity[i].band) {
+      if (!std::isfinite(b)) throw std::invalid_argument("the radiosity of patch " + std::to_string(i) + " is not finite");
+    }
+  }
   const int w = options.width * options.supersample, h = options.height * options.supersample;
   HdrImage big{w, h, std::vector<Spectrum>(std::size_t(w) * h), std::vector<bool>(std::size_t(w) * h, false)};
   std::vector<double> depth(big.pixels.size(), 0.0);

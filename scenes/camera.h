@@ -12,4 +12,17 @@ struct Camera {
   double vertical_fov_deg = 39.3077;  // 2 atan(12.5 mm / 35 mm): the Cornell film and focal length
 };
 
+// The smallest sine of the angle between the up vector and the view direction that check_camera
+// accepts. The picture's right vector is cross(view, up) normalised; computed from unit vectors its
+// direction is off by about epsilon / sine, so at 1e-6 it is right to 2e-10 rad, while an up vector
+// within 0.00006 degrees of the view is no choice anyone means.
+constexpr double kMinCameraUpSine = 1e-6;
+
+// The one check of a camera, run wherever one is made (scene files, after normalisation, before
+// rendering). Throws std::invalid_argument naming the problem (callers add the file and line):
+// a coordinate that is not finite, the eye at the point looked at (no view direction), a zero up
+// vector or one parallel to the view direction (within kMinCameraUpSine), or a vertical field of
+// view outside (0, 180) degrees. Scale-free: a camera at 1e-300 or 1e200 is judged as at 1.
+void check_camera(const Camera& camera);
+
 }  // namespace rc

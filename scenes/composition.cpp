@@ -9,8 +9,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
+#include "io/input_file.h"
 #include "scenes/cornell_box.h"
 #include "scenes/mesh_import.h"
+#include "scenes/scene_builder.h"
 
 namespace rc {
 
@@ -176,23 +178,33 @@ void append(Scene& scene, Scene part, const Material* override_material) {
 
 }  // namespace
 
+namespace {
+
+std::string read_description(const std::string& path) {
+  try {
+    return io::read_file(path, io::kSceneLimitBytes, "a scene file");
+  } catch (const io::InputFileError& e) {
+    throw SceneFileError(e.what());
+  }
+}
+
+}  // namespace
+
 bool is_composition_file(const std::string& path) {
-  std::ifstream in(path);
+  // Only a file whose first non-space character (within kSniffBytes) is '{' is read whole.
+  std::ifstream in(path, std::ios::binary);
   char c = 0;
-  while (in.get(c) && std::isspace(static_cast<unsigned char>(c))) {
+  for (std::size_t read = 0; read < kSniffBytes && in.get(c) && std::isspace(static_cast<unsigned char>(c)); ++read) {
   }
   if (c != '{') return false;
-  in.seekg(0);
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  const nlohmann::json j = nlohmann::json::parse(read_description(path), nullptr, false);
   return j.is_object() && j.value("schema", "") == kSchema;
 }
 
 LoadedScene load_composition(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw SceneFileError(path + ": cannot open");
   nlohmann::json json;
   try {
-    json = nlohmann::json::parse(in);
+    json = nlohmann::json::parse(read_description(path));
   } catch (const nlohmann::json::exception& e) {
     throw SceneFileError(path + ": not valid JSON: " + e.what());
   }
@@ -235,12 +247,18 @@ LoadedScene load_composition(const std::string& path) {
     }
     std::vector<Vec3> c;
     for (int k = 0; k < 4; ++k) c.push_back(d.vec3(l["corners"][k], "light.corners[" + std::to_string(k) + "]"));
-    Scene light;
-    light.name = "light";
-    light.materials.push_back({"light", Spectrum{}, d.spectrum(l.value("emission", nlohmann::json()), "light.emission", 1e300)});
-    light.faces.push_back({Triangle{c[0], c[1], c[2]}, 0, 0});
-    light.faces.push_back({Triangle{c[0], c[2], c[3]}, 0, 0});
-    append(out.scene, std::move(light), nullptr);
+    // Through the builder, as every surface: a folded quad is an error, a zero-area half a warning.
+    SceneBuilder light("light");
+    const int material =
+        light.add_material({"light", Spectrum{}, d.spectrum(l.value("emission", nlohmann::json()), "light.emission", 1e300)});
+    try {
+      light.add_surface("light", material, c, path + ": light.corners");
+    } catch (const std::invalid_argument& e) {
+      throw SceneFileError(e.what());  // starts with the file and the key
+    }
+    if (light.face_count() == 0) d.fail("light.corners", "the light has no area");
+    out.warnings.insert(out.warnings.end(), light.warnings().begin(), light.warnings().end());
+    append(out.scene, light.build(), nullptr);
   }
   if (out.scene.faces.empty()) d.fail("(top level)", "the composed scene has no faces");
   if (!out.scene.emits_light()) d.fail("light", "nothing in the composed scene emits light: add a light or an emissive material");

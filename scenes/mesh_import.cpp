@@ -17,6 +17,7 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include "io/input_file.h"
 #include "scenes/scene_builder.h"
 
 namespace rc {
@@ -144,8 +145,14 @@ const aiScene* read_capped(Assimp::Importer& importer, const std::string& path, 
 }  // namespace
 
 bool is_text_scene_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return false;
+  // The first keyword is looked for in the first kSniffBytes only: a device or a file without line
+  // breaks (/dev/zero) must not be read to its end here.
+  std::ifstream file(path, std::ios::binary);
+  if (!file) return false;
+  std::string head(kSniffBytes, '\0');
+  file.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(file.gcount()));
+  std::istringstream in(head);
   std::string line;
   for (int lines = 0; lines < 1000 && std::getline(in, line); ++lines) {
     std::istringstream words(line);
@@ -157,6 +164,12 @@ bool is_text_scene_file(const std::string& path) {
 }
 
 LoadedScene import_mesh_file(const std::string& path, const MeshImportOptions& o) {
+  // Assimp opens the file itself and would read a device or a pipe without end.
+  try {
+    io::check_regular_file(path, io::kSceneLimitBytes, "a mesh file");
+  } catch (const io::InputFileError& e) {
+    throw SceneFileError(e.what());
+  }
   if (!std::ifstream(path)) throw SceneFileError(path + ": cannot open");
   Assimp::Importer importer;
   // Points and lines are removed by the sort (they carry no area); node transforms are applied.

@@ -6,6 +6,7 @@
 // "Meshes". Errors name the file and the reason.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 #include "scenes/scene_file.h"
@@ -21,12 +22,14 @@ struct MeshImportOptions {
   bool require_emitter = true;  // a scene that emits no light is an error
 };
 
-// Throws SceneFileError naming the file: Assimp could not read it, it has no triangles, or (with
-// require_emitter) none of its materials emits light.
+// Throws SceneFileError naming the file: it is not a regular file of at most io::kSceneLimitBytes,
+// Assimp could not read it, it has no triangles, or (with require_emitter) none of its materials
+// emits light.
 LoadedScene import_mesh_file(const std::string& path, const MeshImportOptions& options = {});
 
-// True when the file is in rc2000sim's own text scene format (its first keyword is material,
-// quad, tri or camera); anything else goes to Assimp.
+// True when the file is in rc2000sim's own text scene format (its first keyword, within the first
+// kSniffBytes, is material, quad, tri or camera); anything else goes to Assimp.
+constexpr std::size_t kSniffBytes = 64 * 1024;
 bool is_text_scene_file(const std::string& path);
 
 }  // namespace rc

@@ -1,5 +1,8 @@
 #include "scenes/prepare.h"
 
+#include <cstdio>
+#include <stdexcept>
+
 #include "scenes/composition.h"
 #include "scenes/cornell_box.h"
 #include "scenes/mesh_import.h"
@@ -8,6 +11,34 @@
 #include "scenes/subdivide.h"
 
 namespace rc {
+
+namespace {
+
+// "<what> <count> <unit>, more than the limit of ...".
+void check_limit(std::uint64_t count, std::uint64_t limit, const std::string& what, const char* unit,
+                 const char* limit_name) {
+  if (count <= limit) return;
+  throw std::invalid_argument(what + " " + std::to_string(count) + " " + unit + ", more than the limit of " +
+                              std::to_string(limit) + " (" + limit_name + ", set by the memory a solve needs; " +
+                              "docs/scenes.md, Limits)");
+}
+
+// Levels outside 0..8 are refused by split_faces and make_patches themselves.
+bool valid_levels(int levels) { return levels >= 0 && levels <= 8; }
+
+std::uint64_t patches_of_size(const std::vector<Face>& faces, double size) {
+  std::uint64_t count = 0;
+  for (const Face& f : faces) count += std::uint64_t{1} << (2 * levels_for_size(f.tri, size));
+  return count;
+}
+
+std::string format_number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+}  // namespace
 
 PreparedScene prepare_scene(const SceneOptions& options) { return prepare_scene(options, nullptr); }
 
@@ -20,7 +51,6 @@ PreparedScene prepare_scene(const SceneOptions& options, const std::function<voi
   if (options.file.empty()) {
     out.scene = cornell_box();
   } else {
-    // Our text format, or any format Assimp reads (recognised by content).
     // Our text format, a composition (JSON), or any format Assimp reads (recognised by content).
     LoadedScene loaded = is_text_scene_file(options.file)    ? load_scene_file(options.file)
                          : is_composition_file(options.file) ? load_composition(options.file)
@@ -29,13 +59,31 @@ PreparedScene prepare_scene(const SceneOptions& options, const std::function<voi
     out.warnings = std::move(loaded.warnings);
   }
   Scene& scene = out.scene;
+  check_limit(scene.faces.size(), kMaxFaces, options.file + " has", "faces", "kMaxFaces");
+  if (options.face_target < 0) throw std::invalid_argument("--faces must not be negative, got " + std::to_string(options.face_target));
+  check_limit(static_cast<std::uint64_t>(options.face_target), kMaxFaces, "--faces asks for", "faces", "kMaxFaces");
+  // Exact, and every area comparison of the refinement comes out as at the scene's own size.
+  rescale_by_power_of_two(scene);
   if (options.face_target > 0) {
     phase("refining " + std::to_string(scene.faces.size()) + " faces to " + std::to_string(options.face_target));
     scene.faces = refine_to_count(scene.faces, options.face_target);
   }
+  if (valid_levels(options.face_levels)) {
+    const std::uint64_t faces = std::uint64_t{scene.faces.size()} << (2 * options.face_levels);
+    check_limit(faces, kMaxFaces, "--face-levels " + std::to_string(options.face_levels) + " makes", "faces", "kMaxFaces");
+    // Uniform patches are counted before the faces are split; patches of a size need the geometry.
+    if (options.patch_size <= 0 && valid_levels(options.patch_levels)) {
+      check_limit(faces << (2 * options.patch_levels), kMaxPatches,
+                  "--patch-levels " + std::to_string(options.patch_levels) + " makes", "patches", "kMaxPatches");
+    }
+  }
   if (options.face_levels > 0) phase("splitting " + std::to_string(scene.faces.size()) + " faces");
   scene.faces = split_faces(scene.faces, options.face_levels);
   normalise(scene);
+  if (options.patch_size > 0) {
+    check_limit(patches_of_size(scene.faces, options.patch_size), kMaxPatches,
+                "--patch-size " + format_number(options.patch_size) + " makes", "patches", "kMaxPatches");
+  }
   phase("making patches of " + std::to_string(scene.faces.size()) + " faces");
   scene.patches = options.patch_size > 0 ? make_patches_of_size(scene.faces, options.patch_size)
                                          : make_patches(scene.faces, options.patch_levels);

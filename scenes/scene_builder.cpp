@@ -1,6 +1,8 @@
 #include "scenes/scene_builder.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace rc {
@@ -8,8 +10,10 @@ namespace rc {
 namespace {
 
 // A triangle is degenerate when its area is negligible against its longest edge squared:
-// the normal is then meaningless and it can neither emit nor block reliably.
-bool is_degenerate(const Triangle& t) {
+// the normal is then meaningless and it can neither emit nor block reliably. Judged on the triangle
+// scaled exactly into [-1, 1)^3, so that a triangle at 1e200 or 1e-300 is judged as at 1.
+bool is_degenerate(const Triangle& unscaled) {
+  const Triangle t = scaled_to_unit(unscaled);
   const double longest = std::max({glm::length(t.v1 - t.v0), glm::length(t.v2 - t.v1),
                                    glm::length(t.v0 - t.v2)});
   return longest == 0.0 || glm::length(t.cross()) <= 1e-9 * longest * longest;
@@ -22,6 +26,22 @@ void check_spectrum(const std::string& material, const char* what, const Spectru
                                   " is outside [0, " + (upper > 1e300 ? std::string("inf") : std::to_string(upper)) + ")");
     }
   }
+}
+
+// The angle between the normals of a quad's two triangles (v0 v1 v2 and v0 v2 v3), in degrees:
+// 0 for a planar quad, 180 for a bow tie. Computed on the quad scaled exactly into [-1, 1)^3.
+double fold_degrees(const std::vector<Vec3>& v) {
+  const int e = -magnitude_exponent({v[0], v[1], v[2], v[3]});
+  Vec3 s[4];
+  for (int i = 0; i < 4; ++i) s[i] = scaled_by_power_of_two(v[i], e);
+  const Vec3 a = Triangle{s[0], s[1], s[2]}.normal(), b = Triangle{s[0], s[2], s[3]}.normal();
+  return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)) * 180.0 / M_PI;
+}
+
+std::string format_degrees(double degrees) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", degrees);
+  return text;
 }
 
 }  // namespace
@@ -55,10 +75,25 @@ void SceneBuilder::add_surface(const std::string& name, int material,
   if (vertices.size() != 3 && vertices.size() != 4) {
     throw std::invalid_argument(origin + ": a surface needs 3 or 4 vertices");
   }
+  for (const Vec3& v : vertices) {
+    if (!is_finite(v)) throw std::invalid_argument(origin + ": surface '" + name + "' has a coordinate that is not finite");
+  }
+  if (vertices.size() == 4) check_planar(name, vertices, origin);
   const int surface = static_cast<int>(scene_.surface_names.size());
   scene_.surface_names.push_back(name);
   add_triangle({vertices[0], vertices[1], vertices[2]}, material, surface, origin);
   if (vertices.size() == 4) add_triangle({vertices[0], vertices[2], vertices[3]}, material, surface, origin);
+}
+
+void SceneBuilder::check_planar(const std::string& name, const std::vector<Vec3>& v, const std::string& origin) const {
+  // A degenerate half is dropped with a warning (add_triangle); the other half is then planar.
+  if (is_degenerate({v[0], v[1], v[2]}) || is_degenerate({v[0], v[2], v[3]})) return;
+  const double fold = fold_degrees(v);
+  if (fold <= kMaxQuadFoldDegrees) return;
+  throw std::invalid_argument(origin + ": quad '" + name + "' is not planar: its triangles v0 v1 v2 and v0 v2 v3 " +
+                              "are folded by " + format_degrees(fold) + " degrees along v0-v2 (at most " +
+                              format_degrees(kMaxQuadFoldDegrees) + " allowed). Fix the vertices (their order: a " +
+                              "bow tie folds by 180), or write the fold as two 'tri' lines if it is meant");
 }
 
 void SceneBuilder::add_triangle(const Triangle& tri, int material, int surface,

@@ -1,9 +1,10 @@
 #include "scenes/scene_file.h"
 
-#include <cmath>
-#include <fstream>
+#include <optional>
 #include <sstream>
 
+#include "io/input_file.h"
+#include "io/parse_number.h"
 #include "scenes/scene_builder.h"
 
 namespace rc {
@@ -25,17 +26,12 @@ class LineParser {
     if (!next_word(w)) fail(std::string("missing ") + what);
     return w;
   }
+  // The whole word must be a finite decimal number ("1.5x", "nan", "1e999" are refused).
   double number(const char* what) {
     const std::string w = word(what);
-    std::size_t used = 0;
-    double value = 0;
-    try {
-      value = std::stod(w, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != w.size() || !std::isfinite(value)) fail(std::string("'") + w + "' is not a number (" + what + ")");
-    return value;
+    const std::optional<double> value = io::parse_finite(w);
+    if (!value) fail(std::string("'") + w + "' is not a finite number (" + what + ")");
+    return *value;
   }
   Vec3 vec3(const char* what) {
     const double x = number(what), y = number(what), z = number(what);
@@ -88,7 +84,11 @@ void parse_surface(LineParser& p, SceneBuilder& builder, int corners) {
   std::vector<Vec3> v;
   for (int i = 0; i < corners; ++i) v.push_back(p.vec3("vertex coordinate"));
   p.expect_end();
-  builder.add_surface(name, index, v, p.where());
+  try {
+    builder.add_surface(name, index, v, p.where());
+  } catch (const std::invalid_argument& e) {
+    throw SceneFileError(e.what());  // already starts with the file and line
+  }
 }
 
 void parse_camera(LineParser& p, SceneBuilder& builder) {
@@ -98,8 +98,11 @@ void parse_camera(LineParser& p, SceneBuilder& builder) {
   c.up = p.vec3("camera up vector");
   c.vertical_fov_deg = p.number("vertical field of view (degrees)");
   p.expect_end();
-  if (!(c.vertical_fov_deg > 0 && c.vertical_fov_deg < 180)) p.fail("field of view must be in (0, 180) degrees");
-  if (glm::length(c.look_at - c.position) == 0) p.fail("camera looks at its own position");
+  try {
+    check_camera(c);
+  } catch (const std::invalid_argument& e) {
+    p.fail(e.what());
+  }
   builder.set_camera(c);
 }
 
@@ -136,11 +139,13 @@ LoadedScene parse_scene_text(const std::string& text, const std::string& source_
 }
 
 LoadedScene load_scene_file(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) throw SceneFileError(path + ": cannot open scene file");
-  std::stringstream text;
-  text << file.rdbuf();
-  return parse_scene_text(text.str(), path);
+  std::string text;
+  try {
+    text = io::read_file(path, io::kSceneLimitBytes, "a scene file");
+  } catch (const io::InputFileError& e) {
+    throw SceneFileError(e.what());
+  }
+  return parse_scene_text(text, path);
 }
 
 }  // namespace rc

@@ -115,7 +115,7 @@ TEST_F(CompositionTest, ErrorsNameTheFileAndTheKey) {
             "material": {"reflectance": [1.2, 0, 0]}}]})"),
             bad + ": meshes[0].material.reflectance: components must be at least 0 and below 1.000000");
   EXPECT_EQ(error_of(R"({"schema": "rc2000sim.composition/1", "room": {"file": "missing.obj"}})"),
-            (dir_ / "missing.obj").string() + ": cannot open");
+            (dir_ / "missing.obj").string() + ": cannot open (No such file or directory)");
   EXPECT_EQ(error_of(R"({"schema": "rc2000sim.composition/1", "meshes": [{"file": "tetra.obj", "scale": 2,
             "fit_into": {"min": [0, 0, 0], "max": [1, 1, 1]}}]})"),
             bad + ": meshes[0].fit_into: excludes scale and translate");

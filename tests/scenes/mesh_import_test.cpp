@@ -95,7 +95,7 @@ TEST(MeshImport, MalformedFilesGiveClearErrors) {
     EXPECT_EQ(e.rfind(path + ": ", 0), 0u) << file << ": " << e;
   }
   EXPECT_NE(error_of(kModels + "/invalid/OutOfMemory.off").find("memory"), std::string::npos);
-  EXPECT_EQ(error_of("/no/such/mesh.obj"), "/no/such/mesh.obj: cannot open");
+  EXPECT_EQ(error_of("/no/such/mesh.obj"), "/no/such/mesh.obj: cannot open (No such file or directory)");
 }
 
 // By content, not by name: the same OBJ and binary STL under meaningless extensions import alike,

@@ -33,7 +33,7 @@ TEST(SceneFile, ErrorsNameFileLineAndProblem) {
   EXPECT_EQ(error_of("# nothing\nbox 1 2 3\n"), "bad.scene:2: unknown keyword 'box' (expected material, quad, tri or camera)");
   EXPECT_EQ(error_of(std::string(kMaterial) + "tri a w 0 0 0 1 0 0 0 1\n"), "bad.scene:2: missing vertex coordinate");
   EXPECT_EQ(error_of(std::string(kMaterial) + "tri a w 0 0 0 1 0 0 0 1 x\n"),
-            "bad.scene:2: 'x' is not a number (vertex coordinate)");
+            "bad.scene:2: 'x' is not a finite number (vertex coordinate)");
   EXPECT_EQ(error_of("tri a nope 0 0 0 1 0 0 0 1 0\n"),
             "bad.scene:1: unknown material 'nope' (define it with 'material' first)");
   EXPECT_EQ(error_of(std::string(kMaterial) + "tri a w 0 0 0 1 0 0 0 1 0 7\n"), "bad.scene:2: unexpected '7' at end of line");
@@ -42,7 +42,7 @@ TEST(SceneFile, ErrorsNameFileLineAndProblem) {
   EXPECT_NE(error_of("material w reflectance 1 0.5 0.5\n").find("bad.scene:1: material 'w': reflectance 1"),
             std::string::npos);
   EXPECT_EQ(error_of(kMaterial), "bad.scene: scene 'bad.scene' has no faces");
-  EXPECT_EQ(error_of("camera 0 0 0 0 0 0 0 1 0 45\n"), "bad.scene:1: camera looks at its own position");
+  EXPECT_EQ(error_of("camera 0 0 0 0 0 0 0 1 0 45\n"), "bad.scene:1: camera looks at its own position (0, 0, 0) (no view direction)");
 }
 
 TEST(SceneFile, ZeroAreaFacesAreDroppedAndReported) {
@@ -62,7 +62,7 @@ TEST(SceneFile, MissingFileIsAClearError) {
   try {
     load_scene_file("/nonexistent/x.scene");
   } catch (const SceneFileError& e) {
-    EXPECT_STREQ(e.what(), "/nonexistent/x.scene: cannot open scene file");
+    EXPECT_STREQ(e.what(), "/nonexistent/x.scene: cannot open (No such file or directory)");
   }
 }
 

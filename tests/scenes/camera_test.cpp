@@ -1,0 +1,95 @@
+// check_camera (scenes/camera.h): the one check of a camera, in scene files and after
+// normalisation. A degenerate camera used to give an all-black picture and exit 0.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "scenes/camera.h"
+#include "scenes/normalise.h"
+#include "scenes/scene_file.h"
+
+namespace rc {
+namespace {
+
+std::string problem(const Camera& c) {
+  try {
+    check_camera(c);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+Camera camera(Vec3 position, Vec3 look_at, Vec3 up, double fov = 45) { return {position, look_at, up, fov}; }
+
+TEST(CameraCheck, TheDefaultAndOrdinaryCamerasPass) {
+  EXPECT_EQ(problem(Camera{}), "");
+  EXPECT_EQ(problem(camera({1, 1, -3}, {1, 1, 0}, {0, 1, 0})), "");
+  EXPECT_EQ(problem(camera({1, 1, -3}, {1, 1, 0}, {0, 5, 1})), "");  // up need not be perpendicular
+  EXPECT_EQ(problem(camera({0, 0, 0}, {0, 0, 1}, {0, 1, 0}, 179.9)), "");
+}
+
+TEST(CameraCheck, IsTheSameAtEveryScale) {
+  for (double k : {1e-300, 1e-150, 1e150, 1e300}) {
+    EXPECT_EQ(problem(camera(Vec3(1, 1, -3) * k, Vec3(1, 1, 0) * k, Vec3(0, 1, 0) * k)), "") << k;
+    EXPECT_NE(problem(camera(Vec3(1, 1, -3) * k, Vec3(1, 1, 0) * k, Vec3(0, 0, 1) * k)), "") << k;
+  }
+}
+
+TEST(CameraCheck, DegenerateCamerasAreNamed) {
+  EXPECT_EQ(problem(camera({1, 1, -3}, {1, 1, 0}, {0, 0, 0})), "camera up vector is zero");
+  EXPECT_EQ(problem(camera({1, 1, -3}, {1, 1, 0}, {0, 0, 1})),
+            "camera up vector (0, 0, 1) is parallel to the view direction (0, 0, 3) (the picture would have no up); "
+            "choose an up vector across the view");
+  EXPECT_NE(problem(camera({1, 1, -3}, {1, 1, 0}, {0, 0, -2})).find("is parallel to the view direction"), std::string::npos);
+  EXPECT_NE(problem(camera({1, 1, -3}, {1, 1, 0}, {0, 1e-7, 1})).find("is parallel"), std::string::npos);
+  EXPECT_EQ(problem(camera({1, 1, -3}, {1, 1, 0}, {0, 1e-5, 1})), "");  // sine 1e-5 > kMinCameraUpSine
+  EXPECT_EQ(problem(camera({1, 2, 3}, {1, 2, 3}, {0, 1, 0})), "camera looks at its own position (1, 2, 3) (no view direction)");
+  EXPECT_EQ(problem(camera({1, 1, -3}, {1, 1, 0}, {0, 1, 0}, 0)), "camera vertical field of view 0 degrees is outside (0, 180)");
+  EXPECT_NE(problem(camera({1, 1, -3}, {1, 1, 0}, {0, 1, 0}, 180)).find("is outside (0, 180)"), std::string::npos);
+  EXPECT_NE(problem(camera({1, 1, -3}, {1, 1, 0}, {0, 1, 0}, NAN)).find("is outside (0, 180)"), std::string::npos);
+  EXPECT_EQ(problem(camera({1, NAN, -3}, {1, 1, 0}, {0, 1, 0})), "camera position (1, nan, -3) is not finite");
+  EXPECT_EQ(problem(camera({1, 1, -3}, {1, 1, INFINITY}, {0, 1, 0})), "camera look-at point (1, 1, inf) is not finite");
+  EXPECT_EQ(problem(camera({1, 1, -3}, {1, 1, 0}, {0, -INFINITY, 0})), "camera up vector (0, -inf, 0) is not finite");
+}
+
+TEST(CameraCheck, SceneFilesNameTheFileAndLine) {
+  const std::string scene = "material w reflectance 0.5 0.5 0.5 emission 1 1 1\ntri a w 0 0 0 1 0 0 0 1 0\n";
+  auto error_of = [&](const std::string& camera_line) {
+    try {
+      parse_scene_text(scene + camera_line, "cam.scene");
+    } catch (const SceneFileError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(error_of("camera 1 1 -3  1 1 0  0 0 0  45\n"), "cam.scene:3: camera up vector is zero");
+  EXPECT_NE(error_of("camera 1 1 -3  1 1 0  0 0 1  45\n").find("cam.scene:3: camera up vector (0, 0, 1) is parallel"),
+            std::string::npos);
+  EXPECT_EQ(error_of("camera 1 1 -3  1 1 0  0 1 0  0\n"),
+            "cam.scene:3: camera vertical field of view 0 degrees is outside (0, 180)");
+  EXPECT_EQ(error_of("camera 1 1 -3  1 1 0  0 1 0  45\n"), "");
+}
+
+// The eye and the point looked at differ in the file, but by less than normalisation resolves:
+// once normalised they are one point, and normalise() says so instead of rendering nothing.
+TEST(CameraCheck, NormaliseChecksTheCameraItMoves) {
+  const LoadedScene s = parse_scene_text("material w reflectance 0.5 0.5 0.5 emission 1 1 1\n"
+                                         "tri a w 0.3 0 0.3  1 0 0.3  0.3 1 0.3\n"
+                                         "tri b w 0.3 0 1  1 0 1  0.3 1 1\n"
+                                         "camera 0.5 0.5 1e-20  0.5 0.5 0  0 1 0  45\n",
+                                         "near.scene");
+  Scene scene = s.scene;
+  try {
+    normalise(scene);
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("scene 'near.scene', once normalised: camera looks at its own position"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace rc

@@ -209,7 +209,11 @@ LoadedScene import_mesh_file(const std::string& path, const MeshImportOptions& o
         const aiVector3D& v = mesh.mVertices[face.mIndices[k]];
         vertices.push_back({v.x, v.y, v.z});
       }
-      builder.add_surface(origin + " face " + std::to_string(f), material_index[mat], vertices, origin);
+      try {
+        builder.add_surface(origin + " face " + std::to_string(f), material_index[mat], vertices, origin);
+      } catch (const std::invalid_argument& e) {
+        throw SceneFileError(e.what());  // a coordinate that is not finite; starts with the file
+      }
     }
   }
   if (skipped > 0) warnings.push_back(path + ": " + std::to_string(skipped) + " faces that are not triangles skipped");

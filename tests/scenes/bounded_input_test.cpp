@@ -74,6 +74,21 @@ TEST(BoundedInput, NumbersMustBeWholeAndFinite) {
   EXPECT_EQ(parse_error(kMaterial + "tri a w 0 0 0 1 0 0 0 1 0\n"), "");
 }
 
+TEST(BoundedInput, AMeshCoordinateThatIsNotFiniteIsNamed) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("rc_bounded_inf_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "inf.obj").string();
+  std::ofstream(path) << "v 0 0 0\nv 1 0 0\nv 0 1e999 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\n";
+  try {
+    import_mesh_file(path);
+    FAIL() << "no error";
+  } catch (const SceneFileError& e) {
+    EXPECT_NE(std::string(e.what()).find(path + ": mesh 0"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("has a coordinate that is not finite"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove_all(dir);
+}
+
 TEST(FoldedQuad, IsRefusedNamingFileLineSurfaceAndAngle) {
   // v3 lifted 0.3 above the floor's plane, over v1's side: the halves face each other.
   EXPECT_EQ(parse_error(kMaterial + "quad fold w 0 0 0  0 0 1  1 0 1  0 0.3 1\n"),

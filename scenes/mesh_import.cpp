@@ -154,13 +154,15 @@ bool is_text_scene_file(const std::string& path) {
   head.resize(static_cast<std::size_t>(file.gcount()));
   std::istringstream in(head);
   std::string line;
-  for (int lines = 0; lines < 1000 && std::getline(in, line); ++lines) {
+  while (std::getline(in, line)) {
     std::istringstream words(line);
     std::string first;
     if (!(words >> first) || first[0] == '#') continue;
     return first == "material" || first == "quad" || first == "tri" || first == "camera";
   }
-  return false;
+  // A whole text file of comments and blank lines (or an empty one) is ours too: the scene parser
+  // says it has no faces, where Assimp would say it has no reader for it.
+  return head.size() < kSniffBytes && head.find('\0') == std::string::npos;
 }
 
 LoadedScene import_mesh_file(const std::string& path, const MeshImportOptions& o) {
@@ -195,7 +197,11 @@ LoadedScene import_mesh_file(const std::string& path, const MeshImportOptions& o
     const aiMesh& mesh = *scene->mMeshes[m];
     const unsigned mat = mesh.mMaterialIndex;
     if (mat < material_index.size() && material_index[mat] < 0) {
-      material_index[mat] = builder.add_material(material_from(*scene->mMaterials[mat], mat, o, warnings, path));
+      try {
+        material_index[mat] = builder.add_material(material_from(*scene->mMaterials[mat], mat, o, warnings, path));
+      } catch (const std::invalid_argument& e) {
+        throw SceneFileError(path + ": " + e.what());  // e.g. an emissive colour that is not finite
+      }
     }
     const std::string origin = path + ": mesh " + std::to_string(m) + (mesh.mName.length ? " '" + std::string(mesh.mName.C_Str()) + "'" : "");
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {

@@ -27,8 +27,9 @@ struct MeshImportOptions {
 // emits light.
 LoadedScene import_mesh_file(const std::string& path, const MeshImportOptions& options = {});
 
-// True when the file is in rc2000sim's own text scene format (its first keyword, within the first
-// kSniffBytes, is material, quad, tri or camera); anything else goes to Assimp.
+// True when the file is in rc2000sim's own text scene format: its first keyword, within the first
+// kSniffBytes, is material, quad, tri or camera, or it is a short text of nothing but comments and
+// blank lines (or empty), which then gets the scene parser's error. Anything else goes to Assimp.
 constexpr std::size_t kSniffBytes = 64 * 1024;
 bool is_text_scene_file(const std::string& path);
 

@@ -22,8 +22,9 @@ bool is_degenerate(const Triangle& unscaled) {
 void check_spectrum(const std::string& material, const char* what, const Spectrum& s, double upper) {
   for (double v : s.band) {
     if (!(v >= 0.0) || !(v < upper)) {
-      throw std::invalid_argument("material '" + material + "': " + what + " " + std::to_string(v) +
-                                  " is outside [0, " + (upper > 1e300 ? std::string("inf") : std::to_string(upper)) + ")");
+      char range[96];
+      std::snprintf(range, sizeof range, " %g is outside [0, %g)", v, upper);
+      throw std::invalid_argument("material '" + material + "': " + what + range);
     }
   }
 }

@@ -51,6 +51,19 @@ TEST(BoundedInput, AnEndlessDeviceIsRefusedAtOnce) {
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
 }
 
+TEST(BoundedInput, EmptyAndCommentOnlyFilesSayTheyHaveNoFaces) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("rc_bounded_empty_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  for (const char* text : {"", "# only a comment\n\n   \n"}) {
+    const std::string path = (dir / "x.scene").string();
+    std::ofstream(path) << text;
+    SceneOptions o;
+    o.file = path;
+    EXPECT_EQ(prepare_error(o), path + ": scene '" + path + "' has no faces");
+  }
+  std::filesystem::remove_all(dir);
+}
+
 TEST(BoundedInput, ADirectoryIsNamed) {
   SceneOptions o;
   o.file = "/tmp";
@@ -85,6 +98,21 @@ TEST(BoundedInput, AMeshCoordinateThatIsNotFiniteIsNamed) {
   } catch (const SceneFileError& e) {
     EXPECT_NE(std::string(e.what()).find(path + ": mesh 0"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("has a coordinate that is not finite"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(BoundedInput, AMeshEmissionThatIsNotFiniteIsNamed) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("rc_bounded_hot_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "hot.mtl") << "newmtl hot\nKd 0.5 0.5 0.5\nKe 1e999 1 1\n";
+  const std::string path = (dir / "hot.obj").string();
+  std::ofstream(path) << "mtllib hot.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl hot\nf 1 2 3\n";
+  try {
+    import_mesh_file(path);
+    FAIL() << "no error";
+  } catch (const SceneFileError& e) {
+    EXPECT_EQ(std::string(e.what()), path + ": material 'hot #1': emission inf is outside [0, 1e+308)");
   }
   std::filesystem::remove_all(dir);
 }

@@ -155,7 +155,7 @@ void CycleWrapper::controller() {
 // One cycle of the write-out: every next word whose accesses the phase's bank budget covers.
 bool CycleWrapper::drain() {
   ++m_phase_cycle;
-  std::uint8_t* results = bank(m_layout.result_bank);
+  const unsigned results = m_layout.result_bank;
   BankTraffic& traffic = m_traffic[m_layout.result_bank];
   while (m_drain_word < m_store.size()) {
     const RayGroup& group = m_layout.groups[m_word_group[m_drain_word]];
@@ -165,12 +165,12 @@ bool CycleWrapper::drain() {
     m_drain_used += accesses;
     const std::uint64_t at = m_drain_word, bits = m_store[at];
     if (m_in.clear) {
-      store_word(results, at, m_word_bytes, bits);
+      set_bank_word(results, at, bits);
     } else if (rmw) {
-      store_word(results, at, m_word_bytes, load_word(results, at, m_word_bytes) | bits);  // shared word: OR onto it
+      set_bank_word(results, at, bank_word(results, at) | bits);  // shared word: OR onto it
       ++traffic.reads;
     } else if (bits != 0) {
-      store_word(results, at, m_word_bytes, bits);  // one lane per word: write the 1 only when blocked
+      set_bank_word(results, at, bits);  // one lane per word: write the 1 only when blocked
     }
     ++traffic.writes;  // the write slot is taken either way
     traffic.busy_bank_cycles = traffic.reads + traffic.writes;
@@ -205,7 +205,7 @@ bool CycleWrapper::try_issue(unsigned g) {
   std::uint64_t word[3];
   for (unsigned a = 0; a < 3; ++a) {
     const WordAddress at = ray_word(group, q, a);
-    word[a] = load_word(bank(at.bank), at.word, m_word_bytes);
+    word[a] = bank_word(at.bank, at.word);
     ++m_traffic[at.bank].reads;
     ++m_traffic[at.bank].busy_bank_cycles;
   }
@@ -279,15 +279,15 @@ void CycleWrapper::write_back(const Packet& p) {
     m_store[at] |= hits;
     return;
   }
-  std::uint8_t* results = bank(m_layout.result_bank);
+  const unsigned results = m_layout.result_bank;
   BankTraffic& traffic = m_traffic[m_layout.result_bank];
   if (p.clearing) {
-    store_word(results, at, m_word_bytes, hits);  // first face of a clearing pass: write, no read
+    set_bank_word(results, at, hits);  // first face of a clearing pass: write, no read
   } else if (group.result_accesses() == 2) {
-    store_word(results, at, m_word_bytes, load_word(results, at, m_word_bytes) | hits);  // shared word: read-modify-write
+    set_bank_word(results, at, bank_word(results, at) | hits);  // shared word: read-modify-write
     ++traffic.reads;
   } else if (hits != 0) {
-    store_word(results, at, m_word_bytes, hits);  // one lane per word: write the 1 only when blocked
+    set_bank_word(results, at, hits);  // one lane per word: write the 1 only when blocked
   }
   ++traffic.writes;  // the write slot is reserved either way
   traffic.busy_bank_cycles = traffic.reads + traffic.writes;

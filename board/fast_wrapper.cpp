@@ -84,10 +84,28 @@ void FastWrapper::compute(const PassInputs& in) {
   m_y.resize(R);
   m_z.resize(R);
   m_blocked.assign(R, 0);
-  std::vector<const std::uint8_t*> data(m_layout.banks_available, nullptr);
-  for (const RayGroup& g : m_layout.groups)
-    for (unsigned b : g.banks) data[b] = bank(b);
-  unpack_rays(m_layout, in.split, data, m_x.data(), m_y.data(), m_z.data());
+  // In place when every ray bank's words of the pass lie in one DMI region, else word by word.
+  m_ray_words.assign(m_layout.banks_available, nullptr);
+  bool in_place = true;
+  for (std::size_t g = 0; g < m_layout.groups.size(); ++g) {
+    const RayGroup& group = m_layout.groups[g];
+    for (unsigned j = 0; j < group.k(); ++j) {
+      const std::uint64_t words = group_bank_words(group, j, in.split.packets[g]);
+      if (words == 0) continue;
+      m_ray_words[group.banks[j]] = bank_words(group.banks[j], words);
+      in_place = in_place && m_ray_words[group.banks[j]] != nullptr;
+    }
+  }
+  if (in_place) {
+    const std::uint8_t* const* words = m_ray_words.data();
+    const unsigned word_bytes = m_word_bytes;
+    unpack_rays(m_layout, in.split,
+                [words, word_bytes](unsigned b, std::uint64_t word) { return load_word(words[b], word, word_bytes); },
+                m_x.data(), m_y.data(), m_z.data());
+  } else {
+    unpack_rays(m_layout, in.split, [this](unsigned b, std::uint64_t word) { return bank_word(b, word); }, m_x.data(),
+                m_y.data(), m_z.data());
+  }
   if (m_layout.float_format) return compute_float(in);
   std::uint64_t lo = in.mask_start;
   const OwnFaceTable table = own_face_table();
@@ -132,20 +150,34 @@ void FastWrapper::compute_float(const PassInputs& in) {
 }
 
 // The result words as the per-face read-modify-writes leave them: the OR over faces, on top of the
-// bank's old contents unless the pass clears.
+// bank's old contents unless the pass clears. In place when one DMI region holds the pass's result
+// words, else word by word.
 void FastWrapper::write_results(const PassInputs& in) {
   if (in.faces == 0) return;
-  std::uint8_t* results = bank(m_layout.result_bank);
+  const unsigned results = m_layout.result_bank;
+  if (std::uint8_t* words = writable_bank_words(results, in.split.result_words)) {
+    or_results(
+        in, [&](std::uint64_t at) { return load_word(words, at, m_word_bytes); },
+        [&](std::uint64_t at, std::uint64_t value) { store_word(words, at, m_word_bytes, value); });
+  } else {
+    or_results(
+        in, [&](std::uint64_t at) { return bank_word(results, at); },
+        [&](std::uint64_t at, std::uint64_t value) { set_bank_word(results, at, value); });
+  }
+}
+
+template <class Load, class Store>
+void FastWrapper::or_results(const PassInputs& in, Load&& load, Store&& store) {
   for (std::size_t g = 0; g < m_layout.groups.size(); ++g) {
     const RayGroup& group = m_layout.groups[g];
     for (std::uint64_t p = 0; p < in.split.packets[g]; ++p) {
       const std::uint64_t at = in.split.result_base[g] + p;
-      std::uint64_t word = in.clear ? 0 : load_word(results, at, m_word_bytes);
+      std::uint64_t word = in.clear ? 0 : load(at);
       for (unsigned slot = 0; slot < group.lanes; ++slot) {
         const std::uint64_t r = p * group.lanes + slot;
         if (r < in.split.rays[g]) word |= std::uint64_t(m_blocked[in.split.first_ray[g] + r]) << slot;
       }
-      store_word(results, at, m_word_bytes, word);
+      store(at, word);
     }
   }
 }

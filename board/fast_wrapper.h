@@ -36,6 +36,9 @@ class FastWrapper : public WrapperBase {
   void compute(const PassInputs& in);
   void compute_float(const PassInputs& in);  // float lanes (layout.float_format): float_mt's occlude_face
   void write_results(const PassInputs& in);
+  // The result words' read-modify-writes, with load(word) / store(word, value) on the result bank.
+  template <class Load, class Store>
+  void or_results(const PassInputs& in, Load&& load, Store&& store);
 
   // Scratch kept between passes: end points in pass order and the blocked flags.
   PassInputs m_in;       // the current pass's, reused from pass to pass
@@ -44,6 +47,7 @@ class FastWrapper : public WrapperBase {
   std::vector<std::int64_t> m_x, m_y, m_z;
   std::vector<double> m_fx, m_fy, m_fz;  // float lanes: the end points decoded
   std::vector<std::uint8_t> m_blocked;
+  std::vector<const std::uint8_t*> m_ray_words;  // per bank: its ray words in place, when one region holds them
 };
 
 // Rays each lane streams per face for a split (lane = group's first lane + slot).

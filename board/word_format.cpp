@@ -57,26 +57,6 @@ void blank_ray_images(const BankLayout& layout, const RaySplit& split, std::vect
   }
 }
 
-void unpack_rays(const BankLayout& layout, const RaySplit& split, const std::vector<const std::uint8_t*>& bank_data,
-                 std::int64_t* x, std::int64_t* y, std::int64_t* z) {
-  const unsigned word_bytes = layout.word_bits / 8;
-  std::int64_t* axis[3] = {x, y, z};
-  for (std::size_t g = 0; g < layout.groups.size(); ++g) {
-    const RayGroup& group = layout.groups[g];
-    for (std::uint64_t p = 0; p < split.packets[g]; ++p) {
-      for (unsigned a = 0; a < 3; ++a) {
-        const WordAddress at = ray_word(group, p, a);
-        const std::uint64_t word = load_word(bank_data[at.bank], at.word, word_bytes);
-        for (unsigned slot = 0; slot < group.lanes; ++slot) {
-          const std::uint64_t r = p * group.lanes + slot;
-          if (r >= split.rays[g]) break;
-          axis[a][split.first_ray[g] + r] = coordinate_field(word, slot, layout.field_bits);
-        }
-      }
-    }
-  }
-}
-
 void unpack_results(const BankLayout& layout, const RaySplit& split, const std::uint8_t* result_words,
                     std::uint8_t* blocked) {
   const unsigned word_bytes = layout.word_bits / 8;

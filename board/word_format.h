@@ -112,10 +112,27 @@ void pack_rays(const BankLayout& layout, const RaySplit& split, const std::int64
 // The images pack_rays would make, all words zero: the sizes a timing replay moves.
 void blank_ray_images(const BankLayout& layout, const RaySplit& split, std::vector<std::vector<std::uint8_t>>& images);
 
-// Wrapper side: reads the coordinate words of a pass from the banks (bank_data[b] = bank b's
-// storage) back into x, y, z in pass order.
-void unpack_rays(const BankLayout& layout, const RaySplit& split, const std::vector<const std::uint8_t*>& bank_data,
-                 std::int64_t* x, std::int64_t* y, std::int64_t* z);
+// Wrapper side: reads the coordinate words of a pass from the banks (load(bank, word) -> the word)
+// back into x, y, z in pass order.
+template <class LoadWord>
+void unpack_rays(const BankLayout& layout, const RaySplit& split, LoadWord&& load, std::int64_t* x, std::int64_t* y,
+                 std::int64_t* z) {
+  std::int64_t* axis[3] = {x, y, z};
+  for (std::size_t g = 0; g < layout.groups.size(); ++g) {
+    const RayGroup& group = layout.groups[g];
+    for (std::uint64_t p = 0; p < split.packets[g]; ++p) {
+      for (unsigned a = 0; a < 3; ++a) {
+        const WordAddress at = ray_word(group, p, a);
+        const std::uint64_t word = load(at.bank, at.word);
+        for (unsigned slot = 0; slot < group.lanes; ++slot) {
+          const std::uint64_t r = p * group.lanes + slot;
+          if (r >= split.rays[g]) break;
+          axis[a][split.first_ray[g] + r] = coordinate_field(word, slot, layout.field_bits);
+        }
+      }
+    }
+  }
+}
 
 // Host side: blocked flags in pass order from the result words (result_base of the split onward).
 void unpack_results(const BankLayout& layout, const RaySplit& split, const std::uint8_t* result_words,

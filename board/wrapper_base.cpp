@@ -20,10 +20,16 @@ WrapperBase::WrapperBase(const sc_core::sc_module_name& name, const BankLayout& 
       m_word_bytes(layout.word_bits / 8),
       m_sinks(std::move(bank_sinks)),
       m_addresses(std::move(bank_addresses)),
-      m_dmi(m_addresses.size(), nullptr),
       m_signals(signals) {
   m_stats.lane_rays.assign(layout.lanes, 0);
   m_regs.on_acknowledge([this] { acknowledge(); });
+  for (std::size_t b = 0; b < m_addresses.size(); ++b) {
+    m_dmi.emplace_back(std::string(this->name()) + ": bank " + std::to_string(b),
+                       [this](tlm::tlm_generic_payload& trans, tlm::tlm_dmi& dmi) {
+                         return out->get_direct_mem_ptr(trans, dmi);
+                       });
+  }
+  out.register_invalidate_direct_mem_ptr(this, &WrapperBase::invalidate_direct_mem_ptr);
 }
 
 sc_core::sc_time WrapperBase::next_edge(const sc_core::sc_time& t) const {
@@ -31,38 +37,32 @@ sc_core::sc_time WrapperBase::next_edge(const sc_core::sc_time& t) const {
   return sc_core::sc_time::from_value((t.value() + p - 1) / p * p);
 }
 
-// The whole bank through the local bus, once; the array never moves, so the pointer stays valid.
-std::uint8_t* WrapperBase::bank(unsigned b) {
-  if (m_dmi[b] != nullptr) return m_dmi[b];
-  tlm::tlm_generic_payload trans;
-  tlm::tlm_dmi dmi;
-  trans.set_address(m_addresses[b]);
-  trans.set_command(tlm::TLM_READ_COMMAND);
-  if (!out->get_direct_mem_ptr(trans, dmi) || !dmi.is_read_write_allowed() ||
-      dmi.get_start_address() != m_addresses[b]) {
-    SC_REPORT_FATAL(kMsgType, ("no DMI to bank " + std::to_string(b)).c_str());
-  }
-  m_dmi[b] = dmi.get_dmi_ptr();
-  return m_dmi[b];
+WrapperBase::OwnFaceTable WrapperBase::own_face_table() {
+  if (m_layout.mask_bank) return {this, *m_layout.mask_bank, 0};
+  const std::uint64_t base = static_cast<std::uint64_t>(m_regs.value(reg::kFaceCount)) * m_layout.face_words();
+  return {this, m_layout.face_bank, base};
 }
 
-WrapperBase::OwnFaceTable WrapperBase::own_face_table() {
-  if (m_layout.mask_bank) return {bank(*m_layout.mask_bank), 0, m_word_bytes};
-  const std::uint64_t base = static_cast<std::uint64_t>(m_regs.value(reg::kFaceCount)) * m_layout.face_words();
-  return {bank(m_layout.face_bank), base, m_word_bytes};
+// The record's 9 words, in place when one DMI region holds them all.
+void WrapperBase::face_words(std::uint64_t face_in_set, std::uint64_t words[9]) {
+  const unsigned b = m_layout.face_bank;
+  const std::uint64_t first = face_in_set * 9;
+  if (const std::uint8_t* record = m_dmi[b].read_pointer(m_addresses[b] + first * m_word_bytes, 9 * m_word_bytes)) {
+    for (unsigned i = 0; i < 9; ++i) words[i] = load_word(record, i, m_word_bytes);
+  } else {
+    for (unsigned i = 0; i < 9; ++i) words[i] = bank_word(b, first + i);
+  }
 }
 
 pipeline::FaceRecord WrapperBase::face_record(std::uint64_t face_in_set) {
   std::uint64_t words[9];
-  const std::uint8_t* faces = bank(m_layout.face_bank);
-  for (unsigned i = 0; i < 9; ++i) words[i] = load_word(faces, face_in_set * 9 + i, m_word_bytes);
+  face_words(face_in_set, words);
   return face_record_from_words(words, m_layout.word_bits);
 }
 
 pipeline::FloatFaceRecord WrapperBase::float_face_record(std::uint64_t face_in_set) {
   std::uint64_t words[9];
-  const std::uint8_t* faces = bank(m_layout.face_bank);
-  for (unsigned i = 0; i < 9; ++i) words[i] = load_word(faces, face_in_set * 9 + i, m_word_bytes);
+  face_words(face_in_set, words);
   return float_face_record_from_words(words, *m_layout.float_format);
 }
 
@@ -126,6 +126,12 @@ void WrapperBase::report_traffic(const std::vector<BankTraffic>& traffic) {
     a.busy = sc_core::sc_time::from_value(m_timing.bank_period.value() * t.busy_bank_cycles);
     m_sinks[b]->record_dmi_access(a);
   }
+}
+
+// In local-bus addresses (the local bus translates the bank's range); every bank's cache drops what
+// overlaps it, and only that.
+void WrapperBase::invalidate_direct_mem_ptr(sc_dt::uint64 start, sc_dt::uint64 end) {
+  for (tlmx::SparseDmiCache& cache : m_dmi) cache.invalidate(start, end);
 }
 
 void WrapperBase::acknowledge() {

@@ -1,7 +1,14 @@
 // What the two wrapper models (fast: one event per pass; cycle-level: a clocked 37-stage pipeline)
-// share: the bank layout, the registers, DMI pointers to the banks (through the board's local bus),
-// pass bookkeeping, the interrupt, statistics. The wrapper's bank traffic goes through DMI and is
+// share: the bank layout, the registers, DMI to the banks (through the board's local bus), pass
+// bookkeeping, the interrupt, statistics. The wrapper's bank traffic goes through DMI and is
 // reported back to the banks (DmiActivitySink), so their counters include it.
+//
+// DMI: a bank grants one page of its sparse storage per request (tlm/sram_bank.h), so the wrapper
+// keeps, per bank, a cache of the page regions granted so far (tlm/sparse_dmi_cache.h): a word is
+// read or written through the region of the bank's last access when it holds the word, else the
+// region is looked up or requested through `out` (the local bus translates it), and a word that
+// straddles two regions is split between them. Invalidations arriving on `out` (translated by the
+// local bus) drop exactly the cached regions they overlap; the next access asks again.
 #pragma once
 
 #include <cstdint>
@@ -20,6 +27,7 @@
 #include "pipeline/fixed_format.h"
 #include "tlm/dmi_activity.h"
 #include "tlm/irq_line.h"
+#include "tlm/sparse_dmi_cache.h"
 
 namespace rc::board {
 
@@ -87,18 +95,45 @@ class WrapperBase : public sc_core::sc_module {
   // First device clock edge at or after t (edges at multiples of the device period from time 0).
   sc_core::sc_time next_edge(const sc_core::sc_time& t) const;
 
+  // The DMI regions cached for bank b, in local-bus addresses, and how many were requested / dropped.
+  const tlmx::SparseDmiCache& dmi_cache(unsigned b) const { return m_dmi[b]; }
+
  protected:
-  std::uint8_t* bank(unsigned b);  // DMI pointer (acquired on first use)
+  // Word `index` of bank b (word_bits wide, little-endian), through DMI: in place when one region
+  // holds the word (always, for pages of at least a word), else pieced together across regions.
+  std::uint64_t bank_word(unsigned b, std::uint64_t index) {
+    const std::uint64_t address = m_addresses[b] + index * m_word_bytes;
+    if (const std::uint8_t* p = m_dmi[b].read_pointer(address, m_word_bytes)) return load_word(p, 0, m_word_bytes);
+    std::uint8_t bytes[8];
+    m_dmi[b].read(address, bytes, m_word_bytes);
+    return load_word(bytes, 0, m_word_bytes);
+  }
+  // The first `words` words of bank b in place, when one DMI region holds them all (a pass's words
+  // usually lie in one page), else nullptr: bulk loops then run at raw-pointer speed, and fall back
+  // to bank_word / set_bank_word when they cross a region.
+  const std::uint8_t* bank_words(unsigned b, std::uint64_t words) {
+    return m_dmi[b].read_pointer(m_addresses[b], words * m_word_bytes);
+  }
+  std::uint8_t* writable_bank_words(unsigned b, std::uint64_t words) {
+    return m_dmi[b].write_pointer(m_addresses[b], words * m_word_bytes);
+  }
+  void set_bank_word(unsigned b, std::uint64_t index, std::uint64_t value) {
+    const std::uint64_t address = m_addresses[b] + index * m_word_bytes;
+    if (std::uint8_t* p = m_dmi[b].write_pointer(address, m_word_bytes)) return store_word(p, 0, m_word_bytes, value);
+    std::uint8_t bytes[8];
+    store_word(bytes, 0, m_word_bytes, value);
+    m_dmi[b].write(address, bytes, m_word_bytes);
+  }
   // Registers -> `in`, with error checks. Fills the caller's object so that a wrapper reading one
   // pass after another reuses its vectors; the ray split is kept for the last ray count.
   void read_inputs(PassInputs& in);
   // The own-face table in its bank: count(f) is how many of the pass's rays end on face f of the set.
   struct OwnFaceTable {
-    const std::uint8_t* words;
+    WrapperBase* wrapper;
+    unsigned bank;
     std::uint64_t first;  // word index of face 0's entry
-    unsigned word_bytes;
     std::uint32_t count(std::uint64_t face_in_set) const {
-      return static_cast<std::uint32_t>(load_word(words, first + face_in_set, word_bytes));
+      return static_cast<std::uint32_t>(wrapper->bank_word(bank, first + face_in_set));
     }
   };
   OwnFaceTable own_face_table();
@@ -121,13 +156,15 @@ class WrapperBase : public sc_core::sc_module {
 
  private:
   void acknowledge();
+  void face_words(std::uint64_t face_in_set, std::uint64_t words[9]);
+  void invalidate_direct_mem_ptr(sc_dt::uint64 start, sc_dt::uint64 end);
   void write_signal(sc_core::sc_signal<bool, sc_core::SC_MANY_WRITERS>* s, bool v) {
     if (s != nullptr && s->read() != v) s->write(v);
   }
 
   std::vector<tlmx::DmiActivitySink*> m_sinks;
   std::vector<std::uint64_t> m_addresses;
-  std::vector<std::uint8_t*> m_dmi;
+  std::vector<tlmx::SparseDmiCache> m_dmi;  // per bank
   WrapperSignals m_signals;
   WrapperStats m_stats;
   std::function<void(const PassRecord&)> m_on_pass;

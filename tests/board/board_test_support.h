@@ -174,16 +174,22 @@ inline std::vector<std::uint8_t> expected_blocked(const PassData& d, int bits) {
 inline RaySplit load_pass(Rc2000& b, const PassData& d) {
   const BankLayout& L = b.layout();
   const unsigned wb = L.word_bits / 8;
+  auto put = [&](unsigned bank, std::uint64_t word, std::uint64_t value) {
+    std::uint8_t bytes[8];
+    store_word(bytes, 0, wb, value);
+    b.bank(bank).debug_write(word * wb, bytes, wb);
+  };
   std::uint64_t words[9];
   for (std::size_t f = 0; f < d.faces.size(); ++f) {
     face_record_words(d.faces[f], words);
-    for (unsigned i = 0; i < 9; ++i) store_word(b.bank(L.face_bank).data(), f * 9 + i, wb, words[i]);
+    for (unsigned i = 0; i < 9; ++i) put(L.face_bank, f * 9 + i, words[i]);
   }
-  std::uint8_t* mask = L.mask_bank ? b.bank(*L.mask_bank).data() : b.bank(L.face_bank).data() + d.faces.size() * 9 * wb;
+  const unsigned mask_bank = L.mask_bank ? *L.mask_bank : L.face_bank;
+  const std::uint64_t mask_first = L.mask_bank ? 0 : d.faces.size() * 9;
   for (std::size_t f = 0; f < d.faces.size(); ++f) {
     std::uint64_t n = 0;
     for (int e : d.end_faces) n += e == static_cast<int>(f);
-    store_word(mask, f, wb, n);
+    put(mask_bank, mask_first + f, n);
   }
   std::vector<std::int64_t> x, y, z;
   for (const auto& e : d.ends) x.push_back(e.x), y.push_back(e.y), z.push_back(e.z);
@@ -191,7 +197,7 @@ inline RaySplit load_pass(Rc2000& b, const PassData& d) {
   std::vector<std::vector<std::uint8_t>> images;
   pack_rays(L, split, x.data(), y.data(), z.data(), images);
   for (unsigned bank = 0; bank < images.size(); ++bank)
-    if (!images[bank].empty()) std::copy(images[bank].begin(), images[bank].end(), b.bank(bank).data());
+    if (!images[bank].empty()) b.bank(bank).debug_write(0, images[bank].data(), images[bank].size());
   return split;
 }
 
@@ -211,7 +217,9 @@ inline std::vector<std::uint8_t> run_pass(ScriptedHost& host, const PassData& d,
   EXPECT_EQ(host.read(reg::kStatus) & (reg::kDone | reg::kError), reg::kDone);
   host.write(reg::kStatus, {reg::kDone});
   std::vector<std::uint8_t> blocked(d.ends.size(), 0);
-  unpack_results(b.layout(), split, b.bank(b.layout().result_bank).data(), blocked.data());
+  const std::vector<std::uint8_t> words =
+      b.bank(b.layout().result_bank).debug_bytes(0, split.result_words * (b.layout().word_bits / 8));
+  unpack_results(b.layout(), split, words.data(), blocked.data());
   return blocked;
 }
 

@@ -46,9 +46,10 @@ struct Bench {
         blocked.push_back(run_pass(h, s.data, s.clear));
         const BankLayout& L = board->layout();
         const RaySplit split = split_rays(L, s.data.ends.size());
+        const std::vector<std::uint8_t> bytes =
+            board->bank(L.result_bank).debug_bytes(0, split.result_words * (L.word_bits / 8));
         std::vector<std::uint64_t> words;
-        for (std::uint64_t w = 0; w < split.result_words; ++w)
-          words.push_back(load_word(board->bank(L.result_bank).data(), w, L.word_bits / 8));
+        for (std::uint64_t w = 0; w < split.result_words; ++w) words.push_back(load_word(bytes.data(), w, L.word_bits / 8));
         result_words.push_back(words);
       }
     });

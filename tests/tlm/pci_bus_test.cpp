@@ -85,7 +85,7 @@ TEST(PciBus, RoutesByBarWindowWithRelativeAddresses) {
 
   EXPECT_EQ(status, tlm::TLM_OK_RESPONSE);
   EXPECT_EQ(address_after, 0x8001'0010u);  // the initiator gets its address back
-  EXPECT_EQ(bank1.data()[0x10], 0x78);
+  EXPECT_EQ(bank1.debug_bytes(0x10, 1)[0], 0x78);
   EXPECT_EQ(bank0.report().writes, 0u);
   EXPECT_EQ(bank1.report().writes, 1u);
   EXPECT_EQ(delay, sc_time(9 * 30, SC_NS));

@@ -64,7 +64,7 @@ TEST(Router, RoutesWithRelativeAddressesAndLatency) {
 
   EXPECT_EQ(status, tlm::TLM_OK_RESPONSE);
   EXPECT_EQ(address_after, 0x10'0010u);
-  EXPECT_EQ(bank.data()[0x10], 0xA5);
+  EXPECT_EQ(bank.debug_bytes(0x10, 1)[0], 0xA5);
   EXPECT_EQ(regs.report().writes, 0u);
   EXPECT_EQ(delay, sc_time(30 + 30, SC_NS));  // router 3 cycles + bank (2 + 1) * 10 ns
   EXPECT_EQ(error, tlm::TLM_ADDRESS_ERROR_RESPONSE);
@@ -93,7 +93,7 @@ TEST(Router, DmiIsTranslatedToTheInitiatorsView) {
   sc_core::sc_start();
 
   ASSERT_TRUE(granted);
-  EXPECT_EQ(dmi.get_dmi_ptr(), bank1.data());
+  EXPECT_EQ(dmi.get_dmi_ptr(), bank1.storage().find_page(0));  // the bank's one page
   EXPECT_EQ(dmi.get_start_address(), 0x40'0000u);
   EXPECT_EQ(dmi.get_end_address(), 0x40'0FFFu);
   EXPECT_EQ(bank1.report().dmi_grants, 1u);

@@ -22,8 +22,9 @@ std::uint32_t config_register(const BankLayout& l) {
          (static_cast<std::uint32_t>(l.groups.size()) & 0xFF) << 16 | (l.banks_available & 0xFF) << 24;
 }
 
-tlmx::SramBankConfig bank_config(const BoardParams& p) {
+tlmx::SramBankConfig bank_config(const BoardParams& p, std::uint64_t page_bytes) {
   tlmx::SramBankConfig c;
+  c.page_bytes = page_bytes;
   c.capacity_bytes = p.bank_capacity_bytes;
   c.word_bytes = p.word_bits / 8;
   c.clock_period = p.timing.bank_period;
@@ -42,10 +43,11 @@ tlmx::PciBusConfig pci_config(const BoardParams& p) {
 
 }  // namespace
 
-Rc2000::Rc2000(const sc_core::sc_module_name& name, const BoardParams& params)
-    : Rc2000(name, params, make_bank_layout(params)) {}
+Rc2000::Rc2000(const sc_core::sc_module_name& name, const BoardParams& params, std::uint64_t bank_page_bytes)
+    : Rc2000(name, params, make_bank_layout(params), bank_page_bytes) {}
 
-Rc2000::Rc2000(const sc_core::sc_module_name& name, const BoardParams& params, BankLayout layout)
+Rc2000::Rc2000(const sc_core::sc_module_name& name, const BoardParams& params, BankLayout layout,
+               std::uint64_t bank_page_bytes)
     : sc_core::sc_module(name),
       m_params(params),
       // A caller that made the layout from the banks alone (results in the bank) gets the results
@@ -75,7 +77,7 @@ Rc2000::Rc2000(const sc_core::sc_module_name& name, const BoardParams& params, B
   std::vector<tlmx::DmiActivitySink*> sinks;
   std::vector<std::uint64_t> addresses;
   for (unsigned b = 0; b < m_params.banks; ++b) {
-    m_banks.push_back(std::make_unique<tlmx::SramBank>(("bank" + std::to_string(b)).c_str(), bank_config(m_params)));
+    m_banks.push_back(std::make_unique<tlmx::SramBank>(("bank" + std::to_string(b)).c_str(), bank_config(m_params, bank_page_bytes)));
     local.out.bind(m_banks.back()->in);
     local.map(b * m_stride, m_params.bank_capacity_bytes, b, "bank" + std::to_string(b));
     sinks.push_back(m_banks.back().get());

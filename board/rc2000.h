@@ -6,7 +6,8 @@
 //   dma (bridge DMA) ──> pci.in
 //   pci.out[0] ──> regs.in            control/status registers (register_map.h)
 //   pci.out[1] ──> local.in[0]        Router, bridge latency; bank b at b * bank_stride
-//   wrapper.out ──> local.in[1]       the FPGA reaches the banks through DMI on the same local bus
+//   wrapper.out ──> local.in[1]       the FPGA reaches the banks through DMI on the same local bus,
+//                                     page by page (wrapper_base.h); invalidations come back the same way
 //   local.out[b] ──> bank[b].in
 //   wrapper ──> irq                   raised at DONE, lowered when the host clears DONE
 //
@@ -43,11 +44,16 @@ class Rc2000 : public sc_core::sc_module {
   static constexpr std::uint64_t kBar0 = 0xF000'0000;        // registers, reg::kBarSize bytes
   static constexpr std::uint64_t kBar1 = 0x1'0000'0000;      // banks (64-bit BAR)
 
-  Rc2000(const sc_core::sc_module_name& name, const BoardParams& params);
+  // bank_page_bytes: the banks' storage page (tlm/sram_bank.h), the unit in which their memory is
+  // allocated and granted to the wrapper through DMI; it changes neither timing nor results (tests
+  // make it smaller than a word to put every word across two pages).
+  Rc2000(const sc_core::sc_module_name& name, const BoardParams& params,
+         std::uint64_t bank_page_bytes = tlmx::SramBankConfig{}.page_bytes);
   // With the layout of these parameters already made (and so checked) by the caller: it is not
   // made twice; its results are placed as `params` say (place_results). Throws std::logic_error if
   // it is not the layout of `params`.
-  Rc2000(const sc_core::sc_module_name& name, const BoardParams& params, BankLayout layout);
+  Rc2000(const sc_core::sc_module_name& name, const BoardParams& params, BankLayout layout,
+         std::uint64_t bank_page_bytes = tlmx::SramBankConfig{}.page_bytes);
 
   const BoardParams& params() const { return m_params; }
   const BankLayout& layout() const { return m_layout; }

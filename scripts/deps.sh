@@ -7,10 +7,11 @@ RC_PACKAGES=(build-essential cmake ninja-build pkg-config libsystemc-dev libglm-
              libbenchmark-dev nlohmann-json3-dev libcli11-dev libpng-dev libembree-dev python3-matplotlib
              libassimp-dev libtomlplusplus-dev)
 
-# Installed by scripts/test only: real models in many formats (tests/scenes/mesh_import_test.cpp), and
+# Installed by scripts/test only: real models in many formats (tests/scenes/mesh_import_test.cpp),
 # the cluster engines the sweep scripts drive (scripts/sweep-slurm, scripts/sweep-parallel; their tests
-# in tests/scripts bring up a private single-node Slurm with its own munged).
-RC_TEST_PACKAGES=(assimp-testmodels parallel slurm-wlm munge)
+# in tests/scripts bring up a private single-node Slurm with its own munged), and clang with its
+# sanitizer and libFuzzer run-times for the sanitizer build and the fuzzers (docs/reliability.md).
+RC_TEST_PACKAGES=(assimp-testmodels parallel slurm-wlm munge clang libclang-rt-14-dev)
 
 # Installs RC_PACKAGES and any packages given as arguments that are missing.
 rc_install_missing() {
@@ -34,4 +35,39 @@ rc_build() {
     cmake -S "$RC_ROOT" -B "$RC_BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRC_WERROR="$werror" >&2
   fi
   cmake --build "$RC_BUILD" -j "$(nproc)" >&2
+}
+
+# The sanitizer build (docs/reliability.md): clang, ASan + UBSan, libFuzzer's coverage and the fuzz
+# harnesses of fuzz/, at -O1 with debug information. NDEBUG as in the Release build: the pipeline's
+# per-operation range asserts would double the test run (nlohmann::json's stay, CMakeLists.txt).
+# One build serves the test suite and the fuzzers.
+RC_SANITIZE_BUILD="${RC_SANITIZE_BUILD:-$RC_ROOT/build-sanitize}"
+
+# Prints why the sanitizer build cannot be made here and succeeds, or fails (prints nothing) when it
+# can: a one-line fuzzer with every sanitizer must compile and link.
+rc_sanitize_unavailable() {
+  if ! command -v clang++ >/dev/null 2>&1; then
+    echo "clang++ is not installed (Debian package clang)"
+    return 0
+  fi
+  local probe
+  probe="$(mktemp -d)"
+  echo 'extern "C" int LLVMFuzzerTestOneInput(const unsigned char*, unsigned long) { return 0; }' > "$probe/probe.cpp"
+  if ! clang++ -fsanitize=fuzzer,address,undefined "$probe/probe.cpp" -o "$probe/probe" >"$probe/log" 2>&1; then
+    echo "clang++ cannot link a sanitized libFuzzer program (Debian package libclang-rt-14-dev?): $(head -c 300 "$probe/log")"
+    rm -rf "$probe"
+    return 0
+  fi
+  rm -rf "$probe"
+  return 1
+}
+
+rc_build_sanitize() {
+  local werror=OFF
+  [ -n "${CI:-}" ] && werror=ON
+  if [ ! -f "$RC_SANITIZE_BUILD/build.ninja" ]; then
+    CC=clang CXX=clang++ cmake -S "$RC_ROOT" -B "$RC_SANITIZE_BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g -DNDEBUG" -DRC_SANITIZE=ON -DRC_FUZZ=ON -DRC_WERROR="$werror" >&2
+  fi
+  cmake --build "$RC_SANITIZE_BUILD" -j "$(nproc)" "$@" >&2
 }

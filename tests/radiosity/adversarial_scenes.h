@@ -107,11 +107,14 @@ class AdversarialBuilder {
     for (const Tiling* t : {&middle_, &above_}) {
       SegmentBatch batch;
       const std::int64_t sa = rng_.integer(kLo, kHi), sb = rng_.integer(kLo, kHi);
-      batch.start = on(*t, sa, sb, rng_.integer(0, 3), rng_.integer(0, 3));
+      // One draw per statement (argument order is unspecified; this is the order gcc used).
+      const std::int64_t db = rng_.integer(0, 3), da = rng_.integer(0, 3);
+      batch.start = on(*t, sa, sb, da, db);
       batch.source_face = face_at(*t, double(sa), double(sb));
       for (int i = 0; i < 600; ++i) {
         const std::int64_t ea = rng_.integer(kLo, kHi), eb = rng_.integer(kLo, kHi);
-        batch.ends.push_back(on(*t, ea, eb, rng_.integer(-1, 1), rng_.integer(-1, 1)));
+        const std::int64_t nb = rng_.integer(-1, 1), na = rng_.integer(-1, 1);
+        batch.ends.push_back(on(*t, ea, eb, na, nb));
         batch.end_faces.push_back(face_at(*t, double(ea), double(eb)));
       }
       w_.batches.push_back(batch);

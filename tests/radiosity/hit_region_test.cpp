@@ -66,7 +66,9 @@ TEST(HitRegion, NeverExcludesAPipelineHitAtAnyWidth) {
           float lanes[2][3][kBoxes] = {};
           for (int lane = 0; lane < kBoxes; ++lane) {
             const std::int64_t reach = lane == 0 ? 0 : rng.integer(0, std::int64_t{1} << (bits - 3));
-            box_around(c.end, rng.integer(0, reach), rng.integer(0, reach), bits, lane, lanes);
+            // One draw per statement (argument order is unspecified; this is the order gcc used).
+            const std::int64_t above = rng.integer(0, reach), below = rng.integer(0, reach);
+            box_around(c.end, below, above, bits, lane, lanes);
           }
           ASSERT_EQ(region.may_hit_boxes(lanes), kAllBoxes) << name(kind) << " at " << bits << " bits";
         }

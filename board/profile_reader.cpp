@@ -126,8 +126,8 @@ const nlohmann::ordered_json& ProfileReader::sourced(const std::string& path) co
   if (node == nullptr) fail(path, "missing");
   if (!node->is_object() || !node->contains("value"))
     fail(path, "must be an object {\"value\": number, \"source\": \"where it came from\"}");
-  const auto& source = (*node)["source"];
-  if (!source.is_string() || source.get<std::string>().empty())
+  const auto source = node->find("source");  // const operator[] on a missing key is undefined
+  if (source == node->end() || !source->is_string() || source->get<std::string>().empty())
     fail(path, "has no \"source\" string (every number must say where it came from)");
   if (!(*node)["value"].is_number()) fail(path, "\"value\" must be a number");
   return *node;
@@ -162,8 +162,8 @@ std::size_t ProfileReader::choice(const std::string& path, const std::vector<std
   if (node == nullptr) fail(path, "missing (one of " + names + ")");
   if (!node->is_object() || !node->contains("value"))
     fail(path, "must be an object {\"value\": name, \"source\": \"where it came from\"} (one of " + names + ")");
-  const auto& source = (*node)["source"];
-  if (!source.is_string() || source.get<std::string>().empty())
+  const auto source = node->find("source");  // const operator[] on a missing key is undefined
+  if (source == node->end() || !source->is_string() || source->get<std::string>().empty())
     fail(path, "has no \"source\" string (every choice must say where it came from)");
   if (!(*node)["value"].is_string()) fail(path, "\"value\" must be a name, one of " + names);
   const std::string value = (*node)["value"].get<std::string>();

@@ -188,6 +188,13 @@ std::string read_description(const std::string& path) {
   }
 }
 
+// The schema key holds this format's name; any other value, or another type, is not it (value()
+// would throw a type_error on a number).
+bool has_schema(const nlohmann::json& object) {
+  const auto it = object.find("schema");
+  return it != object.end() && it->is_string() && it->get<std::string>() == kSchema;
+}
+
 }  // namespace
 
 bool is_composition_file(const std::string& path) {
@@ -198,7 +205,7 @@ bool is_composition_file(const std::string& path) {
   }
   if (c != '{') return false;
   const nlohmann::json j = nlohmann::json::parse(read_description(path), nullptr, false);
-  return j.is_object() && j.value("schema", "") == kSchema;
+  return j.is_object() && has_schema(j);
 }
 
 LoadedScene load_composition(const std::string& path) {
@@ -210,7 +217,7 @@ LoadedScene load_composition(const std::string& path) {
   }
   const Description d(path, json);
   d.only_keys(json, "(top level)", {"schema", "room", "meshes", "light"});
-  if (json.value("schema", "") != kSchema) d.fail("schema", std::string("must be \"") + kSchema + "\"");
+  if (!has_schema(json)) d.fail("schema", std::string("must be \"") + kSchema + "\"");
 
   LoadedScene out = load_room(d);
   out.scene.name = std::filesystem::path(path).filename().string();

@@ -100,8 +100,26 @@ class AddressSpaceCap {
   bool active_ = false;
 };
 
-constexpr unsigned kImportSteps =
-    aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices | aiProcess_SortByPType;
+// ValidateDataStructure runs first and refuses a face whose index list is missing or points past
+// the vertices (fuzz/regressions/mesh: Assimp's OFF and PLY readers build such faces from a short
+// or out-of-range face list, and the steps after it would read out of bounds or assert).
+constexpr unsigned kImportSteps = aiProcess_ValidateDataStructure | aiProcess_Triangulate |
+                                  aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
+                                  aiProcess_SortByPType;
+
+// Assimp 5.2's PLY reader never returns from a header without its end_header line (it reads the
+// file again and again), so a PLY file (it starts with the magic word) must have one. The header
+// is the file's first lines: the scan stops there, or at the end of a file that has none.
+void check_ply_header(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  if (!std::getline(in, line) || (line.rfind("ply", 0) != 0 && line.rfind("PLY", 0) != 0)) return;
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.rfind("end_header", 0) == 0) return;
+  }
+  throw SceneFileError(path + ": a PLY header without its end_header line");
+}
 
 // Assimp recognises a file by its extension first and sniffs text formats well, but a binary STL,
 // PLY, glTF or OFF under an extension it does not know can be taken for something else. Their
@@ -173,6 +191,7 @@ LoadedScene import_mesh_file(const std::string& path, const MeshImportOptions& o
     throw SceneFileError(e.what());
   }
   if (!std::ifstream(path)) throw SceneFileError(path + ": cannot open");
+  check_ply_header(path);
   Assimp::Importer importer;
   // Points and lines are removed by the sort (they carry no area); node transforms are applied.
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);

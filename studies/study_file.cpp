@@ -92,7 +92,12 @@ std::vector<nlohmann::ordered_json> range_values(const Reader& r, const toml::ta
   if (!(d > 0)) r.fail(step ? *step : from, key + ".step", "must be positive");
   if (b < a) r.fail(to, key + ".to", "is below from");
   const double count = std::floor((b - a) / d + 1e-9) + 1;
-  if (count > 10000) r.fail(t, key, "spans " + std::to_string(static_cast<long long>(count)) + " values (at most 10000)");
+  // Written so that an infinite count (a huge span over a tiny step) fails here before any cast.
+  if (!(count <= 10000)) {
+    r.fail(t, key, (std::isfinite(count) && count < 1e18 ? "spans " + std::to_string(static_cast<long long>(count))
+                                                          : std::string("spans more than 10^18")) +
+                       " values (at most 10000)");
+  }
   std::vector<nlohmann::ordered_json> values;
   for (long long i = 0; i < static_cast<long long>(count); ++i) {
     const double x = a + static_cast<double>(i) * d;

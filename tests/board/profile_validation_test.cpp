@@ -123,6 +123,23 @@ TEST(ProfileValidation, ClocksArePositiveAndFinite) {
   EXPECT_EQ(device_error(j), "configs/devices/x.json: clock.mhz_default: value 1e+300 is outside [0.001, 10000]");
 }
 
+// A value without its source, or with a source that is not text, is named (it once reached
+// nlohmann's const operator[] on the missing key: fuzz/regressions/device).
+TEST(ProfileValidation, EveryValueNeedsItsSource) {
+  nlohmann::ordered_json j = xc2v6000();
+  j["pci"]["clock_mhz"].erase("source");
+  EXPECT_EQ(device_error(j), "configs/devices/x.json: pci.clock_mhz: has no \"source\" string (every number must "
+                             "say where it came from)");
+  j = xc2v6000();
+  j["pci"]["clock_mhz"]["source"] = 7;
+  EXPECT_EQ(device_error(j), "configs/devices/x.json: pci.clock_mhz: has no \"source\" string (every number must "
+                             "say where it came from)");
+  j = xc2v6000();
+  j["wrapper"]["results"].erase("source");
+  EXPECT_EQ(device_error(j).rfind("configs/devices/x.json: wrapper.results: has no \"source\" string", 0), 0u)
+      << device_error(j);
+}
+
 TEST(ProfileValidation, DesignBitsAreAPipelineWidth) {
   nlohmann::ordered_json j = xc2v6000();
   j["clock"]["design_bits"]["value"] = 40;

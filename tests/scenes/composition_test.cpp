@@ -121,6 +121,10 @@ TEST_F(CompositionTest, ErrorsNameTheFileAndTheKey) {
             bad + ": meshes[0].fit_into: excludes scale and translate");
   EXPECT_NE(error_of("{not json").find(bad + ": not valid JSON"), std::string::npos);
   EXPECT_FALSE(is_composition_file(write("other.json", R"({"schema": "something else"})")));
+  // A schema of another type is not this format (value() would throw a type_error on it).
+  EXPECT_EQ(error_of(R"({"schema": 1, "room": "cornell-box"})"),
+            bad + ": schema: must be \"rc2000sim.composition/1\"");
+  EXPECT_FALSE(is_composition_file(write("number.json", R"({"schema": 1})")));
 }
 
 }  // namespace

@@ -98,6 +98,33 @@ TEST(MeshImport, MalformedFilesGiveClearErrors) {
   EXPECT_EQ(error_of("/no/such/mesh.obj"), "/no/such/mesh.obj: cannot open (No such file or directory)");
 }
 
+// Broken files of our own that crashed or hung Assimp (fuzz/regressions/mesh): a face index past
+// the vertices, a face list shorter than its count, a PLY header that never ends. Each is an error
+// naming the file.
+TEST(MeshImport, BrokenFacesAndHeadersGiveClearErrors) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "rc_mesh_import_broken";
+  std::filesystem::create_directories(dir);
+  const std::string kPlyHead = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                               "property float z\nelement face 1\nproperty list uchar int vertex_indices\n";
+  const std::pair<const char*, std::string> files[] = {
+      {"short.off", "OFF\n5 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n"},   // aborted in Triangulate
+      {"short-quad.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n4 0 1 2 3\n3 0 1 9\n"},
+      {"index.ply", kPlyHead + "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 9\n"},   // read past the vertices
+      {"far-index.ply", kPlyHead + "end_header\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2 900000\n"},  // crashed
+      {"endless.ply", kPlyHead + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"}};
+  MeshImportOptions o;
+  o.require_emitter = false;
+  for (const auto& [name, text] : files) {
+    const std::string path = (dir / name).string();
+    std::ofstream(path) << text;
+    const std::string e = error_of(path, o);
+    EXPECT_EQ(e.rfind(path + ": ", 0), 0u) << name << ": " << e;
+  }
+  EXPECT_EQ(error_of((dir / "endless.ply").string(), o), (dir / "endless.ply").string() +
+                                                              ": a PLY header without its end_header line");
+  std::filesystem::remove_all(dir);
+}
+
 // By content, not by name: the same OBJ and binary STL under meaningless extensions import alike,
 // and rc2000sim's own scene text is recognised by its keywords.
 TEST(MeshImport, FormatsAreRecognisedByContent) {

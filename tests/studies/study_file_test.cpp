@@ -110,6 +110,7 @@ TEST(StudyFile, BadStudiesNameTheFileTheLineTheKeyAndTheLimit) {
       {"[axes]\nhosts = [\"no-such-host\"]\n", {"no hosts profile 'no-such-host'"}},
       {"[axes]\nbanks.clock_mhz = { from = 200, to = 100 }\n", {"inline.toml:2", "below from"}},
       {"[axes]\nbanks.clock_mhz = { from = 1, to = 1e9, step = 1 }\n", {"at most 10000"}},
+      {"[axes]\nbanks.clock_mhz = { from = 0, to = 1e308, step = 1e-308 }\n", {"spans more than 10^18", "at most 10000"}},
       {"[axes]\n\"banks.clock_mhz\" = [100]\n[fixed]\n\"banks.clock_mhz\" = 90\n", {"both an axis and fixed"}},
       {"[solver]\nsteps = 0\n", {"inline.toml:2", "solver.steps", "1..10000000"}},
       {"[solver]\nsteps = \"often\"\n", {"inline.toml:2", "solver.steps"}},

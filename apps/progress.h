@@ -18,7 +18,11 @@ class ProgressLine {
     last_ = now;
     shown_ = true;
     std::fprintf(stderr, "\r");
-    std::fprintf(stderr, format, args...);
+    if constexpr (sizeof...(args) == 0) {
+      std::fputs(format, stderr);  // a plain message: not a format (it may hold a '%')
+    } else {
+      std::fprintf(stderr, format, args...);
+    }
     std::fflush(stderr);
   }
   void finish() {

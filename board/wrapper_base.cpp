@@ -4,10 +4,6 @@
 
 namespace rc::board {
 
-namespace {
-constexpr const char* kMsgType = "rc/board/Wrapper";
-}
-
 WrapperBase::WrapperBase(const sc_core::sc_module_name& name, const BankLayout& layout, const WrapperTiming& timing,
                          ControlRegs& regs, tlmx::IrqLine& irq, std::vector<tlmx::DmiActivitySink*> bank_sinks,
                          std::vector<std::uint64_t> bank_addresses, WrapperSignals signals)

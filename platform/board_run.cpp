@@ -356,7 +356,7 @@ BoardRunResult run_radiosity_on_board(const Scene& scene, const SolverOptions& s
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (vcd != nullptr) sc_core::sc_close_vcd_trace_file(vcd);
   system->rethrow_if_failed();
-  return {system->result(), system->report(wall), options.trace ? system->trace().text() : std::string()};
+  return {system->result(), system->report(wall), options.trace ? system->trace_writer().text() : std::string()};
 }
 
 }  // namespace rc

@@ -131,7 +131,7 @@ class BoardSystem : public sc_core::sc_module {
   const BoardVisibility& card_driver(unsigned c) const;
   const HostCpuModel& card_cpu(unsigned c) const;  // the processor card c's driver runs on
   const MultiCardVisibility* multi_card() const { return m_multi.get(); }  // null with one card
-  TraceWriter& trace() { return m_trace; }
+  TraceWriter& trace_writer() { return m_trace; }  // not trace(): sc_object::trace(sc_trace_file*) is virtual
   RunReport report(double wall_seconds = -1) const;
 
  private:

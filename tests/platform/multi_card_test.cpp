@@ -315,7 +315,7 @@ TEST(MultiCard, ReportHasPerCardFiguresAndTheTraceATrackPerCard) {
               j["simulated_seconds"].get<double>(), 1e-12);
 
   const std::filesystem::path file = std::filesystem::temp_directory_path() / ("rc_cards_" + std::to_string(getpid()) + ".json");
-  s.trace().write(file.string());
+  s.trace_writer().write(file.string());
   std::ifstream in(file);
   const nlohmann::json trace = nlohmann::json::parse(in);
   std::filesystem::remove(file);

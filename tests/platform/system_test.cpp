@@ -203,8 +203,10 @@ TEST(BoardRunner, ReportsTraceAndWritesVcd) {
     if (e["name"] == "thread_name") tracks.insert(e["args"]["name"].get<std::string>());
   for (const char* track : {"host", "dma", "lane 0", "lane 1", "irq"}) EXPECT_TRUE(tracks.count(track)) << track;
   EXPECT_TRUE(std::filesystem::file_size(o.vcd_path) > 0);
-  EXPECT_THROW(run_radiosity_on_board(small_cornell_box(), steps(1), o), std::logic_error);
   std::filesystem::remove_all(dir);
+  // Last: a throw after a simulation leaves ASan unsure of the stack's bounds (SystemC switches
+  // stacks without telling it), so nothing may follow it in the sanitizer build.
+  EXPECT_THROW(run_radiosity_on_board(small_cornell_box(), steps(1), o), std::logic_error);
 }
 
 }  // namespace

@@ -1,6 +1,9 @@
 #include "scenes/mesh_import.h"
 
 #include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <type_traits>
 #include <cstdio>
 #include <fstream>
 #include <cstring>
@@ -17,6 +20,7 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include "io/child_process.h"
 #include "io/input_file.h"
 #include "scenes/scene_builder.h"
 
@@ -150,14 +154,250 @@ const aiScene* read_file(Assimp::Importer& importer, const std::string& path, st
   return importer.ReadFileFromMemory(buffer.data(), buffer.size(), kImportSteps, hint.c_str());
 }
 
+// In the child: the cap stays until it exits. A std::bad_alloc escapes to read_isolated.
 const aiScene* read_capped(Assimp::Importer& importer, const std::string& path, std::vector<char>& buffer) {
   AddressSpaceCap cap(kImportHeadroom);
-  try {
-    return read_file(importer, path, buffer);
-  } catch (const std::bad_alloc&) {
-    throw SceneFileError(path + ": reading it needs more than " + std::to_string(kImportHeadroom >> 30) +
-                         " GiB of memory (a malformed or enormous file)");
+  return read_file(importer, path, buffer);
+}
+
+std::string memory_note() {
+  return " (reading it needs more than " + std::to_string(kImportHeadroom >> 30) +
+         " GiB of memory: a malformed or enormous file)";
+}
+
+// What Assimp made of a file, in the solver's terms: the meshes' materials (converted, with their
+// warnings) and each mesh's triangles. The child process that ran Assimp sends it as bytes.
+struct RawMesh {
+  std::string error;  // Assimp's reason for refusing the file (nothing else is set then)
+  std::vector<Material> materials;
+  std::vector<std::int64_t> material_of;  // per Assimp material: index in `materials`, or -1 (unused)
+  std::vector<std::string> warnings;
+  struct Part {
+    std::string origin;  // "<path>: mesh 2 'name'"
+    std::int64_t material = -1;
+    std::vector<Vec3> corners;  // three per triangle, in face order
+  };
+  std::vector<Part> parts;
+  std::uint64_t skipped = 0;  // faces that are not triangles
+};
+
+RawMesh raw_mesh(const aiScene& scene, const MeshImportOptions& o, const std::string& path) {
+  RawMesh raw;
+  if (scene.mNumMeshes == 0) {
+    raw.error = "the file holds no meshes";
+    return raw;
   }
+  raw.material_of.assign(scene.mNumMaterials, -1);
+  for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+    const aiMesh& mesh = *scene.mMeshes[m];
+    const unsigned mat = mesh.mMaterialIndex;
+    if (mat < raw.material_of.size() && raw.material_of[mat] < 0) {
+      raw.material_of[mat] = static_cast<std::int64_t>(raw.materials.size());
+      raw.materials.push_back(material_from(*scene.mMaterials[mat], mat, o, raw.warnings, path));
+    }
+    RawMesh::Part part;
+    part.origin = path + ": mesh " + std::to_string(m) + (mesh.mName.length ? " '" + std::string(mesh.mName.C_Str()) + "'" : "");
+    part.material = mat < raw.material_of.size() ? raw.material_of[mat] : -1;
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+      const aiFace& face = mesh.mFaces[f];
+      if (face.mNumIndices != 3) {
+        ++raw.skipped;
+        continue;
+      }
+      for (unsigned k = 0; k < 3; ++k) {
+        const aiVector3D& v = mesh.mVertices[face.mIndices[k]];
+        part.corners.push_back({v.x, v.y, v.z});
+      }
+    }
+    raw.parts.push_back(std::move(part));
+  }
+  return raw;
+}
+
+class ByteWriter {
+ public:
+  template <typename T>
+  void put(const T& v) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    out_.append(reinterpret_cast<const char*>(&v), sizeof v);
+  }
+  void text(const std::string& s) {
+    put(static_cast<std::uint64_t>(s.size()));
+    out_ += s;
+  }
+  std::string take() { return std::move(out_); }
+
+ private:
+  std::string out_;
+};
+
+class ByteReader {
+ public:
+  explicit ByteReader(const std::string& in) : in_(in) {}
+  template <typename T>
+  T get() {
+    T v{};
+    need(sizeof v);
+    std::memcpy(&v, in_.data() + at_, sizeof v);
+    at_ += sizeof v;
+    return v;
+  }
+  std::string text() {
+    const auto n = get<std::uint64_t>();
+    need(n);
+    std::string s = in_.substr(at_, static_cast<std::size_t>(n));
+    at_ += static_cast<std::size_t>(n);
+    return s;
+  }
+  // A count of items of at least `item_bytes` each: more than the bytes left could hold is refused
+  // before anything is allocated for them.
+  std::uint64_t count(std::size_t item_bytes) {
+    const auto n = get<std::uint64_t>();
+    if (n > (in_.size() - at_) / item_bytes) throw std::length_error("the mesh reader's answer is malformed");
+    return n;
+  }
+  bool done() const { return at_ == in_.size(); }
+
+ private:
+  void need(std::uint64_t n) const {
+    if (n > in_.size() - at_) throw std::length_error("the mesh reader's answer is cut short");
+  }
+  const std::string& in_;
+  std::size_t at_ = 0;
+};
+
+std::string encode(const RawMesh& m) {
+  ByteWriter w;
+  w.text(m.error);
+  w.put(static_cast<std::uint64_t>(m.materials.size()));
+  for (const Material& mat : m.materials) {
+    w.text(mat.name);
+    for (double x : mat.reflectance.band) w.put(x);
+    for (double x : mat.emission.band) w.put(x);
+  }
+  w.put(static_cast<std::uint64_t>(m.material_of.size()));
+  for (std::int64_t i : m.material_of) w.put(i);
+  w.put(static_cast<std::uint64_t>(m.warnings.size()));
+  for (const std::string& s : m.warnings) w.text(s);
+  w.put(static_cast<std::uint64_t>(m.parts.size()));
+  for (const RawMesh::Part& p : m.parts) {
+    w.text(p.origin);
+    w.put(p.material);
+    w.put(static_cast<std::uint64_t>(p.corners.size()));
+    for (const Vec3& v : p.corners) w.put(v);
+  }
+  w.put(m.skipped);
+  return w.take();
+}
+
+RawMesh decode(const std::string& bytes) {
+  ByteReader r(bytes);
+  RawMesh m;
+  m.error = r.text();
+  for (std::uint64_t i = 0, n = r.count(8); i < n; ++i) {
+    Material mat;
+    mat.name = r.text();
+    for (double& x : mat.reflectance.band) x = r.get<double>();
+    for (double& x : mat.emission.band) x = r.get<double>();
+    m.materials.push_back(std::move(mat));
+  }
+  for (std::uint64_t i = 0, n = r.count(8); i < n; ++i) m.material_of.push_back(r.get<std::int64_t>());
+  for (std::uint64_t i = 0, n = r.count(8); i < n; ++i) m.warnings.push_back(r.text());
+  for (std::uint64_t i = 0, n = r.count(8); i < n; ++i) {
+    RawMesh::Part p;
+    p.origin = r.text();
+    p.material = r.get<std::int64_t>();
+    const std::uint64_t corners = r.count(sizeof(Vec3));
+    p.corners.reserve(static_cast<std::size_t>(corners));
+    for (std::uint64_t k = 0; k < corners; ++k) p.corners.push_back(r.get<Vec3>());
+    m.parts.push_back(std::move(p));
+  }
+  m.skipped = r.get<std::uint64_t>();
+  if (!r.done()) throw std::length_error("the mesh reader's answer has bytes left over");
+  return m;
+}
+
+// Assimp in a child process (io/child_process.h): whatever a malformed file does to it (an
+// assertion, a wild read, a hang, an allocation of hundreds of gigabytes) ends the child, and the
+// parent says so, naming the file. Fuzzing found each of those in Assimp 5.2 (fuzz/regressions/mesh).
+RawMesh read_isolated(const std::string& path, const MeshImportOptions& o, std::uint64_t file_bytes) {
+  const auto time_limit = std::chrono::seconds(60 + (file_bytes >> 20));  // a minute, plus a second per MiB
+  const io::ChildOutcome child = io::run_in_child(
+      [&] {
+        Assimp::Importer importer;
+        // Points and lines are removed by the sort (they carry no area); node transforms are applied.
+        importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+        std::vector<char> buffer;  // the file, when it is read from memory with a format hint
+        RawMesh raw;
+        try {
+          const aiScene* scene = read_capped(importer, path, buffer);
+          if (scene == nullptr) {
+            raw.error = importer.GetErrorString();
+            if (raw.error.find("bad_alloc") != std::string::npos) raw.error += memory_note();
+          } else {
+            raw = raw_mesh(*scene, o, path);
+          }
+        } catch (const std::bad_alloc&) {
+          raw = RawMesh{};
+          raw.error = std::string("reading it failed") + memory_note();
+        }
+        return encode(raw);
+      },
+      time_limit);
+  if (child.timed_out) {
+    RawMesh raw;
+    raw.error = "the mesh reader (Assimp) did not finish within " + std::to_string(time_limit.count()) +
+                " s (a malformed file)";
+    return raw;
+  }
+  if (!child.completed) {
+    RawMesh raw;
+    raw.error = "the mesh reader (Assimp) failed on it: " + child.how_it_ended() +
+                " (a malformed file, or one that needs more than " + std::to_string(kImportHeadroom >> 30) +
+                " GiB of memory)";
+    return raw;
+  }
+  return decode(child.bytes);
+}
+
+// The scene from what Assimp read: our checks (SceneBuilder) and errors, in the parent.
+LoadedScene build_scene(const std::string& path, const MeshImportOptions& o, const RawMesh& raw) {
+  LoadedScene out;
+  std::vector<std::string> warnings = raw.warnings;
+  SceneBuilder builder(path);
+  std::vector<int> material_index(raw.materials.size(), -1);
+  for (std::size_t m = 0; m < raw.materials.size(); ++m) {
+    try {
+      material_index[m] = builder.add_material(raw.materials[m]);
+    } catch (const std::invalid_argument& e) {
+      throw SceneFileError(path + ": " + e.what());  // e.g. an emissive colour that is not finite
+    }
+  }
+  for (const RawMesh::Part& part : raw.parts) {
+    const int material = part.material >= 0 ? material_index[static_cast<std::size_t>(part.material)] : -1;
+    for (std::size_t f = 0; f + 2 < part.corners.size(); f += 3) {
+      const std::vector<Vec3> vertices(part.corners.begin() + static_cast<std::ptrdiff_t>(f),
+                                       part.corners.begin() + static_cast<std::ptrdiff_t>(f + 3));
+      try {
+        builder.add_surface(part.origin + " face " + std::to_string(f / 3), material, vertices, part.origin);
+      } catch (const std::invalid_argument& e) {
+        throw SceneFileError(e.what());  // a coordinate that is not finite; starts with the file
+      }
+    }
+  }
+  if (raw.skipped > 0) warnings.push_back(path + ": " + std::to_string(raw.skipped) + " faces that are not triangles skipped");
+  try {
+    out.scene = builder.build();
+  } catch (const std::invalid_argument& e) {
+    throw SceneFileError(path + ": " + e.what());
+  }
+  if (o.require_emitter && !out.scene.emits_light()) {
+    throw SceneFileError(path + ": no material emits light (an emissive colour); add an emitter, e.g. by composing "
+                                "the mesh into the Cornell Box (docs/scenes.md)");
+  }
+  warnings.insert(warnings.end(), builder.warnings().begin(), builder.warnings().end());
+  out.warnings = std::move(warnings);
+  return out;
 }
 
 }  // namespace
@@ -192,68 +432,9 @@ LoadedScene import_mesh_file(const std::string& path, const MeshImportOptions& o
   }
   if (!std::ifstream(path)) throw SceneFileError(path + ": cannot open");
   check_ply_header(path);
-  Assimp::Importer importer;
-  // Points and lines are removed by the sort (they carry no area); node transforms are applied.
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  std::vector<char> buffer;  // the file, when it is read from memory with a format hint
-  const aiScene* scene = read_capped(importer, path, buffer);
-  if (scene == nullptr) {
-    std::string reason = importer.GetErrorString();
-    if (reason.find("bad_alloc") != std::string::npos) {
-      reason += " (reading it needs more than " + std::to_string(kImportHeadroom >> 30) +
-                " GiB of memory: a malformed or enormous file)";
-    }
-    throw SceneFileError(path + ": " + reason);
-  }
-  if (scene->mNumMeshes == 0) throw SceneFileError(path + ": the file holds no meshes");
-
-  LoadedScene out;
-  std::vector<std::string> warnings;
-  SceneBuilder builder(path);
-  std::vector<int> material_index(scene->mNumMaterials, -1);
-  std::size_t skipped = 0;
-  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-    const aiMesh& mesh = *scene->mMeshes[m];
-    const unsigned mat = mesh.mMaterialIndex;
-    if (mat < material_index.size() && material_index[mat] < 0) {
-      try {
-        material_index[mat] = builder.add_material(material_from(*scene->mMaterials[mat], mat, o, warnings, path));
-      } catch (const std::invalid_argument& e) {
-        throw SceneFileError(path + ": " + e.what());  // e.g. an emissive colour that is not finite
-      }
-    }
-    const std::string origin = path + ": mesh " + std::to_string(m) + (mesh.mName.length ? " '" + std::string(mesh.mName.C_Str()) + "'" : "");
-    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
-      const aiFace& face = mesh.mFaces[f];
-      if (face.mNumIndices != 3) {
-        ++skipped;
-        continue;
-      }
-      std::vector<Vec3> vertices;
-      for (unsigned k = 0; k < 3; ++k) {
-        const aiVector3D& v = mesh.mVertices[face.mIndices[k]];
-        vertices.push_back({v.x, v.y, v.z});
-      }
-      try {
-        builder.add_surface(origin + " face " + std::to_string(f), material_index[mat], vertices, origin);
-      } catch (const std::invalid_argument& e) {
-        throw SceneFileError(e.what());  // a coordinate that is not finite; starts with the file
-      }
-    }
-  }
-  if (skipped > 0) warnings.push_back(path + ": " + std::to_string(skipped) + " faces that are not triangles skipped");
-  try {
-    out.scene = builder.build();
-  } catch (const std::invalid_argument& e) {
-    throw SceneFileError(path + ": " + e.what());
-  }
-  if (o.require_emitter && !out.scene.emits_light()) {
-    throw SceneFileError(path + ": no material emits light (an emissive colour); add an emitter, e.g. by composing "
-                                "the mesh into the Cornell Box (docs/scenes.md)");
-  }
-  warnings.insert(warnings.end(), builder.warnings().begin(), builder.warnings().end());
-  out.warnings = std::move(warnings);
-  return out;
+  const RawMesh raw = read_isolated(path, o, std::filesystem::file_size(path));
+  if (!raw.error.empty()) throw SceneFileError(path + ": " + raw.error);
+  return build_scene(path, o, raw);
 }
 
 }  // namespace rc

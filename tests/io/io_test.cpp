@@ -1,11 +1,16 @@
 #include <gtest/gtest.h>
 
+#include <csignal>
 #include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+#include <unistd.h>
 #include <functional>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "io/child_process.h"
 #include "io/input_file.h"
 #include "io/output_file.h"
 #include "io/parse_number.h"
@@ -111,6 +116,34 @@ TEST(ParseNumber, FiniteRefusesPrefixesInfinitiesAndNan) {
   EXPECT_EQ(parse_finite("1.5e3"), 1500.0);
   EXPECT_EQ(parse_finite("-0.25"), -0.25);
   for (const char* bad : {"", " 1", "1 ", "1.5x", "nan", "inf", "-inf", "1e999"}) EXPECT_FALSE(parse_finite(bad)) << bad;
+}
+
+}  // namespace
+}  // namespace rc::io
+
+namespace rc::io {
+namespace {
+
+// A child's answer comes back whole; a crash, an exception or a hang is reported, never shared.
+TEST(ChildProcess, ReturnsTheBytesOrHowTheChildEnded) {
+  const ChildOutcome ok = run_in_child([] { return std::string(200000, 'x') + "end"; }, std::chrono::seconds(30));
+  EXPECT_TRUE(ok.completed);
+  EXPECT_EQ(ok.bytes.size(), 200003u);
+  const ChildOutcome aborted = run_in_child([]() -> std::string { std::abort(); }, std::chrono::seconds(30));
+  EXPECT_FALSE(aborted.completed);
+  EXPECT_EQ(aborted.signal, SIGABRT);
+  EXPECT_EQ(aborted.how_it_ended(), "killed by signal 6 (Aborted)");
+  const ChildOutcome threw = run_in_child([]() -> std::string { throw std::runtime_error("x"); }, std::chrono::seconds(30));
+  EXPECT_FALSE(threw.completed);
+  EXPECT_EQ(threw.how_it_ended(), "ended by an exception");
+  const ChildOutcome hung = run_in_child(
+      []() -> std::string {
+        for (;;) ::pause();
+      },
+      std::chrono::seconds(1));
+  EXPECT_FALSE(hung.completed);
+  EXPECT_TRUE(hung.timed_out);
+  EXPECT_EQ(hung.how_it_ended(), "stopped after its time limit");
 }
 
 }  // namespace

@@ -113,6 +113,24 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   return out;
 }
 
+// Joules, not the light's energy above (docs/energy.md): the total, per step and per intersection,
+// and each component's share; or why there are none.
+void print_electrical_energy(const RunReport& b) {
+  if (!b.energy) {
+    std::printf("  electricity  not estimated: %s\n", b.energy_missing.c_str());
+    return;
+  }
+  const energy::EnergyReport& e = *b.energy;
+  std::string parts;
+  for (const energy::ComponentEnergy& c : e.components) {
+    char part[96];
+    std::snprintf(part, sizeof part, "%s%s %.4g J", parts.empty() ? "" : ", ", c.name.c_str(), c.joules());
+    parts += part;
+  }
+  std::printf("  electricity  %.4g J (%.4g J per step, %.4g nJ per intersection, %.4g W average): %s\n", e.joules,
+              e.joules_per_step, e.joules_per_intersection * 1e9, e.average_watts, parts.c_str());
+}
+
 void print_board_summary(const RunReport& b) {
   const RunTime& t = b.time;
   std::printf("  simulated    %.6f s = host compute %.6f + driver %.6f + PCI %.6f + waiting %.6f\n", b.simulated_seconds,
@@ -135,6 +153,7 @@ void print_board_summary(const RunReport& b) {
     std::printf("  PCI bus %-4zu %zu card(s), utilisation %.1f%%\n", i, b.board.cards.buses[i].cards.size(),
                 100.0 * b.board.cards.buses[i].utilisation);
   }
+  print_electrical_energy(b);
 }
 
 void print_summary(const RunOptions& o, const Scene& scene, const RunOutcome& out, double wall,

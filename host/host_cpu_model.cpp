@@ -109,7 +109,8 @@ HostProfile host_profile_from_json(const nlohmann::ordered_json& json, const std
   p.interrupt_latency = seconds("driver_seconds.interrupt_latency");
   p.driver_model = read_driver_model(r);
   // A calibrated profile carries its fit as a record (rc2000sim calibrate); nothing reads it back.
-  r.refuse_unknown_keys({"description", "calibration"});
+  // "energy" is the energy table's, read and checked whole by energy/energy_table.h.
+  r.refuse_unknown_keys({"description", "calibration", "energy"});
   return p;
 }
 

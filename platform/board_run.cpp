@@ -52,6 +52,7 @@ BoardSetup make_board_setup(const BoardRunOptions& o) {
   s.cards = o.cards;
   s.card_split = o.card_split;
   s.card_bus = o.card_bus;
+  s.energy = energy::load_energy_tables(&device, s.host.json, s.host.file);
   return s;
 }
 
@@ -333,6 +334,7 @@ RunReport BoardSystem::report(double wall_seconds) const {
     r.wall_seconds = wall_seconds;
     r.wall_seconds_per_step = m_result.steps > 0 ? wall_seconds / m_result.steps : 0.0;
   }
+  attach_energy(r, m_setup.energy, static_cast<std::uint64_t>(m_result.steps));
   return r;
 }
 

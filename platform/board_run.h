@@ -26,6 +26,7 @@
 
 #include "board/board_params.h"
 #include "board/rc2000.h"
+#include "energy/energy_table.h"
 #include "host/board_visibility.h"
 #include "host/host_cpu_model.h"
 #include "host/multi_card_visibility.h"
@@ -97,6 +98,7 @@ struct BoardSetup {
   CardCount cards = 1;  // identical cards, each `board`
   CardSplit card_split = CardSplit::rays;
   CardBus card_bus = CardBus::shared;
+  energy::EnergyTables energy;  // the device's and host's energy tables, or why there are none
 };
 
 // Loads the profiles and checks the options (throws std::invalid_argument).

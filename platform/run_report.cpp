@@ -1,5 +1,6 @@
 #include "platform/run_report.h"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace rc {
@@ -34,11 +35,33 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(BoardDetail, device, layout, max_rays_per_bat
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(RunReport, board_run, simulated_seconds, time, intersections, host_profile, work, board,
                                    has_wall, wall_seconds, wall_seconds_per_step)
 
-std::string encode(const RunReport& report) { return nlohmann::json(report).dump(); }
+}  // namespace rc
+
+namespace rc::energy {
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Figure, value, path, unit, source)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(EnergyTerm, component, counter, count, figure, is_static, joules)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(ComponentEnergy, name, static_joules, dynamic_joules, average_watts)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(EnergyReport, terms, components, joules, seconds, average_watts, joules_per_step,
+                                   joules_per_intersection, energy_delay_product, device_table, host_table)
+}  // namespace rc::energy
+
+namespace rc {
+
+// The energy is optional, which this nlohmann has no conversion for: written beside the macro's fields.
+std::string encode(const RunReport& report) {
+  nlohmann::json j = report;
+  j["energy"] = report.energy ? nlohmann::json(*report.energy) : nlohmann::json();
+  j["energy_missing"] = report.energy_missing;
+  return j.dump();
+}
 
 RunReport decode(const std::string& text) {
   try {
-    return nlohmann::json::parse(text).get<RunReport>();
+    const nlohmann::json j = nlohmann::json::parse(text);
+    RunReport r = j.get<RunReport>();
+    if (!j.at("energy").is_null()) r.energy = j.at("energy").get<energy::EnergyReport>();
+    r.energy_missing = j.at("energy_missing").get<std::string>();
+    return r;
   } catch (const nlohmann::json::exception& e) {
     throw std::invalid_argument(std::string("a run report from a worker process is malformed: ") + e.what());
   }
@@ -154,6 +177,48 @@ ordered_json cards_json(const CardsReport& c) {
   return {{"count", c.count}, {"split", c.split}, {"bus", c.bus}, {"buses", buses}, {"per_card", cards}};
 }
 
+// Every joule with its counter and the profile figure it used (docs/energy.md, docs/outputs.md).
+ordered_json energy_json(const energy::EnergyReport& e) {
+  ordered_json components = ordered_json::array();
+  for (const energy::ComponentEnergy& c : e.components) {
+    components.push_back({{"name", c.name},
+                          {"joules", c.joules()},
+                          {"static_joules", c.static_joules},
+                          {"dynamic_joules", c.dynamic_joules},
+                          {"average_watts", c.average_watts}});
+  }
+  ordered_json terms = ordered_json::array();
+  for (const energy::EnergyTerm& t : e.terms) {
+    terms.push_back({{"component", t.component},
+                     {"counter", t.counter},
+                     {"count", t.count},
+                     {"kind", t.is_static ? "static" : "dynamic"},
+                     {"figure", {{"key", t.figure.path}, {"value", t.figure.value}, {"unit", t.figure.unit},
+                                 {"source", t.figure.source}}},
+                     {"joules", t.joules}});
+  }
+  ordered_json tables = {{"host", e.host_table}};
+  if (!e.device_table.empty()) tables["device"] = e.device_table;
+  return {{"joules", e.joules},
+          {"joules_per_step", e.joules_per_step},
+          {"joules_per_intersection", e.joules_per_intersection},
+          {"average_watts", e.average_watts},
+          {"energy_delay_product_joule_seconds", e.energy_delay_product},
+          {"tables", tables},
+          {"components", components},
+          {"terms", terms}};
+}
+
+// "energy": the estimate, or null beside "energy_missing" saying which profile has no table.
+void add_energy(ordered_json& j, const RunReport& r) {
+  if (r.energy) {
+    j["energy"] = energy_json(*r.energy);
+  } else {
+    j["energy"] = nullptr;
+    j["energy_missing"] = r.energy_missing;
+  }
+}
+
 ordered_json board_json(const RunReport& r) {
   const BoardDetail& b = r.board;
   ordered_json j;
@@ -195,6 +260,7 @@ ordered_json board_json(const RunReport& r) {
     driver[to_string(DriverWork(k))] = {{"count", b.driver[k].count}, {"seconds", b.driver[k].seconds}};
   }
   j["host"] = {{"profile", r.host_profile}, {"driver_model", b.driver_model}, {"work", work_json(r.work)}, {"driver", driver}};
+  add_energy(j, r);
   if (r.has_wall) {
     j["wall_seconds"] = r.wall_seconds;
     j["wall_seconds_per_step"] = r.wall_seconds_per_step;
@@ -209,6 +275,7 @@ ordered_json software_json(const RunReport& r) {
   j["time"] = {{"host_compute_seconds", r.time.host_compute}};
   j["intersections"] = {{"tests", r.intersections.tests}, {"per_second", r.intersections.per_second}};
   j["host"] = {{"profile", r.host_profile}, {"work", work_json(r.work)}};
+  add_energy(j, r);
   return j;
 }
 
@@ -220,6 +287,52 @@ nlohmann::ordered_json work_json(const std::array<WorkTally, kHostWorkKinds>& wo
     j[to_string(HostWork(k))] = {{"count", work[k].count}, {"seconds", work[k].seconds}};
   }
   return j;
+}
+
+energy::Activity activity_of(const RunReport& r, std::uint64_t steps) {
+  energy::Activity a;
+  a.seconds = r.simulated_seconds;
+  a.steps = steps;
+  a.intersections = r.intersections.tests;
+  // The solver's processor computes (host work and, on one card, the driver's); a second processor
+  // joins for form factors with DualCpu; several cards' drivers run on threads of their own.
+  a.host_busy_cpu_seconds = r.time.host_compute + r.time.driver_cpu + r.time.second_cpu_compute;
+  a.host_cpus = r.time.second_cpu ? 2 : 1;
+  if (!r.board_run) return a;
+  const BoardDetail& b = r.board;
+  // Programmed I/O keeps the processor moving the words; a DMA transfer leaves it waiting.
+  const std::uint64_t transfers = b.pci.dma_transfers + b.pci.pio_transfers;
+  if (transfers > 0) a.host_busy_cpu_seconds += r.time.pci_transfer * b.pci.pio_transfers / static_cast<double>(transfers);
+  for (const CardReport& c : b.cards.per_card) a.host_busy_cpu_seconds += c.driver_cpu_seconds;
+  if (a.host_busy_cpu_seconds > a.host_cpus * a.seconds) {
+    a.host_cpus = static_cast<unsigned>(std::ceil(a.host_busy_cpu_seconds / a.seconds));
+  }
+  a.cards = b.cards.count;
+  a.lanes = b.device.lanes;
+  a.device_clock_hz = b.device.clock_hz;
+  a.slices_per_lane = static_cast<double>(b.device.design.slices) / b.device.lanes;
+  a.multipliers_per_lane = static_cast<double>(b.device.design.block_multipliers) / b.device.lanes;
+  for (const LaneReport& l : b.lanes) a.lane_active_cycles += l.rays;
+  a.banks = b.device.banks;
+  const double word_bytes = b.device.bank_word_bits / 8.0;
+  for (const BankUseReport& bank : b.banks) {
+    a.bank_word_reads += static_cast<std::uint64_t>(std::ceil(bank.bytes_read / word_bytes));
+    a.bank_word_writes += static_cast<std::uint64_t>(std::ceil(bank.bytes_written / word_bytes));
+  }
+  const std::uint64_t pci_word_bytes = b.device.pci_width_bits / 8;
+  a.pci_data_phases = (b.pci.bytes_to_board + b.pci.bytes_to_host + pci_word_bytes - 1) / pci_word_bytes;
+  a.pci_transactions = b.pci.bus_transactions;
+  return a;
+}
+
+void attach_energy(RunReport& report, const energy::EnergyTables& tables, std::uint64_t steps) {
+  if (!tables.missing.empty()) {
+    report.energy.reset();
+    report.energy_missing = tables.missing;
+    return;
+  }
+  report.energy = energy::estimate(tables, activity_of(report, steps));
+  report.energy_missing.clear();
 }
 
 nlohmann::ordered_json to_json(const RunReport& report) { return report.board_run ? board_json(report) : software_json(report); }

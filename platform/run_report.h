@@ -6,11 +6,13 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "energy/energy_model.h"
 #include "host/host_cpu_model.h"
 
 namespace rc {
@@ -154,7 +156,16 @@ struct RunReport {
   BoardDetail board;  // board_run only
   bool has_wall = false;
   double wall_seconds = 0, wall_seconds_per_step = 0;
+  // Energy beside time (docs/energy.md): the estimate, or why there is none (a profile without an
+  // energy table). Exactly one of the two is set.
+  std::optional<energy::EnergyReport> energy;
+  std::string energy_missing;
 };
+
+// What the run counted, as the energy model takes it; `steps` from the solver's result.
+energy::Activity activity_of(const RunReport& report, std::uint64_t steps);
+// Sets report.energy (or report.energy_missing, when a table is missing) from `tables`.
+void attach_energy(RunReport& report, const energy::EnergyTables& tables, std::uint64_t steps);
 
 // The one writer: the report document of docs/outputs.md.
 nlohmann::ordered_json to_json(const RunReport& report);

@@ -154,7 +154,7 @@ TEST(ProfileValidation, UnknownKeysAreRefused) {
                              "clock_mhz, count, read_latency_cycles, word_bits, write_latency_cycles)");
   j = xc2v6000();
   j["bogus"] = 1;
-  EXPECT_EQ(device_error(j), "configs/devices/x.json: bogus: unknown key (known at the top: banks, clock, description, "
+  EXPECT_EQ(device_error(j), "configs/devices/x.json: bogus: unknown key (known at the top: banks, clock, description, energy, "
                              "fpga, name, pci, pipeline, schema, wrapper)");
   j = xc2v6000();
   j["pci"]["clock_mhz"]["unit"] = "MHz";

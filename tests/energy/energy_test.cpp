@@ -193,3 +193,27 @@ TEST(Energy, AnActivityTheLanesCouldNotDoIsRefused) {
 
 }  // namespace
 }  // namespace rc::energy
+
+namespace rc::energy {
+namespace {
+
+// Every shipped profile has a whole energy table, every figure sourced (configs/devices, configs/hosts).
+TEST(Energy, ShippedProfilesHaveSourcedTables) {
+  for (const char* name : {"xc2v6000", "virtex4-sx55", "spartan3-5000"}) {
+    const DeviceEnergyTable t = device_energy_table(board::find_device_profile(name));
+    for (const Figure* f : {&t.fpga.static_w, &t.fpga.slice_pj_per_cycle, &t.fpga.multiplier_pj_per_cycle,
+                            &t.fpga.clock_pj_per_slice_cycle, &t.sram.read_nj, &t.sram.write_nj, &t.sram.standby_mw,
+                            &t.pci.data_phase_nj, &t.pci.transaction_nj, &t.pci.bridge_w}) {
+      EXPECT_GT(f->value, 0) << name << " " << f->path;
+      EXPECT_GT(f->source.size(), 20u) << name << " " << f->path;
+    }
+  }
+  for (const char* name : {"athlon-mp-2600", "athlon-mp-2600-calibrated"}) {
+    const std::string path = board::resolve_profile_path(name, "hosts");
+    const HostEnergyTable t = host_energy_table(board::read_json_file(path), path);
+    EXPECT_GT(t.busy_w.value, t.wait_w.value) << name;
+  }
+}
+
+}  // namespace
+}  // namespace rc::energy

@@ -9,11 +9,27 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+// Declared by the sanitizer runtimes (sanitizer/common_interface_defs.h); weak, so a build without
+// a sanitizer links and sees a null address.
+extern "C" void __sanitizer_set_death_callback(void (*callback)(void)) __attribute__((weak));
+
 namespace rc::io {
 
 namespace {
 
 constexpr int kWorkThrew = 3;
+
+// The child's faults are the parent's to report, so the child dies of them plainly: the handlers it
+// inherited for fatal signals (a fuzzer's, which would record the parent's input as a crash; a
+// sanitizer's, which would print a report for a reader we already expect to fail; a test
+// framework's) are reset, and a sanitizer's death callback (libFuzzer writes a crash file from it) is
+// removed.
+void die_plainly() {
+  for (const int s : {SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGTRAP, SIGALRM, SIGXCPU, SIGXFSZ}) {
+    std::signal(s, SIG_DFL);
+  }
+  if (__sanitizer_set_death_callback != nullptr) __sanitizer_set_death_callback(nullptr);
+}
 
 // Everything, retrying short writes; false if the reader went away.
 bool write_all(int fd, const std::string& bytes) {
@@ -28,6 +44,7 @@ bool write_all(int fd, const std::string& bytes) {
 }
 
 [[noreturn]] void child(int fd, const std::function<std::string()>& work) {
+  die_plainly();
   int status = 0;
   try {
     if (!write_all(fd, work())) status = 2;

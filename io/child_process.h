@@ -21,6 +21,9 @@ struct ChildOutcome {
 
 // Forks; the child runs `work` (an exception in it is reported as exit status 3) and _exits without
 // running atexit handlers (so no leak check or SystemC teardown of the parent's state runs twice).
+// The child dies of its own faults plainly: inherited handlers of fatal signals and a sanitizer's
+// death callback are reset in it, so a fuzzer or test framework in the parent never mistakes the
+// child's crash for its own.
 // Throws std::runtime_error if the process or pipe cannot be made.
 ChildOutcome run_in_child(const std::function<std::string()>& work, std::chrono::seconds time_limit);
 

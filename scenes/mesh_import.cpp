@@ -321,7 +321,7 @@ RawMesh decode(const std::string& bytes) {
 // assertion, a wild read, a hang, an allocation of hundreds of gigabytes) ends the child, and the
 // parent says so, naming the file. Fuzzing found each of those in Assimp 5.2 (fuzz/regressions/mesh).
 RawMesh read_isolated(const std::string& path, const MeshImportOptions& o, std::uint64_t file_bytes) {
-  const auto time_limit = std::chrono::seconds(60 + (file_bytes >> 20));  // a minute, plus a second per MiB
+  const auto time_limit = o.reader_time_limit.value_or(std::chrono::seconds(60 + (file_bytes >> 20)));
   const io::ChildOutcome child = io::run_in_child(
       [&] {
         Assimp::Importer importer;

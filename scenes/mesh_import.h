@@ -6,7 +6,9 @@
 // "Meshes". Errors name the file and the reason.
 #pragma once
 
+#include <chrono>
 #include <cstddef>
+#include <optional>
 #include <string>
 
 #include "scenes/scene_file.h"
@@ -20,6 +22,10 @@ struct MeshImportOptions {
   // The reflectance of a material that gives no diffuse colour (documented default).
   double default_reflectance = 0.5;
   bool require_emitter = true;  // a scene that emits no light is an error
+  // How long the reader (Assimp, in a child process) may take before the file counts as one that
+  // hangs it. Unset: a minute plus a second per MiB of file. The fuzz harness sets a few seconds,
+  // below libFuzzer's own hang limit.
+  std::optional<std::chrono::seconds> reader_time_limit;
 };
 
 // Throws SceneFileError naming the file: it is not a regular file of at most io::kSceneLimitBytes,

@@ -146,5 +146,20 @@ TEST(ChildProcess, ReturnsTheBytesOrHowTheChildEnded) {
   EXPECT_EQ(hung.how_it_ended(), "stopped after its time limit");
 }
 
+// A handler the parent set for a fatal signal (libFuzzer's writes the parent's input as a crash
+// file) does not run in the child: the child dies of the signal itself. This test is its own
+// process, so the handler it sets touches no other test.
+TEST(ChildProcess, ChildDiesPlainlyWhateverHandlerTheParentSet) {
+  std::signal(SIGABRT, [](int) { ::_exit(42); });
+  std::signal(SIGSEGV, [](int) { ::_exit(43); });
+  const ChildOutcome aborted = run_in_child([]() -> std::string { std::abort(); }, std::chrono::seconds(30));
+  EXPECT_EQ(aborted.signal, SIGABRT);
+  EXPECT_EQ(aborted.exit_status, 0);
+  const ChildOutcome segv = run_in_child([]() -> std::string { ::raise(SIGSEGV); return ""; }, std::chrono::seconds(30));
+  EXPECT_EQ(segv.signal, SIGSEGV);
+  std::signal(SIGABRT, SIG_DFL);
+  std::signal(SIGSEGV, SIG_DFL);
+}
+
 }  // namespace
 }  // namespace rc::io

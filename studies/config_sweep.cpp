@@ -275,6 +275,39 @@ std::uint64_t ConfigChecker::compact_bank_capacity(const board::DeviceProfile& d
 
 // ---- results ----------------------------------------------------------------------------------------
 
+namespace {
+
+void set_no_energy(SweepRow& r) {
+  for (double* x : {&r.energy_joules, &r.energy_per_step_joules, &r.energy_per_intersection_nanojoules, &r.average_watts,
+                    &r.energy_delay_product_joule_seconds, &r.fpga_joules, &r.sram_joules, &r.pci_joules, &r.host_joules})
+    *x = kNaN;
+  r.pareto_time_energy = false;
+}
+
+double component_joules(const energy::EnergyReport& e, const char* name) {
+  for (const energy::ComponentEnergy& c : e.components)
+    if (c.name == name) return c.joules();
+  return kNaN;
+}
+
+void energy_columns(const RunReport& report, SweepRow& r) {
+  set_no_energy(r);
+  r.energy_missing = report.energy_missing;
+  if (!report.energy) return;
+  const energy::EnergyReport& e = *report.energy;
+  r.energy_joules = e.joules;
+  r.energy_per_step_joules = e.joules_per_step > 0 ? e.joules_per_step : kNaN;
+  r.energy_per_intersection_nanojoules = e.joules_per_intersection > 0 ? e.joules_per_intersection * 1e9 : kNaN;
+  r.average_watts = e.average_watts;
+  r.energy_delay_product_joule_seconds = e.energy_delay_product;
+  r.fpga_joules = component_joules(e, "fpga");
+  r.sram_joules = component_joules(e, "sram");
+  r.pci_joules = component_joules(e, "pci");
+  r.host_joules = component_joules(e, "host");
+}
+
+}  // namespace
+
 SweepRow invalid_row(const SweepConfig& config, const ConfigCheck& check, int steps) {
   SweepRow r;
   r.config = config;
@@ -287,6 +320,7 @@ SweepRow invalid_row(const SweepConfig& config, const ConfigCheck& check, int st
                     &r.max_bank_utilisation, &r.mean_lane_utilisation, &r.intersections_per_second_while_busy,
                     &r.fpga_limit_share, &r.speedup_vs_one_lane, &r.speedup_vs_software})
     *x = kNaN;
+  set_no_energy(r);
   return r;
 }
 
@@ -340,6 +374,7 @@ SweepRow row_from_report(const SweepConfig& config, const RunReport& report, int
   dominant_limit(report.board.stream_limits, r);
   r.bottleneck = bottleneck(r);
   r.speedup_vs_one_lane = r.speedup_vs_software = kNaN;
+  energy_columns(report, r);
   return r;
 }
 
@@ -380,6 +415,32 @@ void fill_speedups(std::vector<SweepRow>& rows, const std::map<std::string, doub
     r.speedup_vs_one_lane = base != one_lane.end() ? ratio(base->second, r.simulated_seconds) : kNaN;
     const auto sw = software_seconds.find(software_key(r.config));
     r.speedup_vs_software = sw != software_seconds.end() ? ratio(sw->second, r.simulated_seconds) : kNaN;
+  }
+}
+
+void mark_pareto_time_energy(std::vector<SweepRow>& rows) {
+  auto world = [](const SweepConfig& c) {
+    std::string key = std::to_string(c.bits);
+    for (const ProfileSetting& s : c.settings) key += "|" + s.text();
+    return key;
+  };
+  auto has_both = [](const SweepRow& r) {
+    return r.validity == Validity::ok && std::isfinite(r.simulated_seconds) && std::isfinite(r.energy_joules);
+  };
+  for (SweepRow& r : rows) {
+    r.pareto_time_energy = false;
+    if (!has_both(r)) continue;
+    bool dominated = false;
+    for (const SweepRow& o : rows) {
+      if (&o == &r || !has_both(o) || world(o.config) != world(r.config)) continue;
+      const bool no_worse = o.simulated_seconds <= r.simulated_seconds && o.energy_joules <= r.energy_joules;
+      const bool better = o.simulated_seconds < r.simulated_seconds || o.energy_joules < r.energy_joules;
+      if (no_worse && better) {
+        dominated = true;
+        break;
+      }
+    }
+    r.pareto_time_energy = !dominated;
   }
 }
 
@@ -424,7 +485,18 @@ const char* const kColumns[] = {"device",
                                 "fpga_limit_share",
                                 "bottleneck",
                                 "speedup_vs_one_lane",
-                                "speedup_vs_software"};
+                                "speedup_vs_software",
+                                "energy_joules",
+                                "energy_per_step_joules",
+                                "energy_per_intersection_nanojoules",
+                                "average_watts",
+                                "energy_delay_product_joule_seconds",
+                                "fpga_joules",
+                                "sram_joules",
+                                "pci_joules",
+                                "host_joules",
+                                "energy_missing",
+                                "pareto_time_energy"};
 
 std::string csv_text(const std::string& s) {
   if (s.find_first_of(",\"\n") == std::string::npos) return s;
@@ -491,7 +563,18 @@ std::vector<nlohmann::ordered_json> row_values(const SweepRow& r, const std::vec
           json_number(r.fpga_limit_share),
           r.bottleneck,
           json_number(r.speedup_vs_one_lane),
-          json_number(r.speedup_vs_software)};
+          json_number(r.speedup_vs_software),
+          json_number(r.energy_joules),
+          json_number(r.energy_per_step_joules),
+          json_number(r.energy_per_intersection_nanojoules),
+          json_number(r.average_watts),
+          json_number(r.energy_delay_product_joule_seconds),
+          json_number(r.fpga_joules),
+          json_number(r.sram_joules),
+          json_number(r.pci_joules),
+          json_number(r.host_joules),
+          r.energy_missing,
+          ok && std::isfinite(r.energy_joules) ? nlohmann::ordered_json(r.pareto_time_energy ? 1 : 0) : none};
   values.insert(values.end(), rest.begin(), rest.end());
   return values;
 }
@@ -570,6 +653,17 @@ SweepRow sweep_row_from_json(const nlohmann::ordered_json& j, const SweepConfig&
   r.bottleneck = j.at("bottleneck").get<std::string>();
   r.speedup_vs_one_lane = number_from(j, "speedup_vs_one_lane");
   r.speedup_vs_software = number_from(j, "speedup_vs_software");
+  r.energy_joules = number_from(j, "energy_joules");
+  r.energy_per_step_joules = number_from(j, "energy_per_step_joules");
+  r.energy_per_intersection_nanojoules = number_from(j, "energy_per_intersection_nanojoules");
+  r.average_watts = number_from(j, "average_watts");
+  r.energy_delay_product_joule_seconds = number_from(j, "energy_delay_product_joule_seconds");
+  r.fpga_joules = number_from(j, "fpga_joules");
+  r.sram_joules = number_from(j, "sram_joules");
+  r.pci_joules = number_from(j, "pci_joules");
+  r.host_joules = number_from(j, "host_joules");
+  r.energy_missing = j.at("energy_missing").get<std::string>();
+  r.pareto_time_energy = !j.at("pareto_time_energy").is_null() && j.at("pareto_time_energy").get<int>() == 1;
   return r;
 }
 

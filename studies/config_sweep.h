@@ -181,6 +181,15 @@ struct SweepRow {
   std::string bottleneck;        // bottleneck() below
   double speedup_vs_one_lane = 0;  // NaN when 1 lane was not swept at the same device, width, driver, banks
   double speedup_vs_software = 0;  // NaN without a software time for the width
+  // Energy (docs/energy.md), NaN when the row is invalid or a profile has no energy table (then
+  // energy_missing says which).
+  double energy_joules = 0, energy_per_step_joules = 0, energy_per_intersection_nanojoules = 0;
+  double average_watts = 0, energy_delay_product_joule_seconds = 0;
+  double fpga_joules = 0, sram_joules = 0, pci_joules = 0, host_joules = 0;
+  std::string energy_missing;
+  // On the Pareto front of time against energy (pareto_time_energy below); false off it, and for rows
+  // without both.
+  bool pareto_time_energy = false;
 };
 
 SweepRow invalid_row(const SweepConfig& config, const ConfigCheck& check, int steps);
@@ -200,6 +209,13 @@ std::string bottleneck(const SweepRow& row);
 // speedup_vs_one_lane from the 1-lane rows of the same configuration but lanes; speedup_vs_software
 // from software seconds by software_key (keys missing from the map: NaN).
 void fill_speedups(std::vector<SweepRow>& rows, const std::map<std::string, double>& software_seconds);
+
+// Marks pareto_time_energy: a valid row with energy is on the front when no other such row with the
+// same width and the same profile-axis values is at least as fast and as frugal and better in one.
+// The front chooses among designs (device, lanes, banks, driver, host, cards); a width makes another
+// picture and a profile setting assumes another world (a clock, an SRAM's standby power), so each of
+// those has a front of its own.
+void mark_pareto_time_energy(std::vector<SweepRow>& rows);
 
 // The columns beyond the classic ones that a sweep over `axes` adds: "host" when more than one
 // host is swept, "cards", "card_split" and "card_bus" when more than one card is, then each profile

@@ -448,6 +448,7 @@ SceneSweep assemble_scene(const Study& study, const SceneSummary& scene,
     if (row->second.validity == Validity::ok) ++out.valid;
   }
   fill_speedups(out.rows, out.software_seconds);
+  mark_pareto_time_energy(out.rows);
   return out;
 }
 

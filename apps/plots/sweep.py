@@ -7,10 +7,20 @@ lanes_b<bits>_<driver>.png        simulated time (solid) and FPGA busy time (das
 heatmap_<device>_b<bits>_<driver>.png
                                   simulated time over lanes x banks, bottleneck letter in each cell,
                                   configurations that cannot exist in grey
+energy_b<bits>_<driver>.png       energy per lighting step (top) and energy-delay product (bottom)
+                                  against lanes, one panel per device, one colour per bank count
+pareto_b<bits>.png                simulated time against energy of every simulated configuration,
+                                  one colour per device, marker per driver, the Pareto front (no other configuration
+                                  is both faster and cheaper: the CSV's pareto_time_energy) joined
+                                  and ringed
 axis_<path>.png                   for each swept profile field (and host), the fastest configuration
                                   (over lanes and banks) against the field's value, one line per
                                   device, width, driver and the other fields' values; marker: its
                                   bottleneck
+
+Rows without energy (a profile without an energy table: the CSV's energy_missing says which) are
+left out of the energy plots; when no row has energy the energy plots are not drawn and a line on
+stderr says why.
 
 A study's extra axes (docs/studies.md) are the columns between "concurrent" and "status"; each
 combination of their values gets its own lanes and heat-map files, named with the values.
@@ -19,6 +29,7 @@ import csv
 import math
 import os
 import re
+import sys
 
 import entry  # apps/plots/entry.py, beside this script
 
@@ -38,6 +49,10 @@ BOTTLENECKS = {
     "host_driver": ("D", "v", "host driver CPU"),
     "pci": ("P", "X", "PCI transfers"),
 }
+
+
+# Extra columns that are design choices (the Pareto front chooses among them), not settings.
+DESIGN_COLUMNS = ("host", "cards", "card_split", "card_bus")
 
 
 def driver(row):
@@ -108,6 +123,84 @@ def lanes_plot(rows, bits, drv, out):
                  fontsize=10)
     fig.tight_layout(rect=(0, 0, 1 - legend_inches / width, 0.95))
     entry.save(fig, os.path.join(out, f"lanes_b{bits}_{drv}.png"), dpi=110)
+    plt.close(fig)
+
+
+def has_energy(row):
+    return row["status"] == "ok" and row.get("energy_joules", "") != ""
+
+
+def bank_colours(rows):
+    banks = sorted({int(r["banks"]) for r in rows})
+    return banks, plt.cm.viridis([i / max(len(banks) - 1, 1) for i in range(len(banks))])
+
+
+def energy_plot(rows, bits, drv, out):
+    """Energy per step and energy-delay product against lanes: one column of panels per device."""
+    rows = [r for r in rows if has_energy(r)]
+    devices = ordered(r["device"] for r in rows)
+    banks, colours = bank_colours(rows)
+    legend_inches = 1.3
+    width = 4.2 * len(devices) + legend_inches
+    fig, axes = plt.subplots(2, len(devices), figsize=(width, 7.0), sharex="col", squeeze=False)
+    quantities = [("energy_per_step_joules", "joules per lighting step"),
+                  ("energy_delay_product_joule_seconds", "energy-delay product (J s)")]
+    for column, device in enumerate(devices):
+        for row_index, (key, label) in enumerate(quantities):
+            ax = axes[row_index][column]
+            for colour, b in zip(colours, banks):
+                pts = sorted((int(r["lanes"]), float(r[key])) for r in rows
+                             if r["device"] == device and int(r["banks"]) == b and r[key] != "")
+                if pts:
+                    ax.plot([p[0] for p in pts], [p[1] for p in pts], "-o", color=colour, lw=1.2, ms=3.5)
+            ax.set_ylim(bottom=0)
+            ax.grid(True, lw=0.3)
+            if column == 0:
+                ax.set_ylabel(label)
+            if row_index == 0:
+                ax.set_title(device, fontsize=10)
+            else:
+                ax.set_xlabel("lanes")
+    handles = [Line2D([], [], color=c, lw=1.5, marker="o", ms=3.5, label=f"{b} banks") for c, b in zip(colours, banks)]
+    fig.legend(handles=handles, loc="center right", fontsize=8)
+    fig.suptitle(f"Energy per step and energy-delay product against lanes ({bits}-bit, {drv} driver)", fontsize=10)
+    fig.tight_layout(rect=(0, 0, 1 - legend_inches / width, 0.96))
+    entry.save(fig, os.path.join(out, f"energy_b{bits}_{drv}.png"), dpi=110)
+    plt.close(fig)
+
+
+def pareto_plot(rows, bits, name, out):
+    """Simulated time against energy; the front of configurations nothing beats in both."""
+    rows = [r for r in rows if has_energy(r)]
+    devices = ordered(r["device"] for r in rows)
+    fig, ax = plt.subplots(figsize=(8.0, 5.2))
+    for i, device in enumerate(devices):
+        for drv, marker in (("concurrent", "o"), ("serial", "s")):
+            mine = [r for r in rows if r["device"] == device and driver(r) == drv]
+            if mine:
+                ax.scatter([float(r["simulated_seconds"]) for r in mine], [float(r["energy_joules"]) for r in mine],
+                           s=14, marker=marker, color=plt.cm.tab10(i % 10), label=f"{device}, {drv}", zorder=2)
+    front = sorted((float(r["simulated_seconds"]), float(r["energy_joules"]), r) for r in rows
+                   if r.get("pareto_time_energy") == "1")
+    if front:
+        ax.plot([f[0] for f in front], [f[1] for f in front], "-", color="k", lw=0.9, zorder=1,
+                label="Pareto front (time, energy)")
+        ax.scatter([f[0] for f in front], [f[1] for f in front], s=70, facecolors="none", edgecolors="k",
+                   lw=1.0, zorder=3)
+    # The front's points are listed under the plot: they crowd together where labels would overlap.
+    names = [f"{r['device']} {r['lanes']}L {r['banks']}B {driver(r)[0]}: {t:.4g} s, {e:.4g} J" for t, e, r in front]
+    shown = names[:8] + ([f"... and {len(names) - 8} more (pareto_time_energy in the CSV)"] if len(names) > 8 else [])
+    listing = "Pareto front: " + ("; ".join(shown) if shown else "none")
+    ax.set_xlabel("simulated seconds")
+    ax.set_ylabel("joules per run")
+    ax.grid(True, lw=0.3)
+    ax.legend(fontsize=8, loc="lower right")
+    settings = name.replace("_", " ").strip()
+    ax.set_title(f"Time against energy ({bits}-bit{', ' + settings if settings else ''}); ringed: the Pareto front"
+                 "\nfront: device, lanes (L), banks (B), driver (c concurrent, s serial)", fontsize=9)
+    fig.text(0.01, 0.005, listing, fontsize=6.5, va="bottom", wrap=True)
+    fig.tight_layout(rect=(0, 0.08, 1, 1))
+    entry.save(fig, os.path.join(out, f"pareto_b{bits}{name}.png"), dpi=110)
     plt.close(fig)
 
 
@@ -230,6 +323,11 @@ def main(csv_path, out):
         reader = csv.DictReader(f)
         rows = list(reader)
         extras = extra_columns(reader.fieldnames)
+    simulated = [r for r in rows if r["status"] == "ok"]
+    if simulated and not any(has_energy(r) for r in simulated):
+        why = next((r.get("energy_missing", "") for r in simulated if r.get("energy_missing", "")),
+                   "the CSV has no energy columns")
+        print(f"sweep.py: no energy plots: {why}", file=sys.stderr)
     for bits in ordered(r["bits"] for r in rows):
         for drv in ordered(driver(r) for r in rows):
             for values in ordered(tuple(r[e] for e in extras) for r in rows):
@@ -238,8 +336,18 @@ def main(csv_path, out):
                 name = drv + "".join(f"_{slug(e)}={slug(v)}" for e, v in zip(extras, values))
                 if any(r["status"] == "ok" for r in block):
                     lanes_plot(block, bits, name, out)
+                if any(has_energy(r) for r in block):
+                    energy_plot(block, bits, name, out)
                 for device in ordered(r["device"] for r in block):
                     heatmap([r for r in block if r["device"] == device], device, bits, name, out)
+        # The front chooses among designs (driver, host and cards included); each width and each
+        # combination of profile settings has its own (studies/config_sweep.h).
+        settings = [e for e in extras if e not in DESIGN_COLUMNS]
+        for values in ordered(tuple(r[e] for e in settings) for r in rows):
+            block = [r for r in rows if r["bits"] == bits and tuple(r[e] for e in settings) == values]
+            if any(has_energy(r) for r in block):
+                name = "".join(f"_{slug(e)}={slug(v)}" for e, v in zip(settings, values))
+                pareto_plot(block, bits, name, out)
     for axis in extras:
         axis_plot(rows, axis, extras, out)
 

@@ -94,6 +94,9 @@ for k in ("cards", "card_split", "card_bus"):
         del first[k]
     else:
         sys.exit("the one-card row has a %s: %s" % (k, first[k]))
+# Whether a row is on the time-energy Pareto front depends on the rows beside it (two cards may beat it).
+for row in (first, one[0]):
+    del row["pareto_time_energy"]
 if first != one[0]:
     sys.exit("the one-card row differs from the plain sweep's:\n %s\n %s" % (first, one[0]))
 if not all(r["status"] == "ok" for r in cards):

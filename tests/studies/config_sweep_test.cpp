@@ -281,7 +281,9 @@ TEST(ConfigSweep, SpeedupsAndCsvAreStable) {
             "simulated_seconds,fpga_busy_seconds,host_compute_seconds,driver_cpu_seconds,pci_transfer_seconds,"
             "waiting_seconds,pci_utilisation,max_bank_utilisation,busiest_bank,busiest_bank_role,"
             "mean_lane_utilisation,intersections_per_second_while_busy,fpga_limit,fpga_limit_share,bottleneck,"
-            "speedup_vs_one_lane,speedup_vs_software");
+            "speedup_vs_one_lane,speedup_vs_software,energy_joules,energy_per_step_joules,"
+            "energy_per_intersection_nanojoules,average_watts,energy_delay_product_joule_seconds,fpga_joules,"
+            "sram_joules,pci_joules,host_joules,energy_missing,pareto_time_energy");
   EXPECT_EQ(second.rfind("xc2v6000,2,6,15,1,ok,,,10,52.5,2,6.5,4,2,1,0.5,3,", 0), 0u) << second;
   // The reason holds commas, so it is quoted; the numbers of an invalid row are empty.
   EXPECT_EQ(invalid.rfind("xc2v6000,12,6,15,1,invalid,does_not_fit,\"12 lane(s)", 0), 0u) << invalid;
@@ -290,6 +292,83 @@ TEST(ConfigSweep, SpeedupsAndCsvAreStable) {
   EXPECT_EQ(j["status"], "invalid");
   EXPECT_TRUE(j["simulated_seconds"].is_null());
   EXPECT_EQ(j["concurrent"], true);
+}
+
+// A report with an energy estimate of `joules` (fpga 1, sram 2, pci 3, the rest host) over its time.
+RunReport report_with_energy(double waiting, double joules) {
+  RunReport r = synthetic_report(waiting, 2.0);
+  energy::EnergyReport e;
+  const double host = joules - 6;
+  for (const auto& [name, j] : {std::pair<const char*, double>{"fpga", 1}, {"sram", 2}, {"pci", 3}, {"host", host}}) {
+    energy::ComponentEnergy c;
+    c.name = name;
+    c.dynamic_joules = j;
+    e.components.push_back(c);
+  }
+  e.joules = joules;
+  e.seconds = r.simulated_seconds;
+  e.average_watts = joules / e.seconds;
+  e.joules_per_step = joules / 10;
+  e.joules_per_intersection = joules / 1e9;
+  e.energy_delay_product = joules * e.seconds;
+  r.energy = e;
+  return r;
+}
+
+TEST(ConfigSweep, EnergyColumnsComeFromTheReportOrSayWhyNot) {
+  const SweepRow r = row_from_report(config("xc2v6000", 2, 6), report_with_energy(3.0, 100.0), 10);
+  EXPECT_DOUBLE_EQ(r.energy_joules, 100.0);
+  EXPECT_DOUBLE_EQ(r.energy_per_step_joules, 10.0);
+  EXPECT_DOUBLE_EQ(r.energy_per_intersection_nanojoules, 100.0);
+  EXPECT_DOUBLE_EQ(r.average_watts, 100.0 / 6.5);
+  EXPECT_DOUBLE_EQ(r.energy_delay_product_joule_seconds, 650.0);
+  EXPECT_DOUBLE_EQ(r.fpga_joules, 1.0);
+  EXPECT_DOUBLE_EQ(r.sram_joules, 2.0);
+  EXPECT_DOUBLE_EQ(r.pci_joules, 3.0);
+  EXPECT_DOUBLE_EQ(r.host_joules, 94.0);
+  EXPECT_EQ(r.energy_missing, "");
+
+  RunReport without = synthetic_report(3.0, 2.0);
+  without.energy_missing = "device profile x.json has no energy table";
+  const SweepRow m = row_from_report(config("xc2v6000", 2, 6), without, 10);
+  EXPECT_TRUE(std::isnan(m.energy_joules));
+  EXPECT_TRUE(std::isnan(m.host_joules));
+  EXPECT_EQ(m.energy_missing, "device profile x.json has no energy table");
+  const nlohmann::ordered_json j = sweep_row_json(m);
+  EXPECT_TRUE(j["energy_joules"].is_null());
+  EXPECT_TRUE(j["pareto_time_energy"].is_null());  // not "off the front": there is no energy to compare
+
+  // The shard round trip keeps every energy column.
+  std::vector<SweepRow> rows = {r};
+  mark_pareto_time_energy(rows);
+  const SweepRow back = sweep_row_from_json(sweep_row_json(rows[0]), rows[0].config);
+  EXPECT_DOUBLE_EQ(back.energy_joules, 100.0);
+  EXPECT_DOUBLE_EQ(back.energy_per_intersection_nanojoules, 100.0);
+  EXPECT_DOUBLE_EQ(back.host_joules, 94.0);
+  EXPECT_TRUE(back.pareto_time_energy);
+}
+
+// Time against energy: a row is on the front unless another of the same width and profile settings
+// is no slower, no costlier and better in one. Rows without energy are never on it.
+TEST(ConfigSweep, ParetoFrontOfTimeAgainstEnergy) {
+  std::vector<SweepRow> rows;
+  rows.push_back(row_from_report(config("xc2v6000", 1, 6), report_with_energy(6.0, 100.0), 10));  // slow, frugal
+  rows.push_back(row_from_report(config("xc2v6000", 2, 6), report_with_energy(3.0, 120.0), 10));  // fast, costly
+  rows.push_back(row_from_report(config("xc2v6000", 2, 7), report_with_energy(3.0, 130.0), 10));  // as fast, costlier
+  rows.push_back(row_from_report(config("xc2v6000", 4, 6), report_with_energy(3.0, 120.0), 10));  // a tie: both stay
+  RunReport none = synthetic_report(1.0, 2.0);  // the fastest, but without energy
+  none.energy_missing = "no table";
+  rows.push_back(row_from_report(config("xc2v6000", 4, 7), none, 10));
+  SweepConfig other_width = config("xc2v6000", 1, 7);
+  other_width.bits = 23;  // its own front, however costly
+  rows.push_back(row_from_report(other_width, report_with_energy(9.0, 500.0), 10));
+  mark_pareto_time_energy(rows);
+  EXPECT_TRUE(rows[0].pareto_time_energy);
+  EXPECT_TRUE(rows[1].pareto_time_energy);
+  EXPECT_FALSE(rows[2].pareto_time_energy);
+  EXPECT_TRUE(rows[3].pareto_time_energy);
+  EXPECT_FALSE(rows[4].pareto_time_energy);
+  EXPECT_TRUE(rows[5].pareto_time_energy);
 }
 
 }  // namespace

@@ -59,6 +59,42 @@ ordered_json scene_record(const PaperTableRow& row) {
   return rec;
 }
 
+ordered_json nanojoules(double x) { return std::isnan(x) ? ordered_json() : ordered_json(x); }
+
+ordered_json energy_json(const energy::FullRateEnergy& e) {
+  ordered_json j = {{"estimate", e.estimate},
+                    {"device", e.device},
+                    {"lanes", e.lanes},
+                    {"banks_powered", e.banks},
+                    {"clock_mhz", e.clock_mhz},
+                    {"intersections_per_s", e.intersections_per_s}};
+  j["fpga_nj_per_intersection"] = nanojoules(e.fpga_nj);
+  j["sram_nj_per_intersection"] = nanojoules(e.sram_nj);
+  j["pci_nj_per_intersection"] = nanojoules(e.pci_nj);
+  j["card_nj_per_intersection"] = nanojoules(e.card_nj);
+  j["host_waiting_nj_per_intersection"] = nanojoules(e.host_waiting_nj);
+  j["system_nj_per_intersection"] = nanojoules(e.system_nj);
+  j["software_nj_per_intersection"] = nanojoules(e.software_nj);
+  j["card_watts"] = nanojoules(e.card_watts);
+  if (!e.missing.empty()) {
+    j["energy_missing"] = e.missing;
+    return j;
+  }
+  ordered_json terms = ordered_json::array();  // one second at full rate, each term traced to its profile key
+  for (const energy::EnergyTerm& t : e.report.terms) {
+    terms.push_back({{"component", t.component},
+                     {"counter", t.counter},
+                     {"count", t.count},
+                     {"figure", t.figure.value},
+                     {"unit", t.figure.unit},
+                     {"profile_key", t.figure.path},
+                     {"source", t.figure.source},
+                     {"joules", t.joules}});
+  }
+  j["one_second_terms"] = terms;
+  return j;
+}
+
 // The one JSON writer of paper.json.
 ordered_json paper_json(const PaperDocument& d) {
   ordered_json j;
@@ -84,8 +120,11 @@ ordered_json paper_json(const PaperDocument& d) {
                      {"fpga_speedup_over_five_banks", b.fpga_speedup_over_five_banks},
                      {"run_speedup_over_five_banks", b.run_speedup_over_five_banks}});
   }
+  ordered_json energy = ordered_json::array();
+  for (const energy::FullRateEnergy& e : d.energy) energy.push_back(energy_json(e));
   j["scene_records"] = scenes;
   j["estimate_records"] = estimates;
+  j["energy_records"] = energy;
   j["bank_variants"] = banks;
   j["summary"] = {{"average_overall_speedup", d.summary.average_overall_speedup},
                   {"largest_scene_overall_speedup", d.summary.largest_scene_overall_speedup},
@@ -101,21 +140,28 @@ std::string csv_text(const PaperDocument& d) {
   std::ostringstream out;
   out << "record,faces,patches,steps,implementation,seconds,paper_seconds,relative_residual,spread_min_seconds,"
          "spread_max_seconds,fpga_busy_seconds,speedup_vs_software,device,lanes,clock_mhz,intersections_per_s,"
-         "bytes_per_cycle,gb_per_s,estimate,rule\n";
+         "bytes_per_cycle,gb_per_s,estimate,rule,fpga_nj,sram_nj,pci_nj,card_nj,host_waiting_nj,system_nj,software_nj\n";
   for (const PaperTableRow& s : d.rows) {
     out << "scene," << s.scene.faces << ',' << s.scene.patches << ',' << s.scene.steps << ',' << to_string(s.implementation)
         << ',' << number(s.seconds) << ',' << (s.calibration ? number(s.paper_seconds()) : "") << ','
         << (s.calibration ? number(s.relative_residual()) : "") << ','
         << (s.spread.empty() ? "" : number(s.spread_min_seconds)) << ','
         << (s.spread.empty() ? "" : number(s.spread_max_seconds)) << ',' << number(s.fpga_busy_seconds) << ','
-        << number(s.speedup_vs_software) << ",,,,,,,,\n";
+        << number(s.speedup_vs_software) << ",,,,,,,,,,,,,,,\n";
   }
   for (std::size_t i = 0; i < d.paper_rule.size(); ++i) {
     for (const board::PaperEstimate* e : {&d.paper_rule[i], &d.model[i]}) {
       out << "estimate,,,,,,,,,,," << number(e->speedup_vs_software) << ',' << e->device << ',' << e->lanes << ','
           << number(e->clock_mhz) << ',' << number(e->intersections_per_s) << ',' << number(e->bytes_per_cycle) << ','
-          << number(e->gb_per_s) << ",\"" << e->estimate << "\"," << board::to_string(e->rule) << "\n";
+          << number(e->gb_per_s) << ",\"" << e->estimate << "\"," << board::to_string(e->rule) << ",,,,,,,\n";
     }
+  }
+  auto nj = [](double x) { return std::isnan(x) ? std::string() : number(x); };
+  for (const energy::FullRateEnergy& e : d.energy) {
+    out << "energy,,,,,,,,,,,," << e.device << ',' << e.lanes << ',' << number(e.clock_mhz) << ','
+        << number(e.intersections_per_s) << ",,,\"" << e.estimate << "\",model," << nj(e.fpga_nj) << ',' << nj(e.sram_nj)
+        << ',' << nj(e.pci_nj) << ',' << nj(e.card_nj) << ',' << nj(e.host_waiting_nj) << ',' << nj(e.system_nj) << ','
+        << nj(e.software_nj) << "\n";
   }
   return out.str();
 }
@@ -159,6 +205,18 @@ void print_table(const PaperDocument& d) {
   }
   std::printf("  software rates: paper rule %.4g int/s (Table 2's peak), model %.4g int/s (calibrated test)\n",
               d.paper_rule[0].software_rate, d.model[0].software_rate);
+  std::printf("\nSec 5.6 in energy: nJ per intersection at full rate (model estimates; docs/energy.md)\n");
+  std::printf("  %-24s %-14s %5s %5s %9s %8s %8s %8s %8s %10s %8s\n", "estimate", "device", "lanes", "banks", "int/s",
+              "fpga", "sram", "pci", "card", "+host wait", "software");
+  for (const energy::FullRateEnergy& e : d.energy) {
+    if (!e.missing.empty()) {
+      std::printf("  %-24s %-14s no energy figures: %s\n", e.estimate.c_str(), e.device.c_str(), e.missing.c_str());
+      continue;
+    }
+    std::printf("  %-24s %-14s %5d %5u %9.3g %8.3f %8.3f %8.3f %8.3f %10.3f %8.1f\n", e.estimate.c_str(), e.device.c_str(),
+                e.lanes, e.banks, e.intersections_per_s, e.fpga_nj, e.sram_nj, e.pci_nj, e.card_nj, e.system_nj,
+                e.software_nj);
+  }
   std::printf("\nSec 4.1 bank variants (largest scene, 15 bits)\n");
   for (const BankVariantRow& b : d.bank_variants) {
     std::printf("  %u banks, %u lanes: %8.1f s, FPGA busy %8.1f s, FPGA speedup over 5 banks %.3fx\n", b.variant.banks,
@@ -169,6 +227,26 @@ void print_table(const PaperDocument& d) {
 }  // namespace
 
 namespace {
+
+// The model's sec 5.6 designs with lanes, and the XC2V6000's own lanes that fit, in joules.
+std::vector<energy::FullRateEnergy> full_rate_energy_rows(const std::vector<board::PaperEstimate>& model,
+                                                          const HostProfile& host) {
+  constexpr int kBits = 15;  // the paper's estimates are of the 15-bit pipeline
+  std::vector<board::PaperEstimate> designs;
+  for (const board::PaperEstimate& e : model)
+    if (e.lanes > 0) designs.push_back(e);
+  if (!model.empty()) {
+    const board::DeviceProfile rc2000 = board::find_device_profile("xc2v6000");
+    designs.insert(designs.begin() + std::min<std::size_t>(1, designs.size()),
+                   board::model_lanes_that_fit(rc2000, model.front().software_rate, kBits));
+  }
+  std::vector<energy::FullRateEnergy> rows;
+  for (const board::PaperEstimate& e : designs) {
+    const board::DeviceProfile device = board::find_device_profile(e.device);
+    rows.push_back(energy::full_rate_energy(e, device, energy::load_energy_tables(&device, host.json, host.file), kBits));
+  }
+  return rows;
+}
 
 int run_paper(const PaperOptions& o) {
   const std::string json_path = o.out_dir + "/paper.json", csv_path = o.out_dir + "/paper.csv";
@@ -195,6 +273,7 @@ int run_paper(const PaperOptions& o) {
   document.paper_rule = r.paper_rule;
   document.model = r.model;
   document.bank_variants = bank_variant_rows(r);
+  document.energy = full_rate_energy_rows(r.model, host);
   document.summary = summarize(r);
   document.host_profile = o.host;
   document.driver_model = host.driver_model.name();

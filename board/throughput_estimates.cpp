@@ -68,11 +68,9 @@ struct StreamRate {
 };
 
 StreamRate long_pass_rate(const DeviceProfile& device, int lanes, int bits) {
-  const BankLayout probe = make_bank_layout(static_cast<unsigned>(lanes), 64, bits, device.bank_word_bits, device.bank_capacity_bytes);
-  const unsigned groups = static_cast<unsigned>(probe.groups.size());
   BoardChoices choices;
   choices.lanes = static_cast<unsigned>(lanes);
-  choices.banks = 3 * groups + 2;
+  choices.banks = banks_for_full_rate(device, lanes, bits);
   choices.bits = bits;
   const BoardParams params = make_board_params(device, choices);
   const BankLayout layout = make_bank_layout(params);  // results where the profile keeps them
@@ -93,6 +91,11 @@ StreamRate long_pass_rate(const DeviceProfile& device, int lanes, int bits) {
 }
 
 }  // namespace
+
+unsigned banks_for_full_rate(const DeviceProfile& device, int lanes, int bits) {
+  const BankLayout probe = make_bank_layout(static_cast<unsigned>(lanes), 64, bits, device.bank_word_bits, device.bank_capacity_bytes);
+  return 3 * static_cast<unsigned>(probe.groups.size()) + 2;
+}
 
 std::vector<PaperEstimate> paper_rule_estimates(double software_peak_rate) {
   const double bytes = bytes_per_intersection(15);

@@ -83,6 +83,10 @@ FullRateFit float_full_rate_fit(const DeviceProfile& device, pipeline::FloatForm
 // (EstimateRule::Model), with the speedup over `software_rate`.
 PaperEstimate float_lanes_that_fit(const DeviceProfile& device, double software_rate, pipeline::FloatFormat format);
 
+// Banks that keep `lanes` lanes at `bits` at full rate: three coordinate banks per lane group, one
+// for faces, one for results (3 groups + 2; the model's estimates assume a board with that many).
+unsigned banks_for_full_rate(const DeviceProfile& device, int lanes, int bits);
+
 // Why the two rules give different lane counts and rates for `device`, in one sentence.
 std::string why_estimates_differ(const PaperEstimate& paper, const PaperEstimate& model);
 

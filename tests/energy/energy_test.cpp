@@ -5,7 +5,10 @@
 
 #include "board/device_profile.h"
 #include "board/profile_reader.h"
+#include "board/design_fit.h"
 #include "energy/energy_model.h"
+#include "energy/full_rate_energy.h"
+#include "pipeline/resource_model.h"
 
 namespace rc::energy {
 namespace {
@@ -213,6 +216,61 @@ TEST(Energy, ShippedProfilesHaveSourcedTables) {
     const HostEnergyTable t = host_energy_table(board::read_json_file(path), path);
     EXPECT_GT(t.busy_w.value, t.wait_w.value) << name;
   }
+}
+
+}  // namespace
+}  // namespace rc::energy
+
+namespace rc::energy {
+namespace {
+
+// Sec 5.6 in joules: one second at full rate, by hand with the test tables above. 2 lanes at 50 MHz,
+// 1e8 intersections a second moving 8 bytes each (2e8 words, half priced as reads, half as writes).
+TEST(FullRateEnergy, OneSecondAtFullRateByHand) {
+  const board::DeviceProfile device = board::device_profile_from_json(device_json_with_energy(), "dev.json");
+  board::PaperEstimate e;
+  e.estimate = "a test design";
+  e.rule = board::EstimateRule::Model;
+  e.device = device.name;
+  e.lanes = 2;
+  e.clock_mhz = 50;
+  e.intersections_per_s = 1e8;
+  e.bytes_per_intersection = 8;
+  e.software_rate = 2e7;
+  const FullRateEnergy f = full_rate_energy(e, device, tables(), 15);
+  const board::DesignFit fit = board::fit_design(device, pipeline::ResourceModel::load_default(), 2, 15);
+  const double slices = fit.slices / 2.0, multipliers = fit.block_multipliers / 2.0;
+  EXPECT_EQ(f.banks, std::max(device.bank_count, board::banks_for_full_rate(device, 2, 15)));
+  const double fpga = 1.5 + 2 * 50e6 * slices * 0.5e-12 + 1e8 * slices * 2.0e-12 + 1e8 * multipliers * 30e-12;
+  const double sram = 1e8 * 3.0e-9 + 1e8 * 4.0e-9 + f.banks * 20e-3;
+  const double pci = 1.0;  // the bridge only: a pass streams out of the banks
+  EXPECT_NEAR(f.fpga_nj, fpga * 10, 1e-9);  // joules in a second / 1e8 intersections, in nJ
+  EXPECT_NEAR(f.sram_nj, sram * 10, 1e-9);
+  EXPECT_NEAR(f.pci_nj, pci * 10, 1e-12);
+  EXPECT_NEAR(f.card_nj, (fpga + sram + pci) * 10, 1e-9);
+  EXPECT_NEAR(f.card_watts, fpga + sram + pci, 1e-9);
+  EXPECT_NEAR(f.host_waiting_nj, 10.0 * 10, 1e-9);       // 10 W waiting
+  EXPECT_NEAR(f.system_nj, (fpga + sram + pci + 10) * 10, 1e-9);
+  EXPECT_NEAR(f.software_nj, 60.0 / 2e7 * 1e9, 1e-9);  // 60 W computing at 2e7 tests a second
+}
+
+TEST(FullRateEnergy, AProfileWithoutATableGivesNoFiguresAndSaysWhy) {
+  nlohmann::ordered_json j = device_json_with_energy();
+  j.erase("energy");
+  const board::DeviceProfile device = board::device_profile_from_json(j, "bare.json");
+  board::PaperEstimate e;
+  e.estimate = "lanes that fit";
+  e.device = device.name;
+  e.lanes = 2;
+  e.clock_mhz = 50;
+  e.intersections_per_s = 1e8;
+  e.bytes_per_intersection = 8;
+  const FullRateEnergy f = full_rate_energy(e, device, load_energy_tables(&device, host_json_with_energy(), "h.json"), 15);
+  EXPECT_NE(f.missing.find("bare.json has no energy table"), std::string::npos) << f.missing;
+  EXPECT_TRUE(std::isnan(f.card_nj));
+  EXPECT_TRUE(std::isnan(f.software_nj));
+  e.lanes = 0;  // the bandwidth limit: no design to price
+  EXPECT_NE(error_of([&] { (void)full_rate_energy(e, device, tables(), 15); }).find("no lanes streaming"), std::string::npos);
 }
 
 }  // namespace

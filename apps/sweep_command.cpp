@@ -151,6 +151,7 @@ void print_blocks(const std::vector<SweepRow>& rows, const SweepAxes& axes) {
     for (int b : axes.banks) std::printf(" %8d", b);
     std::printf("\n");
     const SweepRow* best = nullptr;
+    const SweepRow* frugal = nullptr;  // the least energy, among rows that have it
     std::size_t end = first;
     while (end < rows.size() && same_block(rows[end].config, c)) ++end;
     std::vector<unsigned> unfit;  // lane counts whose whole line does not fit the device
@@ -164,6 +165,9 @@ void print_blocks(const std::vector<SweepRow>& rows, const SweepAxes& axes) {
         const SweepRow& x = rows[r + j];
         std::printf(" %8s", cell(x).c_str());
         if (x.validity == Validity::ok && (!best || x.simulated_seconds < best->simulated_seconds)) best = &x;
+        if (x.validity == Validity::ok && std::isfinite(x.energy_joules) &&
+            (!frugal || x.energy_joules < frugal->energy_joules))
+          frugal = &x;
       }
       std::printf("\n");
     }
@@ -172,6 +176,13 @@ void print_blocks(const std::vector<SweepRow>& rows, const SweepAxes& axes) {
       std::printf("  fastest: %u lanes, %u banks: %.3f s, %.2fx one lane, %.2fx software; bottleneck %s\n",
                   best->config.lanes, best->config.banks, best->simulated_seconds, best->speedup_vs_one_lane,
                   best->speedup_vs_software, best->bottleneck.c_str());
+    }
+    if (frugal) {
+      std::printf("  most frugal: %u lanes, %u banks: %.4g J (%.4g J per step, %.4g W), %.3f s\n", frugal->config.lanes,
+                  frugal->config.banks, frugal->energy_joules, frugal->energy_per_step_joules, frugal->average_watts,
+                  frugal->simulated_seconds);
+    } else if (best && !best->energy_missing.empty()) {
+      std::printf("  energy: not estimated: %s\n", best->energy_missing.c_str());
     }
     first = end;
   }

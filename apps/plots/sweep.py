@@ -16,7 +16,7 @@ pareto_b<bits>.png                simulated time against energy of every simulat
 axis_<path>.png                   for each swept profile field (and host), the fastest configuration
                                   (over lanes and banks) against the field's value, one line per
                                   device, width, driver and the other fields' values; marker: its
-                                  bottleneck
+                                  bottleneck; with energy, beside it the least energy per step
 
 Rows without energy (a profile without an energy table: the CSV's energy_missing says which) are
 left out of the energy plots; when no row has energy the energy plots are not drawn and a line on
@@ -272,7 +272,8 @@ def as_number(text):
 
 
 def axis_plot(rows, axis, extras, out):
-    """The fastest configuration over lanes and banks against one swept field's value."""
+    """The fastest configuration over lanes and banks against one swept field's value; with energy, a
+    second panel: the least energy per step over lanes and banks."""
     others = [e for e in extras if e != axis]
     lines = ordered((r["device"], r["bits"], driver(r)) + tuple(r[e] for e in others) for r in rows)
     values = ordered(r[axis] for r in rows)
@@ -280,40 +281,47 @@ def axis_plot(rows, axis, extras, out):
     if numeric:
         values = sorted(values, key=float)
     position = {v: (float(v) if numeric else i) for i, v in enumerate(values)}
-    fig, ax = plt.subplots(figsize=(7.5, 4.4))
+    with_energy = any(has_energy(r) for r in rows)
+    panels = [("simulated_seconds", "fastest simulated seconds (over lanes and banks)", lambda r: r["status"] == "ok")]
+    if with_energy:
+        panels.append(("energy_per_step_joules", "least joules per step (over lanes and banks)", has_energy))
+    fig, axes = plt.subplots(1, len(panels), figsize=(7.5 * len(panels), 4.6), squeeze=False)
     used = set()
-    for line in lines:
-        xs, ys, kinds = [], [], []
-        for v in values:
-            ok = [r for r in rows if (r["device"], r["bits"], driver(r)) + tuple(r[e] for e in others) == line
-                  and r[axis] == v and r["status"] == "ok"]
-            if not ok:
+    for ax, (key, label, usable) in zip(axes[0], panels):
+        for index, line in enumerate(lines):
+            xs, ys, kinds = [], [], []
+            for v in values:
+                ok = [r for r in rows if (r["device"], r["bits"], driver(r)) + tuple(r[e] for e in others) == line
+                      and r[axis] == v and usable(r)]
+                if not ok:
+                    continue
+                best = min(ok, key=lambda r: float(r[key]))
+                xs.append(position[v])
+                ys.append(float(best[key]))
+                kinds.append(best["bottleneck"])
+            if not xs:
                 continue
-            best = min(ok, key=lambda r: float(r["simulated_seconds"]))
-            xs.append(position[v])
-            ys.append(float(best["simulated_seconds"]))
-            kinds.append(best["bottleneck"])
-        if not xs:
-            continue
-        label = f"{line[0]}, {line[1]}-bit, {line[2]}" + "".join(f", {e}={v}" for e, v in zip(others, line[3:]))
-        style = ["-", "--", ":", "-."][len(ax.get_lines()) % 4]  # lines that coincide stay visible
-        (handle,) = ax.plot(xs, ys, style, lw=1.2, label=label)
-        for x, y, kind in zip(xs, ys, kinds):
-            used.add(kind)
-            ax.plot(x, y, BOTTLENECKS.get(kind, ("?", "*", kind))[1], color=handle.get_color(), ms=6, mec="k", mew=0.4)
-    if not numeric:
-        ax.set_xticks(range(len(values)))
-        ax.set_xticklabels(values)
-    ax.set_xlabel(axis)
-    ax.set_ylabel("fastest simulated seconds (over lanes and banks)")
-    ax.set_ylim(bottom=0)
-    ax.grid(True, lw=0.3)
-    handles, _ = ax.get_legend_handles_labels()
+            label_text = f"{line[0]}, {line[1]}-bit, {line[2]}" + "".join(f", {e}={v}" for e, v in zip(others, line[3:]))
+            style = ["-", "--", ":", "-."][index % 4]  # lines that coincide stay visible
+            (handle,) = ax.plot(xs, ys, style, lw=1.2, label=label_text, color=plt.cm.tab10(index % 10))
+            for x, y, kind in zip(xs, ys, kinds):
+                used.add(kind)
+                ax.plot(x, y, BOTTLENECKS.get(kind, ("?", "*", kind))[1], color=handle.get_color(), ms=6, mec="k",
+                        mew=0.4)
+        if not numeric:
+            ax.set_xticks(range(len(values)))
+            ax.set_xticklabels(values)
+        ax.set_xlabel(axis)
+        ax.set_ylabel(label)
+        ax.set_ylim(0, ax.get_ylim()[1] * 1.12)  # room above the lines for them and the legend
+        ax.grid(True, lw=0.3)
+    handles, _ = axes[0][0].get_legend_handles_labels()
     handles += [Line2D([], [], ls="", marker=BOTTLENECKS[k][1], color="w", mec="k", label=BOTTLENECKS[k][2])
                 for k in BOTTLENECKS if k in used]
-    ax.legend(handles=handles, fontsize=7)
-    ax.set_title(f"The fastest configuration against {axis}; marker: its bottleneck", fontsize=10)
-    fig.tight_layout()
+    axes[0][0].legend(handles=handles, fontsize=7, loc="lower right")
+    what = "fastest and most frugal configurations" if with_energy else "fastest configuration"
+    fig.suptitle(f"The {what} against {axis}; marker: its bottleneck", fontsize=10)
+    fig.tight_layout(rect=(0, 0, 1, 0.95))
     entry.save(fig, os.path.join(out, f"axis_{slug(axis)}.png"), dpi=110)
     plt.close(fig)
 

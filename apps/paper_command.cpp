@@ -17,6 +17,7 @@
 #include "apps/plot.h"
 #include "apps/progress.h"
 #include "apps/report.h"
+#include "platform/run_report.h"
 #include "studies/calibration_variants.h"
 #include "studies/paper_prediction.h"
 
@@ -80,18 +81,7 @@ ordered_json energy_json(const energy::FullRateEnergy& e) {
     j["energy_missing"] = e.missing;
     return j;
   }
-  ordered_json terms = ordered_json::array();  // one second at full rate, each term traced to its profile key
-  for (const energy::EnergyTerm& t : e.report.terms) {
-    terms.push_back({{"component", t.component},
-                     {"counter", t.counter},
-                     {"count", t.count},
-                     {"figure", t.figure.value},
-                     {"unit", t.figure.unit},
-                     {"profile_key", t.figure.path},
-                     {"source", t.figure.source},
-                     {"joules", t.joules}});
-  }
-  j["one_second_terms"] = terms;
+  j["one_second_at_full_rate"] = energy_report_json(e.report);  // every term with its profile key and source
   return j;
 }
 

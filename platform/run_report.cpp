@@ -177,42 +177,10 @@ ordered_json cards_json(const CardsReport& c) {
   return {{"count", c.count}, {"split", c.split}, {"bus", c.bus}, {"buses", buses}, {"per_card", cards}};
 }
 
-// Every joule with its counter and the profile figure it used (docs/energy.md, docs/outputs.md).
-ordered_json energy_json(const energy::EnergyReport& e) {
-  ordered_json components = ordered_json::array();
-  for (const energy::ComponentEnergy& c : e.components) {
-    components.push_back({{"name", c.name},
-                          {"joules", c.joules()},
-                          {"static_joules", c.static_joules},
-                          {"dynamic_joules", c.dynamic_joules},
-                          {"average_watts", c.average_watts}});
-  }
-  ordered_json terms = ordered_json::array();
-  for (const energy::EnergyTerm& t : e.terms) {
-    terms.push_back({{"component", t.component},
-                     {"counter", t.counter},
-                     {"count", t.count},
-                     {"kind", t.is_static ? "static" : "dynamic"},
-                     {"figure", {{"key", t.figure.path}, {"value", t.figure.value}, {"unit", t.figure.unit},
-                                 {"source", t.figure.source}}},
-                     {"joules", t.joules}});
-  }
-  ordered_json tables = {{"host", e.host_table}};
-  if (!e.device_table.empty()) tables["device"] = e.device_table;
-  return {{"joules", e.joules},
-          {"joules_per_step", e.joules_per_step},
-          {"joules_per_intersection", e.joules_per_intersection},
-          {"average_watts", e.average_watts},
-          {"energy_delay_product_joule_seconds", e.energy_delay_product},
-          {"tables", tables},
-          {"components", components},
-          {"terms", terms}};
-}
-
 // "energy": the estimate, or null beside "energy_missing" saying which profile has no table.
 void add_energy(ordered_json& j, const RunReport& r) {
   if (r.energy) {
-    j["energy"] = energy_json(*r.energy);
+    j["energy"] = energy_report_json(*r.energy);
   } else {
     j["energy"] = nullptr;
     j["energy_missing"] = r.energy_missing;
@@ -323,6 +291,39 @@ energy::Activity activity_of(const RunReport& r, std::uint64_t steps) {
   a.pci_data_phases = (b.pci.bytes_to_board + b.pci.bytes_to_host + pci_word_bytes - 1) / pci_word_bytes;
   a.pci_transactions = b.pci.bus_transactions;
   return a;
+}
+
+// Every joule with its counter and the profile figure it used (docs/energy.md, docs/outputs.md).
+nlohmann::ordered_json energy_report_json(const energy::EnergyReport& e) {
+  using nlohmann::ordered_json;
+  ordered_json components = ordered_json::array();
+  for (const energy::ComponentEnergy& c : e.components) {
+    components.push_back({{"name", c.name},
+                          {"joules", c.joules()},
+                          {"static_joules", c.static_joules},
+                          {"dynamic_joules", c.dynamic_joules},
+                          {"average_watts", c.average_watts}});
+  }
+  ordered_json terms = ordered_json::array();
+  for (const energy::EnergyTerm& t : e.terms) {
+    terms.push_back({{"component", t.component},
+                     {"counter", t.counter},
+                     {"count", t.count},
+                     {"kind", t.is_static ? "static" : "dynamic"},
+                     {"figure", {{"key", t.figure.path}, {"value", t.figure.value}, {"unit", t.figure.unit},
+                                 {"source", t.figure.source}}},
+                     {"joules", t.joules}});
+  }
+  ordered_json tables = {{"host", e.host_table}};
+  if (!e.device_table.empty()) tables["device"] = e.device_table;
+  return {{"joules", e.joules},
+          {"joules_per_step", e.joules_per_step},
+          {"joules_per_intersection", e.joules_per_intersection},
+          {"average_watts", e.average_watts},
+          {"energy_delay_product_joule_seconds", e.energy_delay_product},
+          {"tables", tables},
+          {"components", components},
+          {"terms", terms}};
 }
 
 void attach_energy(RunReport& report, const energy::EnergyTables& tables, std::uint64_t steps) {

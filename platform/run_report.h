@@ -164,6 +164,9 @@ struct RunReport {
 
 // What the run counted, as the energy model takes it; `steps` from the solver's result.
 energy::Activity activity_of(const RunReport& report, std::uint64_t steps);
+// An estimate as report.json writes it (board.energy): totals, tables, components and every term
+// with its counter, count and profile figure (key, value, unit, source). docs/outputs.md.
+nlohmann::ordered_json energy_report_json(const energy::EnergyReport& e);
 // Sets report.energy (or report.energy_missing, when a table is missing) from `tables`.
 void attach_energy(RunReport& report, const energy::EnergyTables& tables, std::uint64_t steps);
 

@@ -136,13 +136,15 @@ std::string ProfileSetting::text() const {
 }
 
 void check_setting_value(const ProfileField& field, const nlohmann::ordered_json& value, const std::string& where) {
+  // A caller that names the place itself (a study file's "file:line: key: ") gives no `where`.
+  const std::string place = where.empty() ? "" : where + ": " + field.path + ": ";
   if (field.numeric && !value.is_number()) {
-    throw std::invalid_argument(where + ": " + field.path + ": expected a number (the profile's " + field.field +
-                                " is a number), got " + value.dump());
+    throw std::invalid_argument(place + "expected a number (the profile's " + field.field + " is a number), got " +
+                                value.dump());
   }
   if (!field.numeric && !value.is_string()) {
-    throw std::invalid_argument(where + ": " + field.path + ": expected a name (the profile's " + field.field +
-                                " is a name), got " + value.dump());
+    throw std::invalid_argument(place + "expected a name (the profile's " + field.field + " is a name), got " +
+                                value.dump());
   }
 }
 

@@ -48,7 +48,8 @@ struct ProfileSetting {
   std::string text() const;      // "banks.clock_mhz=133"
 };
 
-// Throws std::invalid_argument (naming `where`) unless `value` has the field's type.
+// Throws std::invalid_argument (naming `where` and the path, unless `where` is empty) unless `value`
+// has the field's type.
 void check_setting_value(const ProfileField& field, const nlohmann::ordered_json& value, const std::string& where);
 
 // The profile with every setting of its kind applied and read back by the profile's own loader

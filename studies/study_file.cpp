@@ -320,7 +320,7 @@ void read_axes(const Reader& r, const toml::table& t, Study& s) {
     ProfileAxis axis{resolve(r, p, key, s), values_of(r, *p.node, key)};
     for (const nlohmann::ordered_json& v : axis.values) {
       try {
-        check_setting_value(axis.field, v, key);
+        check_setting_value(axis.field, v, "");  // r.fail names the file, line and key
       } catch (const std::invalid_argument& e) {
         r.fail(*p.node, key, e.what());
       }
@@ -336,7 +336,7 @@ void read_fixed(const Reader& r, const toml::table& t, Study& s) {
     const std::string key = "fixed." + p.path;
     ProfileSetting setting{resolve(r, p, key, s), r.value(*p.node, key)};
     try {
-      check_setting_value(setting.field, setting.value, key);
+      check_setting_value(setting.field, setting.value, "");
     } catch (const std::invalid_argument& e) {
       r.fail(*p.node, key, e.what());
     }

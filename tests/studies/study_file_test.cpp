@@ -99,7 +99,7 @@ TEST(StudyFile, BadStudiesNameTheFileTheLineTheKeyAndTheLimit) {
       {"[axes]\n\"banks.clok_mhz\" = [1]\n", {"inline.toml:2", "banks.clok_mhz", "no sourced field", "banks.clock_mhz"}},
       {"[axes]\nclock_mhz = [1]\n", {"inline.toml:2", "names several fields", "pci.clock_mhz"}},
       {"[axes]\nbanks.clock_mhz = [0]\n", {"banks.clock_mhz=0", "banks.clock_mhz", "outside"}},
-      {"[axes]\nbanks.clock_mhz = [\"fast\"]\n", {"inline.toml:2", "expected a number"}},
+      {"[axes]\nbanks.clock_mhz = [\"fast\"]\n", {"inline.toml:2: axes.banks.clock_mhz: expected a number (the profile's banks.clock_mhz is a number), got \"fast\""}},
       {"[axes]\n\"host.transfer\" = [\"usb\"]\n", {"host.transfer=usb", "not one of dma, pio"}},
       {"[axes]\n\"host.transfer\" = [3]\n", {"inline.toml:2", "expected a name"}},
       {"[axes]\nlanes = \"0-3\"\n", {"inline.toml:2", "axes.lanes", "1..255"}},

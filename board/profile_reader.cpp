@@ -14,8 +14,15 @@ std::string resolve_profile_path(const std::string& name_or_path, const std::str
   const bool is_path = name_or_path.find('/') != std::string::npos ||
                        (name_or_path.size() > 5 && name_or_path.substr(name_or_path.size() - 5) == ".json");
   const std::string path = is_path ? name_or_path : default_config_dir() + "/" + kind + "/" + name_or_path + ".json";
-  if (!std::filesystem::is_regular_file(path)) {
+  std::error_code absent;
+  if (!std::filesystem::exists(path, absent)) {
     throw std::invalid_argument("no " + kind + " profile '" + name_or_path + "' (looked for " + path + ")");
+  }
+  try {  // there, but a folder, a device or a pipe: say so rather than "no profile"
+    const std::string singular = !kind.empty() && kind.back() == 's' ? kind.substr(0, kind.size() - 1) : kind;
+    io::check_regular_file(path, io::kProfileLimitBytes, "a " + singular + " profile");
+  } catch (const io::InputFileError& e) {
+    throw std::invalid_argument(e.what());
   }
   return path;
 }

@@ -26,16 +26,25 @@ void check_limit(std::uint64_t count, std::uint64_t limit, const std::string& wh
 // Levels outside 0..8 are refused by split_faces and make_patches themselves.
 bool valid_levels(int levels) { return levels >= 0 && levels <= 8; }
 
-std::uint64_t patches_of_size(const std::vector<Face>& faces, double size) {
-  std::uint64_t count = 0;
-  for (const Face& f : faces) count += std::uint64_t{1} << (2 * levels_for_size(f.tri, size));
-  return count;
-}
-
 std::string format_number(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%g", value);
   return text;
+}
+
+// Throws naming the option and the first face that cannot get patches that small.
+std::uint64_t patches_of_size(const std::vector<Face>& faces, double size) {
+  std::uint64_t count = 0;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    try {
+      count += std::uint64_t{1} << (2 * levels_for_size(faces[f].tri, size));
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("--patch-size " + format_number(size) + ": face " + std::to_string(f) + ": " +
+                                  e.what() + " (normalised units); refine the faces first (--faces, --face-levels) " +
+                                  "or ask for larger patches");
+    }
+  }
+  return count;
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 #include "scenes/subdivide.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstdint>
 #include <queue>
 #include <stdexcept>
@@ -30,8 +32,8 @@ std::vector<Triangle> split_levels(const Triangle& t, int levels) {
 }
 
 void check_levels(int levels, const char* what) {
-  if (levels < 0 || levels > 8) {
-    throw std::invalid_argument(std::string(what) + " subdivision levels must be in 0..8, got " +
+  if (levels < 0 || levels > kMaxSplitLevels) {
+    throw std::invalid_argument(std::string(what) + " subdivision levels must be in 0.." + std::to_string(kMaxSplitLevels) + ", got " +
                                 std::to_string(levels));
   }
 }
@@ -146,8 +148,18 @@ std::vector<Patch> make_patches(const std::vector<Face>& faces, int levels) {
 
 int levels_for_size(const Triangle& t, double size) {
   if (!(size > 0)) throw std::invalid_argument("patch size must be positive, got " + std::to_string(size));
+  const double longest = longest_edge(t);
   int levels = 0;
-  for (double edge = longest_edge(t); edge > size && levels < 8; edge /= 2) ++levels;
+  for (double edge = longest; edge > size; edge /= 2) {
+    if (++levels > kMaxSplitLevels) {
+      char text[160];
+      std::snprintf(text, sizeof text,
+                    "patches of at most %g need more than %d levels of splitting of a face whose longest edge is %g "
+                    "(at most %g after %d)",
+                    size, kMaxSplitLevels, longest, std::ldexp(longest, -kMaxSplitLevels), kMaxSplitLevels);
+      throw std::invalid_argument(text);
+    }
+  }
   return levels;
 }
 

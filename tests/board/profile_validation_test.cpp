@@ -12,6 +12,7 @@
 #include "board/bank_layout.h"
 #include "board/board_params.h"
 #include "board/device_profile.h"
+#include "board/profile_reader.h"
 
 namespace rc::board::test {
 namespace {
@@ -35,6 +36,16 @@ nlohmann::ordered_json sourced(const nlohmann::ordered_json& value) { return {{"
 
 TEST(ProfileValidation, ShippedProfilesPass) {
   for (const char* name : {"xc2v6000", "virtex4-sx55", "spartan3-5000"}) EXPECT_NO_THROW(find_device_profile(name)) << name;
+}
+
+// A name that is not there says where it looked; a path that is there but not a file (a device, a
+// folder) says that, not "no profile".
+TEST(ProfileValidation, MissingAndNonFileProfilesAreNamed) {
+  EXPECT_EQ(error_of([] { (void)find_device_profile("no-such-board"); }),
+            "no devices profile 'no-such-board' (looked for " + default_config_dir() + "/devices/no-such-board.json)");
+  EXPECT_EQ(error_of([] { (void)find_device_profile("/dev/null"); }),
+            "/dev/null: not a regular file (a device profile must be one)");
+  EXPECT_EQ(error_of([] { (void)find_device_profile("/tmp/"); }), "/tmp/: is a directory, not a file");
 }
 
 // The crash of issue 15: 4..32-byte banks passed and the driver divided by a set of zero faces.

@@ -173,9 +173,20 @@ TEST(SceneLimits, TooManyFacesOrPatchesIsAnErrorBeforeAnythingIsBuilt) {
   o.face_levels = 2;
   EXPECT_NE(prepare_error(o).find("--face-levels 2 makes 4800000 faces, more than the limit of 4194304"), std::string::npos);
   o = SceneOptions{};
+  o.face_levels = 3;
+  o.patch_size = 0.001;
+  EXPECT_NE(prepare_error(o).find("--patch-size 0.001 makes "), std::string::npos);
+  EXPECT_NE(prepare_error(o).find(" patches, more than the limit of 16777216 (kMaxPatches"), std::string::npos);
+  // Patches smaller than 8 levels of splitting reach are refused, not silently made larger.
+  o = SceneOptions{};
   o.face_target = 1000;
   o.patch_size = 1e-6;
-  EXPECT_NE(prepare_error(o).find("--patch-size 1e-06 makes 65536000 patches"), std::string::npos);
+  EXPECT_NE(prepare_error(o).find("--patch-size 1e-06: face 0: patches of at most 1e-06 need more than 8 levels of "
+                                  "splitting of a face whose longest edge is "),
+            std::string::npos)
+      << prepare_error(o);
+  EXPECT_NE(prepare_error(o).find("refine the faces first (--faces, --face-levels) or ask for larger patches"),
+            std::string::npos);
   o = SceneOptions{};
   o.face_target = -5;
   EXPECT_EQ(prepare_error(o), "--faces must not be negative, got -5");

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "scenes/cornell_box.h"
 #include "scenes/normalise.h"
@@ -115,6 +116,17 @@ TEST(Subdivision, PatchSizeSplitsEachFaceUntilItsEdgesFit) {
   EXPECT_LT(fewest, most);  // the box's small block faces get fewer patches than its walls
   EXPECT_EQ(levels_for_size(s.faces[0].tri, 10.0), 0);
   EXPECT_THROW(levels_for_size(s.faces[0].tri, 0.0), std::invalid_argument);
+}
+
+// Eight levels halve the longest edge exactly eight times: a size of exactly edge / 256 is met, any
+// smaller size is an error (it used to be met silently with edge / 256).
+TEST(Subdivision, PatchSizeBeyondEightLevelsIsAnError) {
+  const Scene s = prepare_scene(SceneOptions{}).scene;
+  const Triangle& t = s.faces[0].tri;
+  const double longest = std::max({glm::length(t.v1 - t.v0), glm::length(t.v2 - t.v1), glm::length(t.v0 - t.v2)});
+  EXPECT_EQ(levels_for_size(t, std::ldexp(longest, -kMaxSplitLevels)), kMaxSplitLevels);
+  EXPECT_THROW(levels_for_size(t, std::nextafter(std::ldexp(longest, -kMaxSplitLevels), 0.0)), std::invalid_argument);
+  EXPECT_THROW(levels_for_size(t, 1e-300), std::invalid_argument);
 }
 
 TEST(Subdivision, RefineToCountIsExactAndDeterministic) {

@@ -31,4 +31,13 @@ std::string read_file(const std::string& path, std::uint64_t limit_bytes, const 
 // that open the file themselves, such as Assimp's importer).
 void check_regular_file(const std::string& path, std::uint64_t limit_bytes, const std::string& what);
 
+// The UTF-8 byte order mark some editors put first in a text file; text readers skip it.
+inline constexpr char kUtf8ByteOrderMark[] = "\xEF\xBB\xBF";
+
+// `text` without a leading UTF-8 byte order mark.
+inline std::string without_byte_order_mark(std::string text) {
+  if (text.rfind(kUtf8ByteOrderMark, 0) == 0) text.erase(0, sizeof kUtf8ByteOrderMark - 1);
+  return text;
+}
+
 }  // namespace rc::io

@@ -201,6 +201,11 @@ bool is_composition_file(const std::string& path) {
   // Only a file whose first non-space character (within kSniffBytes) is '{' is read whole.
   std::ifstream in(path, std::ios::binary);
   char c = 0;
+  char bom[sizeof io::kUtf8ByteOrderMark - 1] = {};  // nlohmann::json skips a byte order mark too
+  if (!in.read(bom, sizeof bom) || std::string(bom, sizeof bom) != io::kUtf8ByteOrderMark) {
+    in.clear();
+    in.seekg(0);
+  }
   for (std::size_t read = 0; read < kSniffBytes && in.get(c) && std::isspace(static_cast<unsigned char>(c)); ++read) {
   }
   if (c != '{') return false;

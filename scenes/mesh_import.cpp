@@ -410,7 +410,7 @@ bool is_text_scene_file(const std::string& path) {
   std::string head(kSniffBytes, '\0');
   file.read(head.data(), static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(file.gcount()));
-  std::istringstream in(head);
+  std::istringstream in(io::without_byte_order_mark(head));
   std::string line;
   while (std::getline(in, line)) {
     std::istringstream words(line);

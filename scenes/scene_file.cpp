@@ -1,5 +1,6 @@
 #include "scenes/scene_file.h"
 
+#include <cstdio>
 #include <optional>
 #include <sstream>
 
@@ -10,6 +11,23 @@
 namespace rc {
 
 namespace {
+
+// A word as a message shows it: control bytes (a NUL, an escape) as \xNN, so the message stays
+// readable and whole.
+std::string shown(const std::string& word) {
+  std::string out;
+  for (const char c : word) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte != 0x7f) {
+      out += c;
+      continue;
+    }
+    char escaped[8];
+    std::snprintf(escaped, sizeof escaped, "\\x%02X", byte);
+    out += escaped;
+  }
+  return out;
+}
 
 class LineParser {
  public:
@@ -30,7 +48,7 @@ class LineParser {
   double number(const char* what) {
     const std::string w = word(what);
     const std::optional<double> value = io::parse_finite(w);
-    if (!value) fail(std::string("'") + w + "' is not a finite number (" + what + ")");
+    if (!value) fail("'" + shown(w) + "' is not a finite number (" + what + ")");
     return *value;
   }
   Vec3 vec3(const char* what) {
@@ -44,7 +62,7 @@ class LineParser {
   }
   void expect_end() {
     std::string extra;
-    if (next_word(extra)) fail("unexpected '" + extra + "' at end of line");
+    if (next_word(extra)) fail("unexpected '" + shown(extra) + "' at end of line");
   }
 
  private:
@@ -65,7 +83,7 @@ void parse_material(LineParser& p, SceneBuilder& builder) {
     } else if (key == "emission") {
       m.emission = p.spectrum("emission value");
     } else {
-      p.fail("unknown material property '" + key + "' (expected reflectance or emission)");
+      p.fail("unknown material property '" + shown(key) + "' (expected reflectance or emission)");
     }
   }
   if (!has_reflectance) p.fail("material '" + m.name + "' needs 'reflectance r g b'");
@@ -80,7 +98,7 @@ void parse_surface(LineParser& p, SceneBuilder& builder, int corners) {
   const std::string name = p.word("surface name");
   const std::string material = p.word("material name");
   const int index = builder.find_material(material);
-  if (index < 0) p.fail("unknown material '" + material + "' (define it with 'material' first)");
+  if (index < 0) p.fail("unknown material '" + shown(material) + "' (define it with 'material' first)");
   std::vector<Vec3> v;
   for (int i = 0; i < corners; ++i) v.push_back(p.vec3("vertex coordinate"));
   p.expect_end();
@@ -110,9 +128,10 @@ void parse_camera(LineParser& p, SceneBuilder& builder) {
 
 LoadedScene parse_scene_text(const std::string& text, const std::string& source_name) {
   SceneBuilder builder(source_name);
-  std::istringstream in(text);
+  std::istringstream in(io::without_byte_order_mark(text));
   std::string line;
   int line_no = 0;
+  int camera_line = 0;  // a second camera would silently replace the first
   while (std::getline(in, line)) {
     ++line_no;
     if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
@@ -126,9 +145,11 @@ LoadedScene parse_scene_text(const std::string& text, const std::string& source_
     } else if (keyword == "tri") {
       parse_surface(p, builder, 3);
     } else if (keyword == "camera") {
+      if (camera_line > 0) p.fail("a second camera (the first is on line " + std::to_string(camera_line) + "); a scene has one");
+      camera_line = line_no;
       parse_camera(p, builder);
     } else {
-      p.fail("unknown keyword '" + keyword + "' (expected material, quad, tri or camera)");
+      p.fail("unknown keyword '" + shown(keyword) + "' (expected material, quad, tri or camera)");
     }
   }
   try {

@@ -127,5 +127,14 @@ TEST_F(CompositionTest, ErrorsNameTheFileAndTheKey) {
   EXPECT_FALSE(is_composition_file(write("number.json", R"({"schema": 1})")));
 }
 
+// Editors that save with a UTF-8 byte order mark: the file is still recognised and read.
+TEST_F(CompositionTest, AByteOrderMarkIsSkipped) {
+  const std::string path = write("bom.json", std::string("\xEF\xBB\xBF") +
+                                                 R"({"schema": "rc2000sim.composition/1", "room": "cornell-box"})");
+  ASSERT_TRUE(is_composition_file(path));
+  EXPECT_EQ(load_composition(path).scene.faces.size(), cornell_box().faces.size());
+  EXPECT_FALSE(is_composition_file(write("short.json", "\xEF\xBB")));
+}
+
 }  // namespace
 }  // namespace rc

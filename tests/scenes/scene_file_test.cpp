@@ -1,5 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <fstream>
+
+#include "scenes/mesh_import.h"
 #include "scenes/prepare.h"
 #include "scenes/scene_file.h"
 
@@ -55,6 +59,34 @@ TEST(SceneFile, ZeroAreaFacesAreDroppedAndReported) {
   ASSERT_EQ(s.warnings.size(), 2u);
   EXPECT_EQ(s.warnings[0], "d.scene:3: zero-area triangle of surface 'flat' dropped");
   EXPECT_EQ(s.warnings[1], "d.scene:4: zero-area triangle of surface 'half' dropped");
+}
+
+// Control bytes (here a NUL and an escape) are shown as \xNN, so the message is whole and readable.
+TEST(SceneFile, ControlBytesInAMessageAreShownEscaped) {
+  EXPECT_EQ(error_of(std::string("box\0x 1\n", 8)), "bad.scene:1: unknown keyword 'box\\x00x' (expected material, quad, tri or camera)");
+  EXPECT_EQ(error_of(std::string(kMaterial) + "tri a w 0 0 0 1 0 0 0 1 \x1b[31m\n"),
+            "bad.scene:2: '\\x1B[31m' is not a finite number (vertex coordinate)");
+}
+
+// A second camera line would silently replace the first.
+TEST(SceneFile, ASecondCameraIsAnError) {
+  const std::string camera = "camera 1 1 -3 1 1 0 0 1 0 45\n";
+  EXPECT_EQ(error_of(std::string(kMaterial) + "tri a w 0 0 0 1 0 0 0 1 0\n" + camera + camera),
+            "bad.scene:4: a second camera (the first is on line 3); a scene has one");
+}
+
+// Editors that save with a UTF-8 byte order mark: the file is still a text scene, read as without it.
+TEST(SceneFile, AByteOrderMarkIsSkipped) {
+  const std::string text = std::string(kMaterial) + "tri a w 0 0 0 1 0 0 0 1 0\n";
+  const std::string path = ::testing::TempDir() + "bom.scene";
+  std::ofstream(path, std::ios::binary) << "\xEF\xBB\xBF" << text;
+  ASSERT_TRUE(is_text_scene_file(path));
+  SceneOptions o;
+  o.file = path;
+  o.patch_levels = 0;
+  EXPECT_EQ(prepare_scene(o).scene.faces.size(), 1u);
+  EXPECT_EQ(parse_scene_text("\xEF\xBB\xBF" + text, "b.scene").scene.faces.size(), 1u);
+  std::remove(path.c_str());
 }
 
 TEST(SceneFile, MissingFileIsAClearError) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <iomanip>
 #include <sstream>
 #include <stdexcept>
 
@@ -144,6 +145,7 @@ double ProfileReader::number(const std::string& path, double min, double max, bo
   const double v = sourced(path)["value"].get<double>();
   if (!(v >= min && v <= max)) {
     std::ostringstream msg;
+    msg << std::setprecision(15);  // limits such as 1048576 and 4294967295 in full, not 1.04858e+06
     msg << "value " << v << " is outside [" << min << ", " << max << "]";
     fail(path, msg.str());
   }

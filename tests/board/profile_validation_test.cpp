@@ -132,6 +132,13 @@ TEST(ProfileValidation, ClocksArePositiveAndFinite) {
   j = xc2v6000();
   j["clock"]["mhz_default"]["value"] = 1e300;
   EXPECT_EQ(device_error(j), "configs/devices/x.json: clock.mhz_default: value 1e+300 is outside [0.001, 10000]");
+  // Whole limits are printed in full (they were 1.04858e+06 and 4.29497e+09).
+  j = xc2v6000();
+  j["wrapper"]["pass_start_cycles"]["value"] = -3;
+  EXPECT_EQ(device_error(j), "configs/devices/x.json: wrapper.pass_start_cycles: value -3 is outside [0, 1048576]");
+  j = xc2v6000();
+  j["pci"]["max_burst_bytes"]["value"] = 3;
+  EXPECT_EQ(device_error(j), "configs/devices/x.json: pci.max_burst_bytes: value 3 is outside [8, 4294967296]");
 }
 
 // A value without its source, or with a source that is not text, is named (it once reached

@@ -173,7 +173,7 @@ TEST(Energy, ABrokenTableNamesTheKey) {
   auto device_error = [](const nlohmann::ordered_json& json) {
     return error_of([&] { (void)device_energy_table(board::device_profile_from_json(json, "d.json")); });
   };
-  EXPECT_EQ(device_error(j), "d.json: energy.sram.read_nj: value -1 is outside [0, 1e+06]");
+  EXPECT_EQ(device_error(j), "d.json: energy.sram.read_nj: value -1 is outside [0, 1000000]");
   j = device_json_with_energy();
   j["energy"]["pci"].erase("bridge_w");
   EXPECT_EQ(device_error(j), "d.json: energy.pci.bridge_w: missing");

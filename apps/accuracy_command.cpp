@@ -138,7 +138,7 @@ void add_accuracy_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--formats", options->formats,
                   "Floating-point formats to measure (float:E,M; space- or ';'-separated; 'none' for none)")
       ->delimiter(';')->capture_default_str();
-  cmd->add_option("--out", options->out_dir, "Output folder")->capture_default_str();
+  cmd->add_option("--out", options->out_dir, "Output folder")->check(output_path())->capture_default_str();
   cmd->add_flag("--quiet", options->quiet, "No progress output");
   cmd->callback([options, solver, cmd, &exit_code] {
     options->solver = solver->resolved(*cmd);

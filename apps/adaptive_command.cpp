@@ -153,8 +153,9 @@ void add_adaptive_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--device", o->board.device, "Board whose time is simulated")->capture_default_str();
   cmd->add_option("--lanes", o->lanes, "Lanes of that board")->check(CLI::Range(1, 255))->capture_default_str();
   cmd->add_option("--host", o->board.host, "Host profile")->capture_default_str();
-  cmd->add_option("--out", o->out_dir, "Output folder")->capture_default_str();
-  cmd->add_option("--docs", o->docs_dir, "Also write adaptive-patches.md and its pictures here (e.g. docs/results)");
+  cmd->add_option("--out", o->out_dir, "Output folder")->check(output_path())->capture_default_str();
+  cmd->add_option("--docs", o->docs_dir, "Also write adaptive-patches.md and its pictures here (e.g. docs/results)")
+      ->check(output_path());
   cmd->add_flag("--quiet", o->quiet, "No progress output");
   cmd->callback([o, cmd, &exit_code] {
     refuse_given(*cmd, {"--patch-levels", "--patch-size"},

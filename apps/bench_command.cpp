@@ -152,8 +152,9 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--device", o->board.device, "Board whose time is predicted")->capture_default_str();
   cmd->add_option("--lanes", o->lanes, "Lanes of that board")->check(CLI::Range(1, 64))->capture_default_str();
   cmd->add_option("--host", o->board.host, "Host profile")->capture_default_str();
-  cmd->add_option("--out", o->out_dir, "Output folder")->capture_default_str();
-  cmd->add_option("--docs", o->docs_dir, "Also write speed-vs-error.md and its plot here (e.g. docs/results)");
+  cmd->add_option("--out", o->out_dir, "Output folder")->check(output_path())->capture_default_str();
+  cmd->add_option("--docs", o->docs_dir, "Also write speed-vs-error.md and its plot here (e.g. docs/results)")
+      ->check(output_path());
   cmd->add_flag("--quiet", o->quiet, "No progress output");
   cmd->callback([o, base_ff, cmd, &exit_code] {
     refuse_given(*cmd, {"--patch-levels", "--patch-size"},

@@ -88,8 +88,10 @@ void add_calibrate_command(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand("calibrate", "Fit the host CPU cost model to Table 2's software and single-pipeline columns");
   cmd->add_option("--table", o->table, "Measured Table 2 columns")->check(CLI::ExistingFile)->capture_default_str();
   cmd->add_option("--base", o->base, "Host profile whose estimates are scaled")->capture_default_str();
-  cmd->add_option("--out", o->out, "Calibrated profile of the chosen variant to write")->capture_default_str();
+  cmd->add_option("--out", o->out, "Calibrated profile of the chosen variant to write")
+      ->check(output_path())->capture_default_str();
   cmd->add_option("--variants-out", o->variants_out, "Every variant's calibrated profile and cross-validation")
+      ->check(output_path())
       ->capture_default_str();
   cmd->add_option("--name", o->name, "Name of the calibrated profile")->capture_default_str();
   cmd->add_option("--visibility", o->visibility, "Bit-exact backend that answers visibility once per scene: fixed or fast")

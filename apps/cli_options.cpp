@@ -6,6 +6,14 @@
 
 namespace rc {
 
+CLI::Validator output_path() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        return text.empty() ? "is empty: name a folder or file to write (e.g. out)" : "";
+      },
+      "PATH", "output path");
+}
+
 CLI::Validator convergence_target() {
   return CLI::Validator(
       [](std::string& text) -> std::string {

@@ -30,6 +30,10 @@ void add_bits_option(CLI::App& cmd, int& bits);
 // power at all and runs to the solver's step cap).
 CLI::Validator convergence_target();
 
+// A path the command writes (--out, --docs, --trace, --vcd, --variants-out): not empty (an empty
+// --out made "/patches.csv", at the file system's root).
+CLI::Validator output_path();
+
 // Whether the user gave `option` (not its default).
 inline bool given(const CLI::App& cmd, const std::string& option) { return cmd.count(option) > 0; }
 // Throws CLI::ValidationError "<option> <why>", `why` a sentence's rest: "applies to --impl board only

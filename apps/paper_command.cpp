@@ -295,8 +295,10 @@ void add_paper_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--host", o->host, "Host profile (rc2000sim calibrate writes the default)")->capture_default_str();
   cmd->add_option("--variants", o->variants, "Calibrated driver-model variants (rc2000sim calibrate writes them)")
       ->check(CLI::ExistingFile)->capture_default_str();
-  cmd->add_option("--out", o->out_dir, "Output folder for paper.csv, paper.json and plots")->capture_default_str();
-  cmd->add_option("--docs", o->docs_dir, "Also write paper.md and its plots here (e.g. docs/results)");
+  cmd->add_option("--out", o->out_dir, "Output folder for paper.csv, paper.json and plots")
+      ->check(output_path())->capture_default_str();
+  cmd->add_option("--docs", o->docs_dir, "Also write paper.md and its plots here (e.g. docs/results)")
+      ->check(output_path());
   cmd->add_option("--visibility", o->visibility, "Bit-exact backend that answers visibility once per scene: fixed or fast")
       ->check(CLI::IsMember({"fixed", "fast"}))->capture_default_str();
   cmd->add_flag("--quiet", o->quiet, "No progress output");

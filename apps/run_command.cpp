@@ -327,10 +327,11 @@ void add_run_command(CLI::App& app, int& exit_code) {
                 "Board: the lanes test every ray against every face (slow) instead of copying the bit-identical "
                 "culled answer; timing and results are the same");
   cmd->add_option("--host", b.host, "Board: host CPU profile, configs/hosts/NAME.json or a path")->capture_default_str();
-  cmd->add_option("--trace", options->trace_path, "Board: write a Chrome/Perfetto trace.json of --trace-steps");
+  cmd->add_option("--trace", options->trace_path, "Board: write a Chrome/Perfetto trace.json of --trace-steps")
+      ->check(output_path());
   cmd->add_option("--trace-steps", options->trace_steps, "Board: steps to trace, FIRST:LAST")->capture_default_str();
-  cmd->add_option("--vcd", b.vcd_path, "Board: write a VCD of start/busy/done/irq");
-  cmd->add_option("--out", options->out_dir, "Output folder")->capture_default_str();
+  cmd->add_option("--vcd", b.vcd_path, "Board: write a VCD of start/busy/done/irq")->check(output_path());
+  cmd->add_option("--out", options->out_dir, "Output folder")->check(output_path())->capture_default_str();
   cmd->add_option("--image-size", options->render.width, "Image width and height in pixels")
       ->check(CLI::Range(16, 8192))->capture_default_str();
   cmd->add_flag("--quiet", options->quiet, "No progress output");

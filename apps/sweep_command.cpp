@@ -463,6 +463,7 @@ void add_merge_command(CLI::App& sweep, int& exit_code) {
                "machine writes");
   cmd->add_option("inputs", o->inputs, "Shard files (shard-I-of-N.json) or folders holding them")->required();
   cmd->add_option("--out", o->out_dir, "Output folder for sweep.csv, sweep.json, study.json and the plots")
+      ->check(output_path())
       ->capture_default_str();
   cmd->add_flag("--quiet", o->quiet, "No progress output");
   cmd->callback([o, &sweep, &exit_code] {
@@ -513,7 +514,7 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--visibility", o->visibility, "Bit-exact backend that answers visibility once per width: fixed or fast")
       ->check(CLI::IsMember({"fixed", "fast"}))->capture_default_str();
   cmd->add_option("--out", o->out_dir, "Output folder for sweep.csv, sweep.json, study.json and the plots (with "
-                                       "--shard: for the shard file)")
+                                       "--shard: for the shard file)")->check(output_path())
       ->capture_default_str();
   cmd->add_flag("--full-banks", o->full_banks,
                 "Model the profile's bank capacity even when smaller banks change nothing (more memory)");

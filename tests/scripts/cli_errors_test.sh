@@ -75,6 +75,11 @@ printf '[[scenes]]\npaper = { faces = 70, patches = 280 }\n[axes]\ndevices = ["x
 refused "$work/o" "banks.capacity_bytes=16 (study $work/capacity.toml): banks.capacity_bytes = 16 is smaller than one face record" \
   sweep --study "$work/capacity.toml" --quiet --out "$work/o"
 
+# A path that is there but is not a file; patches smaller than the splitting reaches.
+refused "$work/o" "/dev/null: not a regular file (a device profile must be one)" "${board[@]}" --device /dev/null --out "$work/o"
+refused "$work/o" "--patch-size 1e-09: face 0: patches of at most 1e-09 need more than 8 levels of splitting" \
+  run --patch-size 1e-9 --steps 3 --quiet --out "$work/o"
+
 echo "2. options that do not apply"
 for option in "--lanes 2" "--banks 6" "--concurrent" "--device xc2v6000" "--host athlon-mp-2600" "--trace $work/t.json" \
               "--vcd $work/v.vcd" "--cards 2" "--lanes-compute"; do
@@ -111,6 +116,14 @@ refused "$work/o" "$work/o/report.json: named twice among this command's outputs
 mkdir "$work/t"
 refused "$work/o" "$work/t: exists and is not a regular file; not replaced" "${board[@]}" --trace "$work/t" --out "$work/o"
 rmdir "$work/t"
+# An empty output path was joined into "/patches.csv", at the file system's root.
+for command in run accuracy sweep paper bench adaptive; do
+  refused "$work/nothing" "--out: is empty: name a folder or file to write" "$command" --quiet --out ""
+done
+refused "$work/nothing" "--variants-out: is empty" calibrate --quiet --variants-out ""
+refused "$work/nothing" "--docs: is empty" paper --quiet --docs ""
+refused "$work/o" "--trace: is empty" "${board[@]}" --trace "" --out "$work/o"
+refused "$work/o" "--vcd: is empty" "${board[@]}" --vcd "" --out "$work/o"
 
 echo "4. good paths still work and leave no temporary file"
 "$sim" run "${tiny[@]}" --out "$work/soft" > /dev/null || fail "a software run failed"

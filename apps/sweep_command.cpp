@@ -437,7 +437,10 @@ std::vector<std::string> shard_files(const std::vector<std::string>& inputs) {
     } else if (std::filesystem::is_regular_file(input)) {
       files.push_back(input);
     } else {
-      throw std::invalid_argument(input + ": no such shard file or folder");
+      std::error_code absent;
+      throw std::invalid_argument(input + (std::filesystem::exists(input, absent)
+                                               ? ": not a shard file or a folder of them (a device or a pipe)"
+                                               : ": no such shard file or folder"));
     }
   }
   return files;

@@ -1,6 +1,8 @@
 #include "studies/paper_prediction.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <utility>
 
 namespace rc {
 
@@ -101,6 +103,17 @@ std::vector<BankVariantRow> bank_variant_rows(const PaperPrediction& r) {
   return rows;
 }
 
+std::size_t largest_scene_index(const std::vector<PaperScene>& scenes) {
+  // The most work (segments x faces per step, then steps), not the last row: a table in another order
+  // or a subset of the rows would otherwise report its last scene as the largest.
+  const auto work = [](const PaperRow& row) { return std::make_pair(std::uint64_t(row.patches) * row.faces, row.steps); };
+  std::size_t largest = 0;
+  for (std::size_t i = 1; i < scenes.size(); ++i) {
+    if (work(scenes[i].row) > work(scenes[largest].row)) largest = i;
+  }
+  return largest;
+}
+
 PaperSummary summarize(const PaperPrediction& r) {
   double speedup_sum = 0, steps_per_s = 0;
   const std::size_t n = r.scenes->size();
@@ -108,7 +121,8 @@ PaperSummary summarize(const PaperPrediction& r) {
     speedup_sum += r.at(i, 0).simulated_seconds / r.at(i, 3).simulated_seconds;
     steps_per_s += (*r.scenes)[i].row.steps / r.at(i, 3).simulated_seconds;
   }
-  return {speedup_sum / n, r.at(n - 1, 0).simulated_seconds / r.at(n - 1, 3).simulated_seconds, steps_per_s / n};
+  const std::size_t largest = largest_scene_index(*r.scenes);
+  return {speedup_sum / n, r.at(largest, 0).simulated_seconds / r.at(largest, 3).simulated_seconds, steps_per_s / n};
 }
 
 PaperPrediction predict_paper(const std::vector<PaperScene>& scenes, const std::vector<PaperRow>& rows,
@@ -120,7 +134,7 @@ PaperPrediction predict_paper(const std::vector<PaperScene>& scenes, const std::
       cases.push_back(paper_timing_case(s, PaperImplementation(impl), host_name));
     }
   }
-  for (const BankVariant& v : kBankVariants) cases.push_back(bank_variant_case(scenes.back(), v, host_name));
+  for (const BankVariant& v : kBankVariants) cases.push_back(bank_variant_case(scenes[largest_scene_index(scenes)], v, host_name));
   PaperPrediction r;
   r.scenes = &scenes;
   r.spread = spread_cases(scenes, variants, host, cases);

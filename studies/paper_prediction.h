@@ -75,6 +75,10 @@ struct PaperSummary {
   double average_steps_per_second_concurrent = 0;
 };
 
+// The scene with the most work per step (patches x faces, then steps): the one the summary's
+// "largest scene" and the sec 4.1 bank variants are about, wherever it is in the table.
+std::size_t largest_scene_index(const std::vector<PaperScene>& scenes);
+
 // Rows in scene order, kPaperImplementations per scene.
 std::vector<PaperTableRow> table_rows(const PaperPrediction& prediction);
 std::vector<BankVariantRow> bank_variant_rows(const PaperPrediction& prediction);

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <exception>
+#include <initializer_list>
 #include <mutex>
 #include <numeric>
 #include <thread>
@@ -12,12 +14,74 @@
 
 #include "board/profile_reader.h"
 #include "io/input_file.h"
+#include "radiosity/radiosity.h"
 
 namespace rc {
 
 std::string PaperRow::label() const { return std::to_string(faces) + "/" + std::to_string(patches); }
 
 std::string default_paper_table_path() { return board::default_config_dir() + "/paper-table2.json"; }
+
+namespace {
+
+constexpr const char* kPaperTableSchema = "rc2000sim.paper-table2/1";
+
+// "<path>: <where>: <problem>", the one shape of every error of the table.
+[[noreturn]] void table_fail(const std::string& path, const std::string& where, const std::string& problem) {
+  throw std::runtime_error(path + ": " + where + ": " + problem);
+}
+
+void only_keys(const nlohmann::json& object, const std::string& path, const std::string& where,
+               std::initializer_list<const char*> known) {
+  for (const auto& [key, value] : object.items()) {
+    if (std::none_of(known.begin(), known.end(), [&](const char* k) { return key == k; })) {
+      std::string list;
+      for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+      table_fail(path, where + (where.empty() ? "" : ".") + key, "unknown key (known: " + list + ")");
+    }
+  }
+}
+
+// A whole count in 1..max, given as a JSON integer.
+int whole_count(const nlohmann::json& scene, const std::string& path, const std::string& where, const char* key,
+                std::int64_t max) {
+  const auto it = scene.find(key);
+  if (it == scene.end()) table_fail(path, where + "." + key, "missing");
+  if (!it->is_number_integer() || it->get<std::int64_t>() < 1 || it->get<std::int64_t>() > max) {
+    table_fail(path, where + "." + key, "must be a whole number 1.." + std::to_string(max) + ", got " + it->dump());
+  }
+  return static_cast<int>(it->get<std::int64_t>());
+}
+
+// A measured time: a positive number of seconds, at most a year.
+double measured_seconds(const nlohmann::json& scene, const std::string& path, const std::string& where, const char* key) {
+  constexpr double kYear = 365.25 * 24 * 3600;
+  const auto it = scene.find(key);
+  if (it == scene.end()) table_fail(path, where + "." + key, "missing");
+  if (!it->is_number() || !(it->get<double>() > 0 && it->get<double>() <= kYear)) {
+    table_fail(path, where + "." + key, "must be a measured time, seconds above 0 and at most a year, got " + it->dump());
+  }
+  return it->get<double>();
+}
+
+PaperRow paper_row(const nlohmann::json& scene, const std::string& path, const std::string& where) {
+  if (!scene.is_object()) table_fail(path, where, "must be an object {faces, patches, steps, software_seconds, one_pipe_seconds}");
+  only_keys(scene, path, where, {"faces", "patches", "steps", "software_seconds", "one_pipe_seconds"});
+  PaperRow row;
+  row.faces = whole_count(scene, path, where, "faces", static_cast<std::int64_t>(kMaxFaces));
+  row.patches = whole_count(scene, path, where, "patches", static_cast<std::int64_t>(kMaxPatches));
+  row.steps = whole_count(scene, path, where, "steps", SolverOptions{}.max_steps);
+  row.software_seconds = measured_seconds(scene, path, where, "software_seconds");
+  row.one_pipe_seconds = measured_seconds(scene, path, where, "one_pipe_seconds");
+  try {
+    (void)paper_scene_options(row.faces, row.patches);
+  } catch (const std::invalid_argument& e) {
+    table_fail(path, where, e.what());
+  }
+  return row;
+}
+
+}  // namespace
 
 std::vector<PaperRow> load_paper_table(const std::string& path) {
   std::string text;
@@ -26,17 +90,28 @@ std::vector<PaperRow> load_paper_table(const std::string& path) {
   } catch (const io::InputFileError& e) {
     throw std::runtime_error(e.what());
   }
-  std::vector<PaperRow> rows;
+  nlohmann::json j;
   try {
-    const nlohmann::json j = nlohmann::json::parse(text);
-    for (const auto& s : j.at("scenes")) {
-      rows.push_back({s.at("faces").get<int>(), s.at("patches").get<int>(), s.at("steps").get<int>(),
-                      s.at("software_seconds").get<double>(), s.at("one_pipe_seconds").get<double>()});
-    }
+    j = nlohmann::json::parse(text);
   } catch (const nlohmann::json::exception& e) {
-    throw std::runtime_error(path + ": " + e.what());
+    throw std::runtime_error(path + ": not valid JSON: " + e.what());
   }
-  if (rows.empty()) throw std::runtime_error(path + ": no scenes");
+  if (!j.is_object()) throw std::runtime_error(path + ": must be a JSON object with \"schema\" and \"scenes\"");
+  only_keys(j, path, "", {"schema", "description", "source", "scenes"});
+  const auto schema = j.find("schema");
+  if (schema == j.end() || *schema != kPaperTableSchema) table_fail(path, "schema", std::string("must be \"") + kPaperTableSchema + "\"");
+  const auto scenes = j.find("scenes");
+  if (scenes == j.end() || !scenes->is_array() || scenes->empty()) table_fail(path, "scenes", "must be a list of at least one scene");
+  std::vector<PaperRow> rows;
+  for (std::size_t i = 0; i < scenes->size(); ++i) {
+    const std::string where = "scenes[" + std::to_string(i) + "]";
+    rows.push_back(paper_row((*scenes)[i], path, where));
+    for (std::size_t k = 0; k + 1 < rows.size(); ++k) {
+      if (rows[k].faces == rows.back().faces && rows[k].patches == rows.back().patches) {
+        table_fail(path, where, rows.back().label() + " is already scenes[" + std::to_string(k) + "]; one row per scene");
+      }
+    }
+  }
   return rows;
 }
 

@@ -1,5 +1,6 @@
 #include "studies/calibration_variants.h"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "board/profile_reader.h"
@@ -95,6 +96,20 @@ std::vector<CalibratedVariant> load_calibrated_variants(const std::string& path)
     throw std::invalid_argument(path + ": " + e.what());
   }
   if (out.empty()) throw std::invalid_argument(path + ": no variants");
+  // The file is written by `calibrate`; an edited or mixed-up copy must still say one coherent thing.
+  std::size_t chosen = 0;
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const std::string where = path + ": variants[" + std::to_string(i) + "]";
+    if (!(std::isfinite(out[i].cv_error) && out[i].cv_error >= 0 && std::isfinite(out[i].fit_rms) && out[i].fit_rms >= 0)) {
+      throw std::invalid_argument(where + ": cross-validated and fitted errors must be finite and at least 0");
+    }
+    if (out[i].chosen && !out[i].in_spread) throw std::invalid_argument(where + ": the chosen variant must be in the spread");
+    chosen += out[i].chosen ? 1 : 0;
+  }
+  if (chosen != 1) {
+    throw std::invalid_argument(path + ": " + std::to_string(chosen) +
+                                " variants are marked \"chosen\"; exactly one must be (rerun `rc2000sim calibrate`)");
+  }
   return out;
 }
 

@@ -1,6 +1,11 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <string>
 
 #include "studies/calibration.h"
 #include "studies/calibration_variants.h"
@@ -101,6 +106,46 @@ TEST(Calibration, RejectsObservationsWithoutMeasurements) {
   CalibrationObservation o;
   o.label = "empty";
   EXPECT_THROW(fit_calibration({o}), std::invalid_argument);
+}
+
+// The variants file `paper --variants` reads: the shipped one loads with one chosen variant in the
+// spread; an edited copy with no chosen variant, two, or a chosen one outside the spread is refused.
+TEST(Calibration, VariantsFileMustChooseExactlyOneVariantInTheSpread) {
+  const std::string shipped = default_variants_path();
+  const std::vector<CalibratedVariant> variants = load_calibrated_variants(shipped);
+  EXPECT_EQ(std::count_if(variants.begin(), variants.end(), [](const CalibratedVariant& v) { return v.chosen; }), 1);
+  std::ifstream in(shipped);
+  const nlohmann::ordered_json original = nlohmann::ordered_json::parse(in);
+  const std::string path = ::testing::TempDir() + "variants.json";
+  auto error_with = [&](const std::function<void(nlohmann::ordered_json&)>& change) {
+    nlohmann::ordered_json j = original;
+    change(j);
+    std::ofstream(path) << j.dump();
+    try {
+      (void)load_calibrated_variants(path);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what()).substr(path.size());
+    }
+    return std::string("(no error)");
+  };
+  EXPECT_EQ(error_with([](nlohmann::ordered_json&) {}), "(no error)");
+  EXPECT_EQ(error_with([](nlohmann::ordered_json& j) {
+              for (auto& v : j["variants"]) v["chosen"] = false;
+            }),
+            ": 0 variants are marked \"chosen\"; exactly one must be (rerun `rc2000sim calibrate`)");
+  EXPECT_EQ(error_with([](nlohmann::ordered_json& j) {
+              for (auto& v : j["variants"]) v["chosen"] = v["in_spread"] = true;
+            }),
+            ": " + std::to_string(original["variants"].size()) +
+                " variants are marked \"chosen\"; exactly one must be (rerun `rc2000sim calibrate`)");
+  EXPECT_NE(error_with([](nlohmann::ordered_json& j) {
+              for (auto& v : j["variants"]) v["in_spread"] = false;
+            }).find("]: the chosen variant must be in the spread"),
+            std::string::npos);
+  EXPECT_NE(error_with([](nlohmann::ordered_json& j) { j["variants"][0]["cv_mean_absolute_relative_error"] = -3; })
+                .find(": variants[0]: cross-validated and fitted errors must be finite and at least 0"),
+            std::string::npos);
+  std::remove(path.c_str());
 }
 
 }  // namespace

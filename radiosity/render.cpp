@@ -78,13 +78,27 @@ double edge(const ScreenVertex& a, const ScreenVertex& b, double px, double py) 
   return (b.x - a.x) * (py - a.y) - (b.y - a.y) * (px - a.x);
 }
 
-void rasterise(const ScreenVertex (&v)[3], HdrImage& img, std::vector<double>& depth) {
+// floor/ceil of a pixel coordinate clamped to [lo, hi] before it becomes an int: a corner just in
+// front of the eye projects far outside the picture, beyond what an int holds.
+int clamped_floor(double v, int lo, int hi) { return int(std::clamp(std::floor(v), double(lo), double(hi))); }
+int clamped_ceil(double v, int lo, int hi) { return int(std::clamp(std::ceil(v), double(lo), double(hi))); }
+
+struct ScreenTriangle {
+  ScreenVertex v[3];
+  int y0, y1;  // the supersampled rows its bounding box covers (before clipping to a band)
+};
+
+// A band of supersampled rows [first_row, first_row + img.height) of the whole picture: every pixel
+// gets what it would get in a picture drawn whole (the same sample point, the same triangles in the
+// same order).
+void rasterise(const ScreenTriangle& t, int first_row, HdrImage& img, std::vector<double>& depth) {
+  const ScreenVertex (&v)[3] = t.v;
   const double area = edge(v[0], v[1], v[2].x, v[2].y);
   if (area == 0) return;
-  const int x0 = std::max(0, int(std::floor(std::min({v[0].x, v[1].x, v[2].x}))));
-  const int x1 = std::min(img.width - 1, int(std::ceil(std::max({v[0].x, v[1].x, v[2].x}))));
-  const int y0 = std::max(0, int(std::floor(std::min({v[0].y, v[1].y, v[2].y}))));
-  const int y1 = std::min(img.height - 1, int(std::ceil(std::max({v[0].y, v[1].y, v[2].y}))));
+  const int x0 = clamped_floor(std::min({v[0].x, v[1].x, v[2].x}), 0, img.width);
+  const int x1 = clamped_ceil(std::max({v[0].x, v[1].x, v[2].x}), -1, img.width - 1);
+  const int y0 = std::max(first_row, t.y0);
+  const int y1 = std::min(first_row + img.height - 1, t.y1);
   for (int y = y0; y <= y1; ++y) {
     for (int x = x0; x <= x1; ++x) {
       const double px = x + 0.5, py = y + 0.5;
@@ -93,7 +107,7 @@ void rasterise(const ScreenVertex (&v)[3], HdrImage& img, std::vector<double>& d
       const double w2 = 1.0 - w0 - w1;
       if (w0 < 0 || w1 < 0 || w2 < 0) continue;
       const double inv_z = w0 * v[0].inv_z + w1 * v[1].inv_z + w2 * v[2].inv_z;
-      const std::size_t i = std::size_t(y) * img.width + x;
+      const std::size_t i = std::size_t(y - first_row) * img.width + x;
       if (inv_z <= depth[i]) continue;  // something nearer is already there
       depth[i] = inv_z;
       const Spectrum sum = v[0].value * (w0 * v[0].inv_z) + v[1].value * (w1 * v[1].inv_z) +
@@ -104,11 +118,9 @@ void rasterise(const ScreenVertex (&v)[3], HdrImage& img, std::vector<double>& d
   }
 }
 
-HdrImage downsample(const HdrImage& big, int factor) {
-  HdrImage out{big.width / factor, big.height / factor, {}, {}};
-  out.pixels.assign(std::size_t(out.width) * out.height, Spectrum{});
-  out.covered.assign(out.pixels.size(), false);
-  for (int y = 0; y < out.height; ++y) {
+// Averages `big` (a band of supersampled rows) into `out` from row `first_out_row` on.
+void downsample_into(const HdrImage& big, int factor, int first_out_row, HdrImage& out) {
+  for (int y = 0; y < big.height / factor; ++y) {
     for (int x = 0; x < out.width; ++x) {
       Spectrum sum;
       bool any = false;
@@ -119,11 +131,10 @@ HdrImage downsample(const HdrImage& big, int factor) {
           any = any || big.covered[i];
         }
       }
-      out.pixels[std::size_t(y) * out.width + x] = sum * (1.0 / (factor * factor));
-      out.covered[std::size_t(y) * out.width + x] = any;
+      out.pixels[std::size_t(first_out_row + y) * out.width + x] = sum * (1.0 / (factor * factor));
+      out.covered[std::size_t(first_out_row + y) * out.width + x] = any;
     }
   }
-  return out;
 }
 
 double luminance(const Spectrum& s) {
@@ -151,23 +162,43 @@ HdrImage render_radiosity(const Scene& scene, const std::vector<Spectrum>& radio
       if (!std::isfinite(b)) throw std::invalid_argument("the radiosity of patch " + std::to_string(i) + " is not finite");
     }
   }
-  const int w = options.width * options.supersample, h = options.height * options.supersample;
-  HdrImage big{w, h, std::vector<Spectrum>(std::size_t(w) * h), std::vector<bool>(std::size_t(w) * h, false)};
-  std::vector<double> depth(big.pixels.size(), 0.0);
+  const int ss = options.supersample;
+  const int w = options.width * ss, h = options.height * ss;
   const CornerValues corners(scene, radiosity);
   const Projector projector(scene.camera, w, h);
+  std::vector<ScreenTriangle> triangles;
+  triangles.reserve(scene.patches.size());
   for (const Patch& p : scene.patches) {
     const int surface = scene.faces[p.face].surface;
-    ScreenVertex v[3];
+    ScreenTriangle t;
     const Vec3 corner[3] = {p.tri.v0, p.tri.v1, p.tri.v2};
     bool visible = true;
     for (int k = 0; k < 3 && visible; ++k) {
-      visible = projector.project(corner[k], v[k]);
-      v[k].value = corners.at(surface, corner[k]);
+      visible = projector.project(corner[k], t.v[k]);
+      t.v[k].value = corners.at(surface, corner[k]);
     }
-    if (visible) rasterise(v, big, depth);  // the scene lies in front of the camera; no clipping
+    if (!visible) continue;  // the scene lies in front of the camera; no clipping
+    t.y0 = clamped_floor(std::min({t.v[0].y, t.v[1].y, t.v[2].y}), 0, h);
+    t.y1 = clamped_ceil(std::max({t.v[0].y, t.v[1].y, t.v[2].y}), -1, h - 1);
+    if (t.y0 <= t.y1) triangles.push_back(t);
   }
-  return downsample(big, options.supersample);
+  // The supersampled picture is drawn in bands of whole output rows, each at most band_bytes (an
+  // 8192-pixel picture drawn whole took 10 GB), and averaged into the output as each is done.
+  const std::size_t sample_bytes = sizeof(Spectrum) + sizeof(double) + 1;  // value, depth, covered
+  const std::size_t row_bytes = std::size_t(w) * ss * sample_bytes;        // one output row's samples
+  const int band_rows = int(std::clamp<std::size_t>(options.band_bytes / row_bytes, 1, std::size_t(options.height)));
+  HdrImage out{options.width, options.height, std::vector<Spectrum>(std::size_t(options.width) * options.height),
+               std::vector<bool>(std::size_t(options.width) * options.height, false)};
+  for (int first = 0; first < options.height; first += band_rows) {
+    const int rows = std::min(band_rows, options.height - first) * ss;
+    HdrImage band{w, rows, std::vector<Spectrum>(std::size_t(w) * rows), std::vector<bool>(std::size_t(w) * rows, false)};
+    std::vector<double> depth(band.pixels.size(), 0.0);
+    for (const ScreenTriangle& t : triangles) {
+      if (t.y1 >= first * ss && t.y0 < first * ss + rows) rasterise(t, first * ss, band, depth);
+    }
+    downsample_into(band, ss, first, out);
+  }
+  return out;
 }
 
 // Photographic tone mapping (Reinhard et al. 2002, global operator): scale so the log-average

@@ -2,6 +2,7 @@
 // between patch values, then tone-mapped to 8-bit sRGB.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include "radiosity/png_writer.h"
@@ -14,6 +15,9 @@ struct RenderOptions {
   int height = 512;
   int supersample = 2;       // samples per pixel along each axis
   double key = 0.18;         // mid-grey the log-average luminance maps to
+  // The supersampled picture is drawn in bands of at most this many bytes of samples (whole output
+  // rows; at least one row); the picture does not depend on it.
+  std::size_t band_bytes = std::size_t{64} << 20;
 };
 
 // Linear radiosity per pixel (before tone mapping); `covered` marks pixels that hit a surface.

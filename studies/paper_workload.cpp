@@ -33,7 +33,8 @@ constexpr const char* kPaperTableSchema = "rc2000sim.paper-table2/1";
 
 void only_keys(const nlohmann::json& object, const std::string& path, const std::string& where,
                std::initializer_list<const char*> known) {
-  for (const auto& [key, value] : object.items()) {
+  for (auto item = object.begin(); item != object.end(); ++item) {
+    const std::string key = item.key();  // a named copy: a structured binding cannot be captured in C++17
     if (std::none_of(known.begin(), known.end(), [&](const char* k) { return key == k; })) {
       std::string list;
       for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);

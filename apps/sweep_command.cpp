@@ -529,6 +529,9 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
   cmd->require_subcommand(0, 1);
   cmd->callback([o, cmd, &exit_code] {
     if (cmd->got_subcommand("merge")) return;  // merge ran its own callback
+    // Empty, they would mean "no study" and "no shard": the whole default sweep, silently.
+    if (given(*cmd, "--study") && o->study_file.empty()) refuse_option("--study", "is empty: name a study file (docs/studies.md)");
+    if (given(*cmd, "--shard") && o->shard.empty()) refuse_option("--shard", "is empty: expected I/N (shard I of N, counted from 0)");
     if (o->list_fields)
       refuse_given(*cmd, {"--out", "--shard"}, "does not apply with --list-fields (it lists the fields and writes nothing)");
     auto run = [&](const Study& study) {

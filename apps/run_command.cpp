@@ -2,6 +2,8 @@
 
 #include <array>
 #include <optional>
+#include <string>
+#include <vector>
 #include <cstdio>
 #include <stdexcept>
 
@@ -12,6 +14,7 @@
 #include "io/parse_number.h"
 #include "radiosity/png_writer.h"
 #include "pipeline/float_format.h"
+#include "radiosity/fixed_visibility.h"
 #include "radiosity/visibility_factory.h"
 
 namespace rc {
@@ -33,6 +36,24 @@ bool float_arith(const RunOptions& o) { return pipeline::names_float_format(o.ar
 // Whether the run's visibility has a fractional width (--bits): the board's fixed lanes and the
 // bit-exact software backends do; float formats and double precision do not.
 bool uses_fixed_width(const RunOptions& o) { return !float_arith(o) && (o.impl == "board" || o.visibility != "float"); }
+
+std::string surface_name(const Scene& scene, const Face& face) {
+  const auto index = static_cast<std::size_t>(face.surface);
+  return index < scene.surface_names.size() ? scene.surface_names[index] : std::to_string(face.surface);
+}
+
+// A warning when faces have no area on the width's grid (a silent wrong answer otherwise: they
+// block nothing); nothing for a scene whose faces all survive quantisation.
+std::optional<std::string> faces_lost_at_width(const Scene& scene, int bits) {
+  const std::vector<std::size_t> lost = faces_without_area(scene.faces, bits);
+  if (lost.empty()) return std::nullopt;
+  const Face& first = scene.faces[lost.front()];
+  return "at " + std::to_string(bits) + " fractional bits " + std::to_string(lost.size()) + " of " +
+         std::to_string(scene.faces.size()) + " faces (the first: face " + std::to_string(lost.front()) + " of surface '" +
+         surface_name(scene, first) + "') have no area on the 2^-" + std::to_string(bits) +
+         " grid of the normalised scene, so the fixed-point visibility never finds them blocking and their "
+         "shadows are missing; raise --bits, or bring the scene's parts closer together";
+}
 
 RunOutcome run_software(const RunOptions& o, const Scene& scene, ProgressLine& progress) {
   // A float pipeline (--arith float:E,M) answers as the backend of that name (pipeline/float_mt.h).
@@ -268,7 +289,10 @@ int run_simulation(const RunOptions& o) {
   // The profiles and the board they make (lanes, banks, layout), before the scene is prepared.
   if (o.impl == "board") (void)make_board_setup(board_options(o));
   ProgressLine progress(!o.quiet);
-  const PreparedScene prepared = prepare_scene(o.scene, [&](const std::string& what) { progress.update("%-60s", what.c_str()); });
+  PreparedScene prepared = prepare_scene(o.scene, [&](const std::string& what) { progress.update("%-60s", what.c_str()); });
+  if (uses_fixed_width(o)) {
+    if (std::optional<std::string> lost = faces_lost_at_width(prepared.scene, o.bits)) prepared.warnings.push_back(*lost);
+  }
   for (const std::string& w : prepared.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   const Scene& scene = prepared.scene;
 

@@ -114,6 +114,16 @@ FaceRecord make_face_record(const Triangle& triangle, FracBits bits) {
   return {v0, quantize_point(triangle.v1, bits) - v0, quantize_point(triangle.v2, bits) - v0};
 }
 
+bool has_no_area(const FaceRecord& face) {
+  // Edges are 1.N differences, below 2^32 in magnitude: each product fits 64 bits, each difference
+  // of two products needs 65, so the cross product is taken in 128 bits.
+  using Wide = __int128;
+  const FixedVec3& a = face.edge1;
+  const FixedVec3& b = face.edge2;
+  return Wide(a.y) * b.z - Wide(a.z) * b.y == 0 && Wide(a.z) * b.x - Wide(a.x) * b.z == 0 &&
+         Wide(a.x) * b.y - Wide(a.y) * b.x == 0;
+}
+
 bool is_position(const FixedVec3& p, FracBits bits) { return in_range(p, Quantity::Position, bits); }
 
 bool is_face_record(const FaceRecord& face, FracBits bits) {

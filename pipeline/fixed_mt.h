@@ -26,6 +26,10 @@ FixedVec3 quantize_point(const Vec3& p, FracBits bits);
 // Quantises the three vertices and takes exact differences, so both edges fit signed 1.N.
 FaceRecord make_face_record(const Triangle& triangle, FracBits bits);
 
+// True when the quantised face has no area (its edges are zero or parallel on the 2^-bits grid):
+// the test's determinant is then 0 for every segment, so the face can block nothing.
+bool has_no_area(const FaceRecord& face);
+
 // True if the values are what the hardware can be fed at `bits` (see the header comment).
 bool is_position(const FixedVec3& p, FracBits bits);
 bool is_face_record(const FaceRecord& face, FracBits bits);

@@ -5,6 +5,14 @@
 
 namespace rc {
 
+std::vector<std::size_t> faces_without_area(const std::vector<Face>& faces, pipeline::FracBits bits) {
+  std::vector<std::size_t> out;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    if (pipeline::has_no_area(pipeline::make_face_record(faces[f].tri, bits))) out.push_back(f);
+  }
+  return out;
+}
+
 FixedPointVisibility::FixedPointVisibility(pipeline::FracBits frac_bits) : bits_(frac_bits) {}
 
 void FixedPointVisibility::load_faces(const std::vector<Triangle>& faces) {

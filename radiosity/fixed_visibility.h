@@ -4,14 +4,22 @@
 // Answers exactly what the board's pipelines answer at the same width.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
 #include "radiosity/end_face_groups.h"
 #include "radiosity/visibility.h"
 #include "pipeline/fixed_mt.h"
+#include "scenes/scene.h"
 
 namespace rc {
+
+// The indices of the faces that have no area once quantised at `bits` (pipeline::has_no_area):
+// the bit-exact backends and the board never find them blocking, so the shadows they cast are
+// missing. Empty for any reasonable scene at 15 bits; a scene whose parts are far smaller than the
+// whole (a room beside a mesh placed far away) loses them.
+std::vector<std::size_t> faces_without_area(const std::vector<Face>& faces, pipeline::FracBits bits);
 
 class FixedPointVisibility : public VisibilityBackend {
  public:

@@ -96,5 +96,26 @@ TEST(PipelineFormat, RecognisesOutOfFormatInputs) {
   EXPECT_TRUE(is_face_record({{100, 0, 0}, {-100, 0, 0}, {27, 127, 127}}, bits));
 }
 
+// A face smaller than the grid, or one whose corners round onto a line, has no area at that
+// width, and then no segment can hit it: the case the run warns about.
+TEST(PipelineFormat, AFaceWithoutAreaOnTheGridIsFound) {
+  const Triangle unit{{0.1, 0.1, 0.5}, {0.6, 0.1, 0.5}, {0.1, 0.6, 0.5}};
+  EXPECT_FALSE(has_no_area(make_face_record(unit, 7)));
+  // 1e-3 across: three distinct points at 15 bits (2^-15 = 3.1e-5), one point at 7 bits (0.0078).
+  const Triangle tiny{{0.5, 0.5, 0.5}, {0.501, 0.5, 0.5}, {0.5, 0.501, 0.5}};
+  EXPECT_TRUE(has_no_area(make_face_record(tiny, 7)));
+  EXPECT_FALSE(has_no_area(make_face_record(tiny, 15)));
+  // A sliver whose third corner rounds onto the line of the other two.
+  const Triangle sliver{{0.25, 0.25, 0.25}, {0.75, 0.25, 0.25}, {0.5, 0.25 + 1e-4, 0.25}};
+  EXPECT_TRUE(has_no_area(make_face_record(sliver, 7)));
+  EXPECT_FALSE(has_no_area(make_face_record(sliver, 31)));
+  const FixedVec3 p{0, 0, 0}, q{100, 100, 100};
+  EXPECT_EQ(segment_hits(make_face_record(tiny, 7), p, q, 7), 0);
+  // The largest edges the format has: the cross product needs more than 64 bits.
+  const std::int64_t big = (std::int64_t{1} << 31) - 1;
+  EXPECT_FALSE(has_no_area(FaceRecord{{0, 0, 0}, {big, 0, 0}, {0, big, 0}}));
+  EXPECT_TRUE(has_no_area(FaceRecord{{0, 0, 0}, {big, big, 0}, {-big, -big, 0}}));
+}
+
 }  // namespace
 }  // namespace rc::pipeline

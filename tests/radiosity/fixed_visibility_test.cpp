@@ -6,6 +6,8 @@
 #include <stdexcept>
 
 #include "radiosity/fixed_visibility.h"
+#include "scenes/cornell_box.h"
+#include "scenes/normalise.h"
 #include "pipeline/fixed_mt.h"
 #include "tests/radiosity/random_batch.h"
 
@@ -107,6 +109,23 @@ TEST(PipelineFixedVisibility, ValidatesWidthAndBatch) {
   v.submit(batch);  // an empty batch is fine
   v.collect(blocked);
   EXPECT_TRUE(blocked.empty());
+}
+
+// The Cornell box keeps every face at every width; a room beside a mesh ten million times
+// farther away than the room is wide loses the room's faces (they block nothing).
+TEST(FacesWithoutArea, NoneInTheCornellBoxAtAnyWidthButAFarMeshTakesTheRoom) {
+  Scene box = cornell_box();
+  normalise(box);
+  for (int bits : {7, 15, 31}) EXPECT_TRUE(faces_without_area(box.faces, bits).empty()) << bits;
+  Scene far = cornell_box();
+  Face distant = far.faces.front();
+  for (Vec3* v : {&distant.tri.v0, &distant.tri.v1, &distant.tri.v2}) *v = *v + Vec3(1e7, 0, 0);
+  far.faces.push_back(distant);
+  normalise(far);
+  const std::vector<std::size_t> lost = faces_without_area(far.faces, 15);
+  EXPECT_FALSE(lost.empty());                  // the blocks' small faces, 300 units per grid step
+  EXPECT_LT(lost.size(), far.faces.size());     // the walls, 556 units across, keep some area
+  EXPECT_TRUE(faces_without_area(far.faces, 31).empty());  // 2^-31 of 1e7 is 0.005 units: the room survives
 }
 
 }  // namespace

@@ -141,4 +141,15 @@ python3 -c "import json, sys; r = json.load(open(sys.argv[1])); sys.exit(r['sett
 "$sim" sweep --devices xc2v6000 --faces 0 --face-levels 0 --patch-levels 0 --steps 3 --lanes 1-2 --banks 6 --quiet \
   --out "$work/sweep" > /dev/null || fail "a sweep failed"
 [ -s "$work/sweep/sweep.csv" ] && [ -s "$work/sweep/study.json" ] || fail "the sweep wrote no sweep.csv or study.json"
+# A room beside a mesh ten million units away: at 15 bits the room's faces have no area on the grid
+# and would block nothing, silently; the run warns on stderr and in report.json.
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n' > "$work/tetra.obj"
+printf '{"schema": "rc2000sim.composition/1", "room": "cornell-box", "meshes": [{"file": "tetra.obj", "translate": [1e7, 0, 0]}]}' \
+  > "$work/far.json"
+"$sim" run --scene "$work/far.json" --visibility fixed --steps 1 --image-size 16 --quiet --out "$work/far" \
+  2> "$work/stderr.txt" > /dev/null || fail "the far-mesh run failed"
+grep -q "faces (the first: face .*) have no area on the 2^-15 grid" "$work/stderr.txt" || fail "no warning of faces lost at 15 bits"
+grep -q "have no area on the 2^-15 grid" "$work/far/report.json" || fail "report.json does not carry the warning"
+"$sim" run --scene "$work/far.json" --steps 1 --image-size 16 --quiet --out "$work/far-float" 2> "$work/stderr.txt" > /dev/null
+! grep -q "have no area" "$work/stderr.txt" || fail "a double-precision run warns of a fixed-point grid"
 echo "PASS: $cases refusals, each with its message and nothing written; the good paths write their files"

@@ -79,6 +79,19 @@ void normalise(Scene& scene) {
   for (Face& f : scene.faces) {
     for (Vec3* v : {&f.tri.v0, &f.tri.v1, &f.tri.v2}) *v = normalise_point(*v, lo, extent);
   }
+  // The loaders drop faces without area; a face that has none now was lost to the doubles
+  // themselves (a room beside a mesh 1e300 away), and would emit or block nothing.
+  std::size_t lost = 0, first = 0;
+  for (std::size_t i = 0; i < scene.faces.size(); ++i) {
+    if (scene.faces[i].tri.area() > 0) continue;
+    if (lost++ == 0) first = i;
+  }
+  if (lost > 0) {
+    throw std::invalid_argument("scene '" + scene.name + "': " + std::to_string(lost) + " of " +
+                                std::to_string(scene.faces.size()) + " faces (the first: face " + std::to_string(first) +
+                                ") have no area once the scene is scaled into the unit cube: its parts differ in size "
+                                "by more than double precision holds; bring them closer together");
+  }
   for (Patch& p : scene.patches) {
     transform(p.tri, step);
     p.centre = p.tri.centroid();

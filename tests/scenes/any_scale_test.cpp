@@ -150,5 +150,22 @@ TEST(AnyScaleText, NormaliseRefusesFacesThatAreNotFinite) {
   }
 }
 
+// Parts whose sizes differ by more than doubles hold: the room's faces have no area once the scene
+// is scaled to the unit cube. It used to end in "scene emits no light" (the lamp had vanished).
+TEST(AnyScaleText, PartsTooFarApartForTheDoublesAreNamed) {
+  Scene s;
+  s.name = "far";
+  s.faces.push_back({{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}});
+  s.faces.push_back({{{1e300, 0, 0}, {2e300, 0, 0}, {1e300, 1e300, 0}}});
+  try {
+    normalise(s);
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "scene 'far': 1 of 2 faces (the first: face 0) have no area once the scene is scaled into "
+                           "the unit cube: its parts differ in size by more than double precision holds; bring them "
+                           "closer together");
+  }
+}
+
 }  // namespace
 }  // namespace rc

@@ -92,6 +92,7 @@ LoadedScene load_room(const Description& d) {
   d.only_keys(room, "room", {"file"});
   if (!room.contains("file")) d.fail("room.file", "missing");
   const std::string file = d.file(room["file"], "room.file");
+  if (is_composition_file(file)) d.fail("room.file", file + " is a composition; compositions do not nest (name its room or meshes here)");
   if (is_text_scene_file(file)) return load_scene_file(file);
   MeshImportOptions o;
   o.require_emitter = false;  // the description may add the light
@@ -235,7 +236,11 @@ LoadedScene load_composition(const std::string& path) {
     if (!m.contains("file")) d.fail(key + ".file", "missing");
     MeshImportOptions o;
     o.require_emitter = false;
-    LoadedScene mesh = import_mesh_file(d.file(m["file"], key + ".file"), o);
+    const std::string file = d.file(m["file"], key + ".file");
+    // Assimp would say only "No suitable reader found" for our own formats.
+    if (is_composition_file(file)) d.fail(key + ".file", file + " is a composition; compositions do not nest (name its meshes here)");
+    if (is_text_scene_file(file)) d.fail(key + ".file", file + " is a text scene; a mesh must be a mesh file (OBJ, PLY, OFF, STL, ...), or use it as the room");
+    LoadedScene mesh = import_mesh_file(file, o);
     mesh.scene.faces = place(d, m, key, std::move(mesh.scene.faces));
     Material override_material;
     const bool overridden = m.contains("material");

@@ -127,6 +127,23 @@ TEST_F(CompositionTest, ErrorsNameTheFileAndTheKey) {
   EXPECT_FALSE(is_composition_file(write("number.json", R"({"schema": 1})")));
 }
 
+// Our own formats named where a mesh is expected: said so, not Assimp's "No suitable reader found".
+TEST_F(CompositionTest, CompositionsDoNotNestAndTextScenesAreNotMeshes) {
+  const std::string inner = write("inner.json", R"({"schema": "rc2000sim.composition/1", "room": "cornell-box"})");
+  write("lamp.scene", "material l reflectance 0.5 0.5 0.5 emission 1 1 1\ntri t l 0 0 0 1 0 0 0 1 0\n");
+  const std::string bad = (dir_ / "bad.json").string();
+  EXPECT_EQ(error_of(R"({"schema": "rc2000sim.composition/1", "meshes": [{"file": "inner.json"}]})"),
+            bad + ": meshes[0].file: " + inner + " is a composition; compositions do not nest (name its meshes here)");
+  EXPECT_EQ(error_of(R"({"schema": "rc2000sim.composition/1", "room": {"file": "inner.json"}})"),
+            bad + ": room.file: " + inner + " is a composition; compositions do not nest (name its room or meshes here)");
+  EXPECT_EQ(error_of(R"({"schema": "rc2000sim.composition/1", "meshes": [{"file": "lamp.scene"}]})"),
+            bad + ": meshes[0].file: " + (dir_ / "lamp.scene").string() +
+                " is a text scene; a mesh must be a mesh file (OBJ, PLY, OFF, STL, ...), or use it as the room");
+  EXPECT_EQ(load_composition(write("room.json", R"({"schema": "rc2000sim.composition/1", "room": {"file": "lamp.scene"}})"))
+                .scene.faces.size(),
+            1u);
+}
+
 // Editors that save with a UTF-8 byte order mark: the file is still recognised and read.
 TEST_F(CompositionTest, AByteOrderMarkIsSkipped) {
   const std::string path = write("bom.json", std::string("\xEF\xBB\xBF") +

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <string>
+#include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
@@ -200,16 +202,14 @@ bool has_schema(const nlohmann::json& object) {
 
 bool is_composition_file(const std::string& path) {
   // Only a file whose first non-space character (within kSniffBytes) is '{' is read whole.
+  // A leading byte order mark is skipped, as is_text_scene_file and nlohmann::json skip it.
   std::ifstream in(path, std::ios::binary);
-  char c = 0;
-  char bom[sizeof io::kUtf8ByteOrderMark - 1] = {};  // nlohmann::json skips a byte order mark too
-  if (!in.read(bom, sizeof bom) || std::string(bom, sizeof bom) != io::kUtf8ByteOrderMark) {
-    in.clear();
-    in.seekg(0);
-  }
-  for (std::size_t read = 0; read < kSniffBytes && in.get(c) && std::isspace(static_cast<unsigned char>(c)); ++read) {
-  }
-  if (c != '{') return false;
+  std::string head(kSniffBytes, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  head = io::without_byte_order_mark(std::move(head));
+  const std::size_t first = head.find_first_not_of(" \t\n\v\f\r");  // std::isspace in the C locale
+  if (first == std::string::npos || head[first] != '{') return false;
   const nlohmann::json j = nlohmann::json::parse(read_description(path), nullptr, false);
   return j.is_object() && has_schema(j);
 }

@@ -37,20 +37,16 @@ bool float_arith(const RunOptions& o) { return pipeline::names_float_format(o.ar
 // bit-exact software backends do; float formats and double precision do not.
 bool uses_fixed_width(const RunOptions& o) { return !float_arith(o) && (o.impl == "board" || o.visibility != "float"); }
 
-std::string surface_name(const Scene& scene, const Face& face) {
-  const auto index = static_cast<std::size_t>(face.surface);
-  return index < scene.surface_names.size() ? scene.surface_names[index] : std::to_string(face.surface);
-}
-
 // A warning when faces have no area on the width's grid (a silent wrong answer otherwise: they
 // block nothing); nothing for a scene whose faces all survive quantisation.
 std::optional<std::string> faces_lost_at_width(const Scene& scene, int bits) {
   const std::vector<std::size_t> lost = faces_without_area(scene.faces, bits);
   if (lost.empty()) return std::nullopt;
-  const Face& first = scene.faces[lost.front()];
+  const int surface = scene.faces[lost.front()].surface;
+  const std::string surface_name = scene.surface_name(surface);
   return "at " + std::to_string(bits) + " fractional bits " + std::to_string(lost.size()) + " of " +
          std::to_string(scene.faces.size()) + " faces (the first: face " + std::to_string(lost.front()) + " of surface '" +
-         surface_name(scene, first) + "') have no area on the 2^-" + std::to_string(bits) +
+         (surface_name.empty() ? std::to_string(surface) : surface_name) + "') have no area on the 2^-" + std::to_string(bits) +
          " grid of the normalised scene, so the fixed-point visibility never finds them blocking and their "
          "shadows are missing; raise --bits, or bring the scene's parts closer together";
 }

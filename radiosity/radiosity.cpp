@@ -187,8 +187,8 @@ std::string ProgressiveRadiosity::patch_name(int patch) const {
   const int face = scene_.patches[patch].face;
   const int surface = scene_.faces[face].surface;
   std::string name = "patch " + std::to_string(patch) + " (face " + std::to_string(face);
-  if (surface >= 0 && surface < static_cast<int>(scene_.surface_names.size())) {
-    name += ", surface '" + scene_.surface_names[surface] + "'";
+  if (const std::string surface_name = scene_.surface_name(surface); !surface_name.empty()) {
+    name += ", surface '" + surface_name + "'";
   }
   return name + ")";
 }

@@ -57,6 +57,8 @@ struct Scene {
 
   const Material& material_of(const Patch& p) const { return materials[faces[p.face].material]; }
   std::vector<Triangle> face_triangles() const;
+  // The name of surface `surface`, or "" when the scene has none for it (scenes made by hand in tests).
+  std::string surface_name(int surface) const;
   bool emits_light() const;  // some face's material emits
 };
 

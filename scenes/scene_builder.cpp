@@ -116,6 +116,10 @@ bool Scene::emits_light() const {
   return std::any_of(faces.begin(), faces.end(), [&](const Face& f) { return materials[f.material].emits(); });
 }
 
+std::string Scene::surface_name(int surface) const {
+  return surface >= 0 && surface < static_cast<int>(surface_names.size()) ? surface_names[surface] : std::string();
+}
+
 std::vector<Triangle> Scene::face_triangles() const {
   std::vector<Triangle> out;
   out.reserve(faces.size());

@@ -8,6 +8,7 @@
 
 #include "scenes/camera.h"
 #include "scenes/geometry.h"
+#include "scenes/sheets.h"
 #include "scenes/spectrum.h"
 
 namespace rc {
@@ -54,6 +55,9 @@ struct Scene {
   std::vector<Patch> patches;
   Camera camera;
   Normalisation normalisation;  // identity until normalise() runs
+  // Faces back to back that form one two-sided surface (scenes/sheets.h); set by find_sheets after
+  // normalisation. Default: every face its own sheet.
+  FaceSheets sheets;
 
   const Material& material_of(const Patch& p) const { return materials[faces[p.face].material]; }
   std::vector<Triangle> face_triangles() const;

@@ -1,0 +1,46 @@
+// Sheets: which faces form one surface for the visibility rule and the solver (docs/scenes.md,
+// "Two-sided surfaces"). A surface lit from both sides is written as faces back to back: coplanar,
+// facing opposite ways, overlapping. Its faces are one sheet. A segment that ends on a sheet is never
+// blocked by a face of that sheet (the end point lies inside each of them, where only rounding could
+// decide), and patches of one sheet never exchange energy. A one-sided face is a sheet of its own,
+// so one-sided scenes (the paper's Cornell Box) keep the paper's own-face rule exactly.
+//
+// The faces of a sheet are contiguous (find_sheets orders them so), and a sheet is named by its
+// first face: the sheet of face f is the face range [first(f), end(f)). That is what lets the
+// board's wrapper mask a sheet's rays as one contiguous range (docs/board.md, "Own-surface table").
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace rc {
+
+class FaceSheets {
+ public:
+  // Every face a sheet of its own (also for any face count).
+  FaceSheets() = default;
+  // first_of_face[f]: the first face of f's sheet. Throws std::invalid_argument unless every sheet is
+  // a contiguous run of faces named by its first face.
+  explicit FaceSheets(std::vector<int> first_of_face);
+
+  // True when every face is its own sheet.
+  bool one_sided() const { return first_.empty(); }
+  int first(int face) const { return first_.empty() ? face : first_[face]; }
+  // One past the last face of face's sheet.
+  int end(int face) const { return first_.empty() ? face + 1 : end_[face]; }
+  int size_of(int face) const { return end(face) - first(face); }
+  bool same(int a, int b) const { return first(a) == first(b); }
+  // Faces in sheets of more than one face.
+  std::size_t faces_in_shared_sheets() const;
+  // Sheets of more than one face.
+  std::size_t shared_sheets() const;
+  const std::vector<int>& first_of_face() const { return first_; }
+
+  friend bool operator==(const FaceSheets& a, const FaceSheets& b) { return a.first_ == b.first_; }
+
+ private:
+  std::vector<int> first_;  // empty: one-sided
+  std::vector<int> end_;
+};
+
+}  // namespace rc

@@ -42,9 +42,9 @@ class Recorder : public rc::VisibilityBackend {
  public:
   Recorder(rc::VisibilityBackend& inner, Workload& out) : inner_(inner), out_(out) {}
   std::string name() const override { return "recorder"; }
-  void load_faces(const std::vector<rc::Triangle>& faces) override {
+  void load_triangles(const std::vector<rc::Triangle>& faces) override {
     out_.faces = faces;
-    inner_.load_faces(faces);
+    inner_.load_faces(faces, sheets());
   }
   void submit(const rc::SegmentBatch& batch) override {
     out_.batches.push_back(batch);

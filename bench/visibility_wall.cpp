@@ -43,7 +43,7 @@ constexpr PaperScene kPaperScenes[] = {
 class NoVisibility : public rc::VisibilityBackend {
  public:
   std::string name() const override { return "none"; }
-  void load_faces(const std::vector<rc::Triangle>&) override {}
+  void load_triangles(const std::vector<rc::Triangle>& ) override {}
   void submit(const rc::SegmentBatch& batch) override { n_ = batch.size(); }
   void collect(std::vector<std::uint8_t>& blocked) override { blocked.assign(n_, 0); }
   std::uint64_t tests_performed() const override { return 0; }

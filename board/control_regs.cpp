@@ -10,6 +10,7 @@ ControlRegs::ControlRegs(const sc_core::sc_module_name& name, sc_core::sc_time a
   m_regs[reg::kId / 4] = reg::kIdValue;
   m_regs[reg::kConfig / 4] = config_value;
   m_regs[reg::kSourceFace / 4] = reg::kNoFace;
+  m_regs[reg::kSourceFaces / 4] = 1;
   in.register_b_transport(this, &ControlRegs::b_transport);
   in.register_transport_dbg(this, &ControlRegs::transport_dbg);
   in.register_get_direct_mem_ptr(this, &ControlRegs::get_direct_mem_ptr);

@@ -48,7 +48,7 @@ void CycleWrapper::begin() {
   m_phase = Phase::Start;
   m_left = m_timing.pass_start;
   m_face = 0;
-  m_mask_lo = m_in.mask_start;
+  m_own = OwnSurfaceRange(m_in.mask_start);
   m_pipe.clear();
   stream_cycles(m_layout, m_timing, m_in.split, false, &m_limit);
   if (m_layout.float_format) m_float_start = float_start(m_in);
@@ -106,7 +106,7 @@ void CycleWrapper::controller() {
           m_float_face = float_face_record(m_face);  // the words have arrived: latch them
         else
           m_face_record = face_record(m_face);
-        m_mask_hi = m_mask_lo + own_face_table().count(m_face);
+        m_own.advance(own_surface_table().entry(m_face), m_face == 0);
         m_traffic[m_layout.face_bank].reads += words;
         m_traffic[m_layout.face_bank].busy_bank_cycles += lr + words;
         if (m_layout.mask_bank) {
@@ -126,7 +126,6 @@ void CycleWrapper::controller() {
           return true;
         };
         auto next_face = [&] {
-          m_mask_lo = m_mask_hi;
           ++m_face;
           m_phase = Phase::NextFace;
         };
@@ -209,14 +208,14 @@ bool CycleWrapper::try_issue(unsigned g) {
     ++m_traffic[at.bank].reads;
     ++m_traffic[at.bank].busy_bank_cycles;
   }
-  const bool source = m_in.face_first + m_face == m_in.source_face;
+  const bool source = m_in.in_source_sheet(m_face);
   for (unsigned slot = 0; slot < group.lanes; ++slot) {
     const std::uint64_t r = q * group.lanes + slot;
     if (r >= m_in.split.rays[g]) break;
     Lane& lane = p.lanes[slot];
     lane.valid = true;
     lane.ray = m_in.split.first_ray[g] + r;
-    lane.masked = source || (lane.ray >= m_mask_lo && lane.ray < m_mask_hi);
+    lane.masked = source || (lane.ray >= m_own.lo && lane.ray < m_own.hi);
     const pipeline::FixedVec3 end{coordinate_field(word[0], slot, m_layout.field_bits),
                                   coordinate_field(word[1], slot, m_layout.field_bits),
                                   coordinate_field(word[2], slot, m_layout.field_bits)};

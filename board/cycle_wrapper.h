@@ -90,7 +90,7 @@ class CycleWrapper : public WrapperBase {
   std::uint64_t m_left = 0;         // cycles left in Start / Setup
   std::uint64_t m_phase_cycle = 0;  // t: cycles elapsed in Fetch / Stream, this one included
   std::uint64_t m_face = 0;
-  std::uint64_t m_mask_lo = 0, m_mask_hi = 0;
+  OwnSurfaceRange m_own{0};  // the rays masked for the current face (its sheet's)
   pipeline::FaceRecord m_face_record{};
   pipeline::FloatFaceRecord m_float_face{};  // float lanes
   pipeline::FloatVec3 m_float_start{0, 0, 0};

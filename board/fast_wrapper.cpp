@@ -70,9 +70,9 @@ const FastWrapper::TimedPass& FastWrapper::timed_pass(const PassInputs& in) {
   return m_timed.back();
 }
 
-// Face-outer, ray-inner over the end points read back from the X, Y, Z banks. The shooter's face
-// is masked for every ray, and face f for the rays ending on it: those form one contiguous range
-// [lo, lo + table[f]) because the host sends rays grouped by end face in face order.
+// Face-outer, ray-inner over the end points read back from the X, Y, Z banks. The shooter's sheet
+// is masked for every ray, and face f for the rays ending on its sheet: those form one contiguous
+// range [lo, hi) because the host sends rays grouped by end face in face order (OwnSurfaceRange).
 void FastWrapper::compute(const PassInputs& in) {
   const std::size_t R = in.rays;
   if (m_timing_only) return;
@@ -107,17 +107,16 @@ void FastWrapper::compute(const PassInputs& in) {
                 m_y.data(), m_z.data());
   }
   if (m_layout.float_format) return compute_float(in);
-  std::uint64_t lo = in.mask_start;
-  const OwnFaceTable table = own_face_table();
+  OwnSurfaceRange own(in.mask_start);
+  const OwnSurfaceTable table = own_surface_table();
   for (std::uint64_t f = 0; f < in.faces; ++f) {
-    const std::uint64_t hi = lo + table.count(f);
-    if (in.face_first + f != in.source_face) {
-      const pipeline::FaceRecord face = face_record(f);
-      pipeline::occlude_face(face, in.start, m_x.data(), m_y.data(), m_z.data(), lo, m_layout.bits, m_blocked.data());
-      pipeline::occlude_face(face, in.start, m_x.data() + hi, m_y.data() + hi, m_z.data() + hi, R - hi, m_layout.bits,
-                             m_blocked.data() + hi);
-    }
-    lo = hi;
+    own.advance(table.entry(f), f == 0);
+    if (in.in_source_sheet(f)) continue;
+    const std::uint64_t lo = own.lo, hi = own.hi;
+    const pipeline::FaceRecord face = face_record(f);
+    pipeline::occlude_face(face, in.start, m_x.data(), m_y.data(), m_z.data(), lo, m_layout.bits, m_blocked.data());
+    pipeline::occlude_face(face, in.start, m_x.data() + hi, m_y.data() + hi, m_z.data() + hi, R - hi, m_layout.bits,
+                           m_blocked.data() + hi);
   }
 }
 
@@ -135,17 +134,16 @@ void FastWrapper::compute_float(const PassInputs& in) {
     m_fz[r] = float_from_code(static_cast<std::uint64_t>(m_z[r]), format);
   }
   const pipeline::FloatVec3 start = float_start(in);
-  std::uint64_t lo = in.mask_start;
-  const OwnFaceTable table = own_face_table();
+  OwnSurfaceRange own(in.mask_start);
+  const OwnSurfaceTable table = own_surface_table();
   for (std::uint64_t f = 0; f < in.faces; ++f) {
-    const std::uint64_t hi = lo + table.count(f);
-    if (in.face_first + f != in.source_face) {
-      const pipeline::FloatFaceRecord face = float_face_record(f);
-      pipeline::occlude_face(face, start, m_fx.data(), m_fy.data(), m_fz.data(), lo, format, m_blocked.data());
-      pipeline::occlude_face(face, start, m_fx.data() + hi, m_fy.data() + hi, m_fz.data() + hi, R - hi, format,
-                             m_blocked.data() + hi);
-    }
-    lo = hi;
+    own.advance(table.entry(f), f == 0);
+    if (in.in_source_sheet(f)) continue;
+    const std::uint64_t lo = own.lo, hi = own.hi;
+    const pipeline::FloatFaceRecord face = float_face_record(f);
+    pipeline::occlude_face(face, start, m_fx.data(), m_fy.data(), m_fz.data(), lo, format, m_blocked.data());
+    pipeline::occlude_face(face, start, m_fx.data() + hi, m_fy.data() + hi, m_fz.data() + hi, R - hi, format,
+                           m_blocked.data() + hi);
   }
 }
 

@@ -15,7 +15,7 @@ constexpr std::uint64_t kStatus = 0x0C;       // R/W1C  bit 0 BUSY (RO), bit 1 D
 constexpr std::uint64_t kRayCount = 0x10;     // rays in the ray banks (the pass's batch)
 constexpr std::uint64_t kFaceCount = 0x14;    // face records in the face bank (the pass's set)
 constexpr std::uint64_t kFaceFirst = 0x18;    // scene index of the set's first face
-constexpr std::uint64_t kSourceFace = 0x1C;   // scene index of the shooter's face; 0xFFFFFFFF: none
+constexpr std::uint64_t kSourceFace = 0x1C;   // scene index of the first face of the shooter's sheet; 0xFFFFFFFF: none
 constexpr std::uint64_t kStartX = 0x20;       // segment start (shooting patch centre), 0.N codes
 constexpr std::uint64_t kStartY = 0x24;
 constexpr std::uint64_t kStartZ = 0x28;
@@ -24,7 +24,9 @@ constexpr std::uint64_t kPassCyclesLo = 0x30; // RO  device cycles of the last p
 constexpr std::uint64_t kPassCyclesHi = 0x34; // RO
 constexpr std::uint64_t kPasses = 0x38;       // RO  passes completed
 constexpr std::uint64_t kErrorCode = 0x3C;    // RO  why ERROR was set (ErrorCode)
-constexpr std::uint64_t kSize = 0x40;         // bytes of register space in use
+constexpr std::uint64_t kSourceFaces = 0x40;  // faces of the shooter's sheet from SOURCE_FACE on; 1 at reset
+                                              // (scenes/sheets.h; written only when it changes)
+constexpr std::uint64_t kSize = 0x44;         // bytes of register space in use
 constexpr std::uint64_t kBarSize = 0x1000;    // BAR0 size
 
 constexpr std::uint32_t kIdValue = 0x52433230;
@@ -34,6 +36,10 @@ constexpr std::uint32_t kBusy = 1u << 0;
 constexpr std::uint32_t kDone = 1u << 1;
 constexpr std::uint32_t kError = 1u << 2;
 constexpr std::uint32_t kNoFace = 0xFFFFFFFFu;
+// Own-surface table entries (word_format.h): bit 31 set when the face continues the previous face's
+// sheet (its rays are the same range); bits 30..0 the rays of the pass that end on the face's sheet.
+constexpr std::uint32_t kSameSheet = 1u << 31;
+constexpr std::uint32_t kSheetRays = kSameSheet - 1;
 
 enum ErrorCode : std::uint32_t {
   kOk = 0,

@@ -2,7 +2,9 @@
 // unpacks), so both sides agree by construction. Words are little-endian, 4 or 8 bytes.
 //   coordinate word: c fields of field_bits bits, slot j at bit j * field_bits (bank_layout.h)
 //   face record:     9 words, v0.xyz, edge1.xyz, edge2.xyz, two's complement (edges are signed 1.N)
-//   own-face table:  one word per face of the set: rays of the pass that end on that face
+//   own-surface table: one word per face of the set: bits 30..0 the rays of the pass that end on the
+//                    face's sheet (scenes/sheets.h; a one-sided face is its own sheet), bit 31
+//                    (reg::kSameSheet) set when the face continues the previous face's sheet
 //   result word:     bit j = ray in slot j of the packet is blocked
 // Float lanes (layout.float_format set; docs/board.md, "Float lanes"): every coordinate field, start
 // register and face-record word holds the (1+E+M)-bit pattern of a format value, zero-extended:

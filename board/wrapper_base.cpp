@@ -33,7 +33,7 @@ sc_core::sc_time WrapperBase::next_edge(const sc_core::sc_time& t) const {
   return sc_core::sc_time::from_value((t.value() + p - 1) / p * p);
 }
 
-WrapperBase::OwnFaceTable WrapperBase::own_face_table() {
+WrapperBase::OwnSurfaceTable WrapperBase::own_surface_table() {
   if (m_layout.mask_bank) return {this, *m_layout.mask_bank, 0};
   const std::uint64_t base = static_cast<std::uint64_t>(m_regs.value(reg::kFaceCount)) * m_layout.face_words();
   return {this, m_layout.face_bank, base};
@@ -69,6 +69,7 @@ void WrapperBase::read_inputs(PassInputs& in) {
   in.faces = m_regs.value(reg::kFaceCount);
   in.face_first = m_regs.value(reg::kFaceFirst);
   in.source_face = m_regs.value(reg::kSourceFace);
+  in.source_faces = m_regs.value(reg::kSourceFaces);
   in.mask_start = m_regs.value(reg::kMaskStart);
   in.start = {m_regs.value(reg::kStartX), m_regs.value(reg::kStartY), m_regs.value(reg::kStartZ)};
   in.split = m_split(in.rays);
@@ -77,10 +78,10 @@ void WrapperBase::read_inputs(PassInputs& in) {
   } else if (in.faces > m_layout.max_faces_per_set) {
     in.error = reg::kTooManyFaces;
   } else {
-    std::uint64_t masked = in.mask_start;
-    const OwnFaceTable table = own_face_table();
-    for (std::uint64_t f = 0; f < in.faces; ++f) masked += table.count(f);
-    if (masked > in.rays) in.error = reg::kMaskOverrun;
+    OwnSurfaceRange masked(in.mask_start);
+    const OwnSurfaceTable table = own_surface_table();
+    for (std::uint64_t f = 0; f < in.faces; ++f) masked.advance(table.entry(f), f == 0);
+    if (masked.next > in.rays) in.error = reg::kMaskOverrun;
   }
   const std::int64_t limit = std::int64_t(1) << m_layout.value_bits;  // a code, or a float's bit pattern
   if (in.error == reg::kOk && (in.start.x >= limit || in.start.y >= limit || in.start.z >= limit))

@@ -34,11 +34,35 @@ namespace rc::board {
 // Everything a pass reads from the registers, checked.
 struct PassInputs {
   std::uint64_t rays = 0, faces = 0;
-  std::uint32_t face_first = 0, source_face = reg::kNoFace, mask_start = 0;
+  std::uint32_t face_first = 0, source_face = reg::kNoFace, source_faces = 1, mask_start = 0;
   pipeline::FixedVec3 start{0, 0, 0};  // codes (float lanes: the values' bit patterns)
   bool clear = false;
   RaySplit split;
   std::uint32_t error = reg::kOk;
+
+  // Face `face_in_set` of the pass lies on the shooter's sheet (SOURCE_FACE, SOURCE_FACES): masked
+  // for every ray, since every segment starts on it.
+  bool in_source_sheet(std::uint64_t face_in_set) const {
+    const std::uint64_t face = std::uint64_t{face_first} + face_in_set;
+    return face >= source_face && face < std::uint64_t{source_face} + source_faces;
+  }
+};
+
+// Walks the own-surface table (word_format.h) face by face: before face f, advance(entry of f,
+// f == 0) makes [lo, hi) the rays of the pass that end on f's sheet, the ones masked for f. Rays come
+// grouped by end face in face order and a sheet's faces are contiguous, so a sheet's rays are one
+// range: a face that continues its predecessor's sheet (reg::kSameSheet) keeps the range, any other
+// face (and the pass's first) takes the next one. With one-sided faces this is the paper's own-face
+// table: each entry is its face's count.
+struct OwnSurfaceRange {
+  std::uint64_t lo, hi, next;
+  explicit OwnSurfaceRange(std::uint64_t mask_start) : lo(mask_start), hi(mask_start), next(mask_start) {}
+  void advance(std::uint32_t entry, bool first_face) {
+    if (!first_face && (entry & reg::kSameSheet) != 0) return;
+    lo = next;
+    hi = lo + (entry & reg::kSheetRays);
+    next = hi;
+  }
 };
 
 // One finished pass, for reports and traces.
@@ -127,16 +151,16 @@ class WrapperBase : public sc_core::sc_module {
   // Registers -> `in`, with error checks. Fills the caller's object so that a wrapper reading one
   // pass after another reuses its vectors; the ray split is kept for the last ray count.
   void read_inputs(PassInputs& in);
-  // The own-face table in its bank: count(f) is how many of the pass's rays end on face f of the set.
-  struct OwnFaceTable {
+  // The own-surface table in its bank (word_format.h): entry(f) for face f of the set.
+  struct OwnSurfaceTable {
     WrapperBase* wrapper;
     unsigned bank;
     std::uint64_t first;  // word index of face 0's entry
-    std::uint32_t count(std::uint64_t face_in_set) const {
+    std::uint32_t entry(std::uint64_t face_in_set) const {
       return static_cast<std::uint32_t>(wrapper->bank_word(bank, first + face_in_set));
     }
   };
-  OwnFaceTable own_face_table();
+  OwnSurfaceTable own_surface_table();
   pipeline::FaceRecord face_record(std::uint64_t face_in_set);
   // Float lanes (layout.float_format set): the record's words decoded as format values.
   pipeline::FloatFaceRecord float_face_record(std::uint64_t face_in_set);

@@ -172,7 +172,7 @@ void BoardVisibility::dma(tlmx::DmaDirection direction, void* host, std::uint64_
 
 // ---- faces ------------------------------------------------------------------------------------------
 
-void BoardVisibility::load_faces(const std::vector<Triangle>& faces) {
+void BoardVisibility::load_triangles(const std::vector<Triangle>& faces) {
   const int bits = layout_.bits;
   if (faces.size() > faces_per_set_ && !options_.allow_batching) {
     throw std::invalid_argument("the scene has " + std::to_string(faces.size()) + " faces but one face set holds " +
@@ -194,7 +194,7 @@ void BoardVisibility::load_faces(const std::vector<Triangle>& faces) {
   } else {
     for (const Triangle& t : faces) faces_.push_back(pipeline::make_face_record(t, bits));  // charged per upload
   }
-  if (options_.oracle != nullptr) options_.oracle->load_faces(faces);
+  if (options_.oracle != nullptr) options_.oracle->load_faces(faces, sheets());
   stats_.face_sets = faces_.empty() ? 0 : (faces_.size() + faces_per_set_ - 1) / faces_per_set_;
   resident_set_ = -1;
   if (stats_.face_sets == 1) upload_faces(0);  // resident for the whole run
@@ -257,8 +257,19 @@ void BoardVisibility::order_segments(const SegmentBatch& batch) {
     z_[i] = e.z;
   }
   start_ = end_point_code(batch.start);
-  source_face_ = batch.source_face >= 0 ? static_cast<std::uint32_t>(batch.source_face) : reg::kNoFace;
+  set_source(batch.source_face);
   charge_end_points(rays_);
+}
+
+// SOURCE_FACE and SOURCE_FACES: the shooter's sheet (scenes/sheets.h), or no face.
+void BoardVisibility::set_source(int source_face) {
+  if (source_face < 0) {
+    source_face_ = reg::kNoFace;
+    source_faces_ = 1;
+    return;
+  }
+  source_face_ = static_cast<std::uint32_t>(sheets().first(source_face));
+  source_faces_ = static_cast<std::uint32_t>(sheets().size_of(source_face));
 }
 
 // Batches of rays, each against every face set; the set already in the face bank goes first.
@@ -310,7 +321,7 @@ void BoardVisibility::submit_timing_only(std::size_t segments, int source_face) 
     blocked_.assign(rays_, 0);
   }
   start_ = {0, 0, 0};
-  source_face_ = source_face >= 0 ? static_cast<std::uint32_t>(source_face) : reg::kNoFace;
+  set_source(source_face);
   if (dual_cpu()) cpu_.fork_second_cpu();
   charge_end_points(rays_);
   timing_only_ = true;
@@ -387,23 +398,33 @@ void BoardVisibility::upload_rays(std::size_t batch) {
   }
 }
 
-// One word per face of the set: how many of the batch's rays end on it. MASK_START (returned via
-// the registers) counts the batch's rays ending on earlier faces.
+// The own-surface table (board/word_format.h), one word per face of the set: the batch's rays that
+// end on the face's sheet, with reg::kSameSheet on a face that continues its predecessor's sheet in
+// the set. A one-sided face is its own sheet: its word is the count of rays ending on it, the paper's
+// own-face table. MASK_START (start_pass) is the first ray ending on the set's first face's sheet.
 void BoardVisibility::upload_mask(std::size_t batch, std::size_t set) {
   const auto begin = end_faces_.begin() + static_cast<long>(batch_first(batch));
   const auto end = begin + static_cast<long>(batch_size(batch));
   const int f0 = static_cast<int>(set_first(set));
   const std::size_t n = set_size(set);
+  const int f1 = f0 + static_cast<int>(n);
+  const FaceSheets& sheets = this->sheets();
   buffer_.assign(n * word_bytes_, 0);
-  // One run of equal end faces at a time: O(distinct faces x log rays), not O(faces x log rays).
-  for (auto it = std::lower_bound(begin, end, f0); it != end && *it < f0 + static_cast<int>(n);) {
-    const auto next = std::upper_bound(it, end, *it);
-    board::store_word(buffer_.data(), static_cast<std::size_t>(*it - f0), word_bytes_, static_cast<std::uint64_t>(next - it));
+  // One run of rays ending on one sheet at a time: O(sheets with rays x log rays), not O(faces x log rays).
+  for (auto it = std::lower_bound(begin, end, sheets.first(f0)); it != end && *it < f1;) {
+    const int first = sheets.first(*it), last = sheets.end(*it);
+    const auto next = std::lower_bound(it, end, last);
+    const auto rays = static_cast<std::uint32_t>(next - it);
+    if (rays > reg::kSheetRays) throw std::logic_error("more rays end on one sheet than the own-surface table counts");
+    for (int g = std::max(first, f0); g < std::min(last, f1); ++g) {
+      const std::uint32_t same = g > std::max(first, f0) ? reg::kSameSheet : 0u;
+      board::store_word(buffer_.data(), static_cast<std::size_t>(g - f0), word_bytes_, rays | same);
+    }
     it = next;
   }
   const std::uint64_t address = layout_.mask_bank ? ports_.board.bank_address(*layout_.mask_bank)
                                                   : ports_.board.bank_address(layout_.face_bank) + n * 9 * word_bytes_;
-  transfer(tlmx::DmaDirection::to_device, buffer_.data(), address, buffer_.size(), "own-face table");
+  transfer(tlmx::DmaDirection::to_device, buffer_.data(), address, buffer_.size(), "own-face table");  // the trace's name since before sheets
 }
 
 void BoardVisibility::start_pass(const Pass& pass) {
@@ -413,9 +434,13 @@ void BoardVisibility::start_pass(const Pass& pass) {
   upload_mask(pass.batch, pass.set);
   const auto begin = end_faces_.begin() + static_cast<long>(batch_first(pass.batch));
   const auto mask_start = std::lower_bound(begin, begin + static_cast<long>(batch_size(pass.batch)),
-                                           static_cast<int>(set_first(pass.set))) - begin;
+                                           sheets().first(static_cast<int>(set_first(pass.set)))) - begin;
   cpu_.charge(DriverWork::Call, 1);
   const sc_time from = cpu_.now();
+  if (source_faces_ != source_faces_written_) {  // a parameter register keeps its value: written on change
+    write_registers(reg::kSourceFaces, {source_faces_});
+    source_faces_written_ = source_faces_;
+  }
   write_registers(reg::kRayCount,
                   {static_cast<std::uint32_t>(batch_size(pass.batch)), static_cast<std::uint32_t>(set_size(pass.set)),
                    static_cast<std::uint32_t>(set_first(pass.set)), source_face_, static_cast<std::uint32_t>(start_.x),

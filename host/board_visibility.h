@@ -3,7 +3,7 @@
 //
 // Per step (docs/board.md, "Pass protocol"): quantise the end points (pipeline::quantize_point; float
 // lanes: round_point, then the values' bit patterns, board/word_format.h) in end-face order, pack
-// them into the X/Y/Z bank words and DMA them to the ray banks; DMA the own-face table; write the
+// them into the X/Y/Z bank words and DMA them to the ray banks; DMA the own-surface table; write the
 // pass registers and START (with CLEAR on a batch's first face set); wait for the interrupt; clear
 // DONE; DMA the result words back. Rays beyond a batch's capacity are split into batches and faces
 // beyond a set's capacity into sets (paper sec 4.4); a batch's result words are ORed across its face
@@ -122,7 +122,7 @@ class BoardVisibility : public VisibilityBackend, public TimingReplayTarget {
   void pass_finished(const board::PassRecord& record);
 
   std::string name() const override { return "board"; }
-  void load_faces(const std::vector<Triangle>& faces) override;
+  void load_triangles(const std::vector<Triangle>& faces) override;
   void submit(const SegmentBatch& batch) override;
   void collect(std::vector<std::uint8_t>& blocked) override;
   std::uint64_t tests_performed() const override { return stats_.tests; }
@@ -133,7 +133,7 @@ class BoardVisibility : public VisibilityBackend, public TimingReplayTarget {
   // Timing replay (platform/work_replay.h): exactly the passes, transfers, registers, interrupts
   // and driver work of submit()/collect() for a step of `segments` segments from `source_face`,
   // without the data: rays and results move as transfers of their real sizes that carry no bytes
-  // (tlmx::NoDataExtension), the own-face table and faces move for real, and the lanes do not compute.
+  // (tlmx::NoDataExtension), the own-surface table and faces move for real, and the lanes do not compute.
   // Only the fast wrapper model supports it.
   void submit_timing_only(std::size_t segments, int source_face) override;
   void collect_timing_only() override;
@@ -154,6 +154,7 @@ class BoardVisibility : public VisibilityBackend, public TimingReplayTarget {
   void finish_pass(const Pass& pass);
   void upload_rays(std::size_t batch);
   void upload_faces(std::size_t set);
+  void set_source(int source_face);
   void upload_mask(std::size_t batch, std::size_t set);
   void read_results(std::size_t batch);
 
@@ -213,7 +214,9 @@ class BoardVisibility : public VisibilityBackend, public TimingReplayTarget {
   std::vector<int> end_faces_;
   std::vector<std::int64_t> x_, y_, z_;
   pipeline::FixedVec3 start_{0, 0, 0};
-  std::uint32_t source_face_ = 0;
+  std::uint32_t source_face_ = 0;           // SOURCE_FACE: the first face of the shooter's sheet
+  std::uint32_t source_faces_ = 1;          // SOURCE_FACES: the faces of that sheet
+  std::uint32_t source_faces_written_ = 1;  // what the register holds (1 at reset)
   std::vector<std::uint8_t> blocked_;  // end-face order
   std::vector<std::uint8_t> oracle_answer_;  // end-face order, when options_.oracle is set
   bool timing_only_ = false;                 // the current step came from submit_timing_only

@@ -37,7 +37,7 @@ class CardAnswer : public VisibilityBackend {
   std::vector<std::uint8_t> answer;  // in the card's segment order
 
   std::string name() const override { return "card answer"; }
-  void load_faces(const std::vector<Triangle>&) override {}
+  void load_triangles(const std::vector<Triangle>& ) override {}
   void submit(const SegmentBatch& batch) override {
     if (batch.size() != answer.size()) throw std::logic_error("a card's answer is for another batch");
   }
@@ -47,12 +47,15 @@ class CardAnswer : public VisibilityBackend {
 
 // Global face g on a card holding [first, first + count): its local index, or -1 before the card's
 // faces and `count` after them (monotone, so rays stay grouped by end face in face order).
-int local_face(int g, const CardShare& faces) {
+// Face g as the card holding `faces` sees it: the first of its sheet's faces on the card when the
+// sheet reaches the card (the own-surface rule only asks which sheet a face is on), else "before"
+// (-1) or "after" (the card's face count) its faces. A one-sided face on the card is itself.
+int local_face(int g, const CardShare& faces, const FaceSheets& sheets) {
   if (g < 0) return -1;
-  const auto f = static_cast<std::size_t>(g);
-  if (f < faces.first) return -1;
-  if (f >= faces.first + faces.count) return static_cast<int>(faces.count);
-  return static_cast<int>(f - faces.first);
+  const int first = static_cast<int>(faces.first), last = first + static_cast<int>(faces.count);
+  const int lo = std::max(sheets.first(g), first), hi = std::min(sheets.end(g), last);
+  if (lo < hi) return lo - first;
+  return g < first ? -1 : static_cast<int>(faces.count);
 }
 
 }  // namespace
@@ -76,6 +79,7 @@ struct MultiCardVisibility::Card {
   CardShare faces;     // of the scene (every face with the rays split)
   CardShare segments;  // of the current step (every segment with the faces split)
   std::vector<Triangle> triangles;
+  FaceSheets sheets;   // of the card's faces (FaceSheets::restricted)
   SegmentBatch batch;
   std::size_t timing_segments = 0;
   int timing_source = -1;
@@ -152,7 +156,7 @@ void MultiCardVisibility::card_thread(unsigned c) {
     try {
       switch (k.job) {
         case Job::load:
-          k.driver->load_faces(k.triangles);
+          k.driver->load_faces(k.triangles, k.sheets);
           break;
         case Job::step:
           k.driver->submit(k.batch);
@@ -242,13 +246,14 @@ void MultiCardVisibility::wait_for_cards(bool started_is_enough) {
   }
 }
 
-void MultiCardVisibility::load_faces(const std::vector<Triangle>& faces) {
-  if (options_.oracle != nullptr) options_.oracle->load_faces(faces);
+void MultiCardVisibility::load_triangles(const std::vector<Triangle>& faces) {
+  if (options_.oracle != nullptr) options_.oracle->load_faces(faces, sheets());
   for (unsigned c = 0; c < cards(); ++c) {
     Card& k = *cards_[c];
     k.faces = split_ == CardSplit::faces ? card_share(faces.size(), cards(), c) : CardShare{0, faces.size()};
     k.triangles.assign(faces.begin() + static_cast<long>(k.faces.first),
                        faces.begin() + static_cast<long>(k.faces.first + k.faces.count));
+    k.sheets = sheets().restricted(static_cast<int>(k.faces.first), static_cast<int>(k.faces.count));
   }
   hand_out(Job::load);
   wait_for_cards(false);
@@ -280,11 +285,11 @@ void MultiCardVisibility::submit(const SegmentBatch& batch) {
       if (options_.oracle != nullptr) k.answer.answer.assign(answer_.begin() + first, answer_.begin() + last);
     } else {
       k.segments = {0, rays_};
-      b.source_face = local_face(batch.source_face, k.faces);
+      b.source_face = local_face(batch.source_face, k.faces, sheets());
       if (b.source_face == static_cast<int>(k.faces.count)) b.source_face = -1;  // not on this card
       b.ends = batch.ends;
       b.end_faces.resize(rays_);
-      for (std::size_t i = 0; i < rays_; ++i) b.end_faces[i] = local_face(batch.end_faces[i], k.faces);
+      for (std::size_t i = 0; i < rays_; ++i) b.end_faces[i] = local_face(batch.end_faces[i], k.faces, sheets());
       b.needed = batch.needed;
       if (options_.oracle != nullptr) {
         if (c == 0) {
@@ -307,7 +312,7 @@ void MultiCardVisibility::submit_timing_only(std::size_t segments, int source_fa
       k.timing_source = source_face;
     } else {
       k.segments = {0, segments};
-      k.timing_source = local_face(source_face, k.faces);
+      k.timing_source = local_face(source_face, k.faces, sheets());
       if (k.timing_source == static_cast<int>(k.faces.count)) k.timing_source = -1;
     }
     k.timing_segments = k.segments.count;

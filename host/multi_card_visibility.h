@@ -11,9 +11,10 @@
 // Splits (contiguous shares, sizes differing by at most one):
 //   rays   card c gets a share of the step's segments and holds every face; results concatenated.
 //   faces  card c holds a share of the faces and gets every segment; a segment is blocked if any
-//          card blocks it. Face indices are mapped to the card's: end faces and the source face on
-//          the card become local indices, the others "before" (-1) or "after" (the card's face
-//          count) its faces, so the own-face rule skips exactly the faces it skips on one card.
+//          card blocks it. Face indices are mapped to the card's: end faces and the source face whose
+//          sheet reaches the card become the local index of the sheet's first face there, the others
+//          "before" (-1) or "after" (the card's face count) its faces, and each card holds its part
+//          of every sheet, so the own-surface rule skips exactly the faces it skips on one card.
 //
 // Modes, as one card's (host/board_visibility.h): serial, submit() waits until every card has its
 // answer. Concurrent (sec 4.3), overlap FormFactors: submit() returns when every card has STARTed
@@ -71,7 +72,7 @@ class MultiCardVisibility : public VisibilityBackend, public TimingReplayTarget 
   void pass_finished(unsigned card, const board::PassRecord& record);
 
   std::string name() const override { return "board x " + std::to_string(cards()); }
-  void load_faces(const std::vector<Triangle>& faces) override;
+  void load_triangles(const std::vector<Triangle>& faces) override;
   void submit(const SegmentBatch& batch) override;
   void collect(std::vector<std::uint8_t>& blocked) override;
   std::uint64_t tests_performed() const override;

@@ -136,7 +136,7 @@ void BoardSystem::run() {
   try {
     VisibilityBackend& visibility = m_multi ? static_cast<VisibilityBackend&>(*m_multi) : *m_visibility;
     if (m_setup.replay != nullptr) {
-      visibility.load_faces(m_scene.face_triangles());
+      visibility.load_faces(m_scene.face_triangles(), m_scene.sheets);
       TimingReplayTarget* target = m_multi ? static_cast<TimingReplayTarget*>(m_multi.get()) : m_visibility.get();
       replay_host_work(*m_setup.replay, {m_scene.patches.size(), m_solver.fixed_steps}, m_cpu, target);
       m_result.steps = m_solver.fixed_steps;

@@ -2,9 +2,9 @@
 
 namespace rc {
 
-void ComparingVisibility::load_faces(const std::vector<Triangle>& faces) {
-  answer_.load_faces(faces);
-  shadow_.load_faces(faces);
+void ComparingVisibility::load_triangles(const std::vector<Triangle>& faces) {
+  answer_.load_faces(faces, sheets());
+  shadow_.load_faces(faces, sheets());
 }
 
 void ComparingVisibility::submit(const SegmentBatch& batch) {

@@ -12,7 +12,7 @@ class ComparingVisibility : public VisibilityBackend {
   ComparingVisibility(VisibilityBackend& answer, VisibilityBackend& shadow) : answer_(answer), shadow_(shadow) {}
 
   std::string name() const override { return answer_.name() + " (checked against " + shadow_.name() + ")"; }
-  void load_faces(const std::vector<Triangle>& faces) override;
+  void load_triangles(const std::vector<Triangle>& faces) override;
   void submit(const SegmentBatch& batch) override;
   void collect(std::vector<std::uint8_t>& blocked) override;
   std::uint64_t tests_performed() const override { return answer_.tests_performed(); }

@@ -39,7 +39,7 @@ FastFixedVisibility::FastFixedVisibility(pipeline::FracBits frac_bits, int threa
 
 FastFixedVisibility::~FastFixedVisibility() { pool_.finish(); }
 
-void FastFixedVisibility::load_faces(const std::vector<Triangle>& faces) {
+void FastFixedVisibility::load_triangles(const std::vector<Triangle>& faces) {
   finish_batch();
   points_.clear();
   faces_.clear();
@@ -47,12 +47,19 @@ void FastFixedVisibility::load_faces(const std::vector<Triangle>& faces) {
   for (const Triangle& t : faces) faces_.push_back(pipeline::make_face_record(t, bits_));
 }
 
-// FixedPointVisibility's count: for every face but the source, every segment not ending on it.
+// FixedPointVisibility's count: for every face outside the source's sheet, every segment not ending
+// on its sheet.
 std::uint64_t FastFixedVisibility::count_brute_force_tests(const SegmentBatch& batch) const {
-  const auto in_range = [&](int f) { return f >= 0 && static_cast<std::size_t>(f) < faces_.size(); };
+  const FaceSheets& sheets = this->sheets();
+  const int faces = static_cast<int>(faces_.size());
+  // Faces of sheet [first, end) inside [0, faces).
+  const auto faces_of = [&](int f) -> std::uint64_t {
+    const int first = std::max(sheets.first(f), 0), end = std::min(sheets.end(f), faces);
+    return end > first ? static_cast<std::uint64_t>(end - first) : 0;
+  };
   std::uint64_t ending_on_tested_faces = 0;
-  for (int f : batch.end_faces) ending_on_tested_faces += in_range(f) && f != batch.source_face;
-  const std::uint64_t tested_faces = faces_.size() - (in_range(batch.source_face) ? 1 : 0);
+  for (int f : batch.end_faces) ending_on_tested_faces += sheets.same(f, batch.source_face) ? 0 : faces_of(f);
+  const std::uint64_t tested_faces = faces_.size() - faces_of(batch.source_face);
   return tested_faces * batch.size() - ending_on_tested_faces;
 }
 
@@ -62,9 +69,12 @@ void FastFixedVisibility::submit(const SegmentBatch& batch) {
   batch.check();
   start_ = pipeline::quantize_point(batch.start, bits_);
   if (points_.assign(batch, bits_)) tree_.build(points_);
-  tree_.mark_batch(points_, batch.end_faces.data());
-  source_face_ = batch.source_face;
-  end_faces_ = batch.end_faces;
+  // Segments are matched with faces by sheet (the own-surface rule): the end point tree notes each
+  // node's one end sheet, named by its first face, exactly as it would note one end face.
+  end_sheets_.resize(n);
+  for (std::size_t s = 0; s < n; ++s) end_sheets_[s] = sheets().first(batch.end_faces[s]);
+  tree_.mark_batch(points_, end_sheets_.data());
+  source_sheet_ = sheets().first(batch.source_face);
   segments_ = n;
   end_x_.resize(n);
   end_y_.resize(n);
@@ -118,17 +128,18 @@ void FastFixedVisibility::run_worker(int worker) {
 // One face against the end points its hit region may contain, in the pipeline's arithmetic.
 // Returns the number of tests run.
 RC_FAST_TARGETS std::uint64_t FastFixedVisibility::test_face(int face, WorkerOutput& out) const {
-  if (face == source_face_) return 0;  // every segment's own face
+  const int sheet = sheets().first(face);
+  if (sheet == source_sheet_) return 0;  // every segment's own surface
   const pipeline::FaceRecord& record = faces_[static_cast<std::size_t>(face)];
   const pipeline::HitRegion region(record, start_, bits_);
-  // Candidates: end points inside the region with a segment that does not end on this face.
+  // Candidates: end points inside the region with a segment that does not end on this face's sheet.
   std::vector<std::uint32_t>& candidates = out.candidates;
   candidates.clear();
   const std::size_t dense = segments_ / kDenseShare;
   bool too_many = false;
-  tree_.query(region, face, [&](std::uint32_t point) {
+  tree_.query(region, sheet, [&](std::uint32_t point) {
     std::uint32_t s = points_.first_segment(point);
-    while (s != EndPointCatalogue::kNone && end_faces_[s] == face) s = points_.next_segment(s);
+    while (s != EndPointCatalogue::kNone && end_sheets_[s] == sheet) s = points_.next_segment(s);
     if (s == EndPointCatalogue::kNone) return true;
     const double* p = points_.coords(point);
     if (!region.may_hit(p[0], p[1], p[2])) return true;
@@ -144,20 +155,21 @@ RC_FAST_TARGETS std::uint64_t FastFixedVisibility::test_face(int face, WorkerOut
     }
     for (std::uint32_t s = points_.first_segment(point); s != EndPointCatalogue::kNone;
          s = points_.next_segment(s)) {
-      if (end_faces_[s] != face) out.blocked[s] = 1;
+      if (end_sheets_[s] != sheet) out.blocked[s] = 1;
     }
   }
   return candidates.size();
 }
 
 // The brute force's way for one face: the streaming kernel over every segment of the batch,
-// those ending on the face masked.
+// those ending on the face's sheet masked.
 std::uint64_t FastFixedVisibility::test_every_segment(int face, WorkerOutput& out) const {
   ++out.dense_faces;
   out.skip.resize(segments_);
   std::size_t own = 0;
+  const int sheet = sheets().first(face);
   for (std::size_t s = 0; s < segments_; ++s) {
-    out.skip[s] = end_faces_[s] == face;
+    out.skip[s] = end_sheets_[s] == sheet;
     own += out.skip[s];
   }
   pipeline::occlude_face(faces_[static_cast<std::size_t>(face)], start_, end_x_.data(), end_y_.data(),

@@ -45,7 +45,7 @@ class FastFixedVisibility : public VisibilityBackend {
   ~FastFixedVisibility() override;
 
   std::string name() const override { return "fast"; }
-  void load_faces(const std::vector<Triangle>& faces) override;
+  void load_triangles(const std::vector<Triangle>& faces) override;
   // Throws as FixedPointVisibility::submit does: std::invalid_argument if batch.end_faces does
   // not match batch.ends, std::out_of_range if a point lies outside [0, 1)^3.
   void submit(const SegmentBatch& batch) override;
@@ -55,7 +55,7 @@ class FastFixedVisibility : public VisibilityBackend {
   // face: segments of one batch sharing an end point share the test).
   std::uint64_t tests_performed() const override { return tests_; }
   // What FixedPointVisibility would have run on the same batches: every segment-face pair
-  // except own faces. tests_performed() / brute_force_tests() is the share culling left.
+  // except own surfaces. tests_performed() / brute_force_tests() is the share culling left.
   std::uint64_t brute_force_tests() const { return brute_force_tests_; }
   // Face-batch pairs that ran the streaming kernel over every segment (dense hit regions).
   std::uint64_t dense_faces() const { return dense_faces_; }
@@ -83,9 +83,9 @@ class FastFixedVisibility : public VisibilityBackend {
   std::vector<pipeline::FaceRecord> faces_;
   // The current batch.
   pipeline::FixedVec3 start_{};
-  int source_face_ = -1;
+  int source_sheet_ = -1;           // the source face's sheet (its first face)
   std::size_t segments_ = 0;
-  std::vector<int> end_faces_;
+  std::vector<int> end_sheets_;      // per segment: its end face's sheet (first face)
   std::vector<std::int64_t> end_x_, end_y_, end_z_;  // quantised, in batch order (dense faces)
   EndPointCatalogue points_;
   EndPointTree tree_;

@@ -15,7 +15,7 @@ std::vector<std::size_t> faces_without_area(const std::vector<Face>& faces, pipe
 
 FixedPointVisibility::FixedPointVisibility(pipeline::FracBits frac_bits) : bits_(frac_bits) {}
 
-void FixedPointVisibility::load_faces(const std::vector<Triangle>& faces) {
+void FixedPointVisibility::load_triangles(const std::vector<Triangle>& faces) {
   faces_.clear();
   faces_.reserve(faces.size());
   for (const Triangle& t : faces) faces_.push_back(pipeline::make_face_record(t, bits_));
@@ -35,7 +35,7 @@ void FixedPointVisibility::submit(const SegmentBatch& batch) {
     end_z_[s] = e.z;
   }
   blocked_.assign(n, 0);
-  tests_ += end_faces_.occlude_each_face(batch, faces_.size(), skip_, [&](std::size_t f, const std::uint8_t* skip) {
+  tests_ += end_faces_.occlude_each_face(batch, faces_.size(), sheets(), skip_, [&](std::size_t f, const std::uint8_t* skip) {
     pipeline::occlude_face(faces_[f], start, end_x_.data(), end_y_.data(), end_z_.data(), n, bits_, blocked_.data(),
                            skip);
   });

@@ -27,12 +27,12 @@ class FixedPointVisibility : public VisibilityBackend {
   explicit FixedPointVisibility(pipeline::FracBits frac_bits);
 
   std::string name() const override { return "fixed"; }
-  void load_faces(const std::vector<Triangle>& faces) override;
+  void load_triangles(const std::vector<Triangle>& faces) override;
   // Throws std::invalid_argument if batch.end_faces does not match batch.ends, and
   // std::out_of_range if a point lies outside the normalised scene [0, 1)^3.
   void submit(const SegmentBatch& batch) override;
   void collect(std::vector<std::uint8_t>& blocked) override;
-  // Segment-face pairs tested: every pair except a segment's own faces (is_own_face).
+  // Segment-face pairs tested: every pair except a segment's own surfaces (is_own_surface).
   std::uint64_t tests_performed() const override { return tests_; }
 
   int frac_bits() const { return bits_; }

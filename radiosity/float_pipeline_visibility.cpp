@@ -4,7 +4,7 @@
 
 namespace rc {
 
-void FloatPipelineVisibility::load_faces(const std::vector<Triangle>& faces) {
+void FloatPipelineVisibility::load_triangles(const std::vector<Triangle>& faces) {
   faces_.clear();
   faces_.reserve(faces.size());
   for (const Triangle& t : faces) faces_.push_back(pipeline::make_float_face_record(t, format_));
@@ -29,7 +29,7 @@ void FloatPipelineVisibility::submit(const SegmentBatch& batch) {
   const pipeline::FloatVec3 start = pipeline::round_point(batch.start, format_);
   round_end_points(batch);
   blocked_.assign(n, 0);
-  tests_ += end_faces_.occlude_each_face(batch, faces_.size(), skip_, [&](std::size_t f, const std::uint8_t* skip) {
+  tests_ += end_faces_.occlude_each_face(batch, faces_.size(), sheets(), skip_, [&](std::size_t f, const std::uint8_t* skip) {
     pipeline::occlude_face(faces_[f], start, end_x_.data(), end_y_.data(), end_z_.data(), n, format_, blocked_.data(),
                            skip);
   });

@@ -19,11 +19,11 @@ class FloatPipelineVisibility : public VisibilityBackend {
   explicit FloatPipelineVisibility(pipeline::FloatFormat format) : format_(format) {}
 
   std::string name() const override { return format_.to_string(); }
-  void load_faces(const std::vector<Triangle>& faces) override;
+  void load_triangles(const std::vector<Triangle>& faces) override;
   // Throws std::invalid_argument if batch.end_faces does not match batch.ends.
   void submit(const SegmentBatch& batch) override;
   void collect(std::vector<std::uint8_t>& blocked) override { blocked = blocked_; }
-  // Segment-face pairs tested: every pair except a segment's own faces (is_own_face).
+  // Segment-face pairs tested: every pair except a segment's own surfaces (is_own_surface).
   std::uint64_t tests_performed() const override { return tests_; }
 
   pipeline::FloatFormat format() const { return format_; }

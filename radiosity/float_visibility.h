@@ -10,7 +10,7 @@ namespace rc {
 class FloatVisibility : public VisibilityBackend {
  public:
   std::string name() const override { return "float"; }
-  void load_faces(const std::vector<Triangle>& faces) override;
+  void load_triangles(const std::vector<Triangle>& faces) override;
   void submit(const SegmentBatch& batch) override;
   void collect(std::vector<std::uint8_t>& blocked) override;
   std::uint64_t tests_performed() const override { return tests_; }

@@ -17,7 +17,7 @@ class NeededOnlyVisibility : public VisibilityBackend {
   explicit NeededOnlyVisibility(std::unique_ptr<VisibilityBackend> answer) : answer_(std::move(answer)) {}
 
   std::string name() const override { return answer_->name(); }
-  void load_faces(const std::vector<Triangle>& faces) override { answer_->load_faces(faces); }
+  void load_triangles(const std::vector<Triangle>& faces) override { answer_->load_faces(faces, sheets()); }
   void submit(const SegmentBatch& batch) override;
   void collect(std::vector<std::uint8_t>& blocked) override;
   std::uint64_t tests_performed() const override { return answer_->tests_performed(); }

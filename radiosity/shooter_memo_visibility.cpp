@@ -5,12 +5,12 @@
 
 namespace rc {
 
-void ShooterMemoVisibility::load_faces(const std::vector<Triangle>& faces) {
+void ShooterMemoVisibility::load_triangles(const std::vector<Triangle>& faces) {
   memo_.clear();  // another run: shooter ids promise nothing across it
   bytes_ = 0;
   reuse_ = nullptr;
   pending_shooter_ = -1;
-  answer_->load_faces(faces);
+  answer_->load_faces(faces, sheets());
 }
 
 void ShooterMemoVisibility::submit(const SegmentBatch& batch) {

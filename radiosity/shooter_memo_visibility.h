@@ -24,7 +24,7 @@ class ShooterMemoVisibility : public VisibilityBackend {
       : answer_(std::move(answer)), max_bytes_(max_bytes) {}
 
   std::string name() const override { return answer_->name(); }
-  void load_faces(const std::vector<Triangle>& faces) override;
+  void load_triangles(const std::vector<Triangle>& faces) override;
   void submit(const SegmentBatch& batch) override;
   void collect(std::vector<std::uint8_t>& blocked) override;
   std::uint64_t tests_performed() const override { return answer_->tests_performed(); }

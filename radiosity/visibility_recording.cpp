@@ -5,10 +5,10 @@
 
 namespace rc {
 
-std::uint64_t brute_force_tests(const SegmentBatch& batch, std::size_t faces) {
+std::uint64_t brute_force_tests(const SegmentBatch& batch, std::size_t faces, const FaceSheets& sheets) {
   std::uint64_t tests = 0;
   for (std::size_t s = 0; s < batch.size(); ++s) {
-    const std::size_t own = batch.end_faces[s] != batch.source_face ? 2 : 1;
+    const std::size_t own = own_surface_faces(sheets, batch.source_face, batch.end_faces[s]);
     tests += faces > own ? faces - own : 0;
   }
   return tests;
@@ -44,15 +44,15 @@ void VisibilityRecording::step_flags(std::size_t step, std::vector<std::uint8_t>
   for (std::size_t i = 0; i < blocked.size(); ++i) blocked[i] = (bits_[(first + i) / 8] >> ((first + i) % 8)) & 1u;
 }
 
-void RecordingVisibility::load_faces(const std::vector<Triangle>& faces) {
+void RecordingVisibility::load_triangles(const std::vector<Triangle>& faces) {
   faces_ = faces.size();
-  answer_.load_faces(faces);
+  answer_.load_faces(faces, sheets());
 }
 
 void RecordingVisibility::submit(const SegmentBatch& batch) {
   source_face_ = batch.source_face;
   needed_ = batch.needed;
-  tests_ = brute_force_tests(batch, faces_);
+  tests_ = brute_force_tests(batch, faces_, sheets());
   answer_.submit(batch);
 }
 
@@ -61,7 +61,7 @@ void RecordingVisibility::collect(std::vector<std::uint8_t>& blocked) {
   recording_.add_step(blocked, needed_, source_face_, tests_);
 }
 
-void ReplayVisibility::load_faces(const std::vector<Triangle>& faces) {
+void ReplayVisibility::load_triangles(const std::vector<Triangle>& faces) {
   faces_ = faces.size();
   next_step_ = 0;
 }
@@ -74,7 +74,7 @@ void ReplayVisibility::submit(const SegmentBatch& batch) {
                                                             : std::string("has no such step")));
   }
   recording_.step_flags(next_step_++, blocked_);
-  tests_ += brute_force_tests(batch, faces_);
+  tests_ += brute_force_tests(batch, faces_, sheets());
 }
 
 void ReplayVisibility::collect(std::vector<std::uint8_t>& blocked) { blocked = blocked_; }

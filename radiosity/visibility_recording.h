@@ -41,14 +41,14 @@ class VisibilityRecording {
 };
 
 // Segment-face tests of a brute-force backend for one batch of a scene with `faces` faces.
-std::uint64_t brute_force_tests(const SegmentBatch& batch, std::size_t faces);
+std::uint64_t brute_force_tests(const SegmentBatch& batch, std::size_t faces, const FaceSheets& sheets);
 
 class RecordingVisibility : public VisibilityBackend {
  public:
   RecordingVisibility(VisibilityBackend& answer, VisibilityRecording& recording)
       : answer_(answer), recording_(recording) {}
   std::string name() const override { return answer_.name(); }
-  void load_faces(const std::vector<Triangle>& faces) override;
+  void load_triangles(const std::vector<Triangle>& faces) override;
   void submit(const SegmentBatch& batch) override;
   void collect(std::vector<std::uint8_t>& blocked) override;
   std::uint64_t tests_performed() const override { return answer_.tests_performed(); }
@@ -69,7 +69,7 @@ class ReplayVisibility : public VisibilityBackend {
  public:
   explicit ReplayVisibility(const VisibilityRecording& recording) : recording_(recording) {}
   std::string name() const override { return "replay"; }
-  void load_faces(const std::vector<Triangle>& faces) override;
+  void load_triangles(const std::vector<Triangle>& faces) override;
   // Throws std::logic_error when the batch does not match the recorded step (another trajectory).
   void submit(const SegmentBatch& batch) override;
   void collect(std::vector<std::uint8_t>& blocked) override;

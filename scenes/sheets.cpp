@@ -1,5 +1,6 @@
 #include "scenes/sheets.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -39,6 +40,13 @@ std::size_t FaceSheets::shared_sheets() const {
     count += first_[f] == static_cast<int>(f) && size_of(static_cast<int>(f)) > 1;
   }
   return count;
+}
+
+FaceSheets FaceSheets::restricted(int first, int count) const {
+  if (one_sided()) return {};
+  std::vector<int> local(static_cast<std::size_t>(count));
+  for (int i = 0; i < count; ++i) local[i] = std::max(first_[first + i], first) - first;
+  return FaceSheets(std::move(local));
 }
 
 }  // namespace rc

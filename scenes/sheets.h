@@ -25,9 +25,11 @@ class FaceSheets {
 
   // True when every face is its own sheet.
   bool one_sided() const { return first_.empty(); }
-  int first(int face) const { return first_.empty() ? face : first_[face]; }
+  // A face outside the map (a batch's "no face", -1, or a face another card holds) is a sheet of
+  // its own, so the own-surface rule never matches it with a face of the map.
+  int first(int face) const { return inside(face) ? first_[face] : face; }
   // One past the last face of face's sheet.
-  int end(int face) const { return first_.empty() ? face + 1 : end_[face]; }
+  int end(int face) const { return inside(face) ? end_[face] : face + 1; }
   int size_of(int face) const { return end(face) - first(face); }
   bool same(int a, int b) const { return first(a) == first(b); }
   // Faces in sheets of more than one face.
@@ -35,10 +37,15 @@ class FaceSheets {
   // Sheets of more than one face.
   std::size_t shared_sheets() const;
   const std::vector<int>& first_of_face() const { return first_; }
+  // The sheets of faces [first, first + count) alone, renumbered from 0: a sheet that reaches past
+  // the range keeps the part inside it (a card that holds a share of the faces, host/multi_card).
+  FaceSheets restricted(int first, int count) const;
 
   friend bool operator==(const FaceSheets& a, const FaceSheets& b) { return a.first_ == b.first_; }
 
  private:
+  bool inside(int face) const { return face >= 0 && face < static_cast<int>(first_.size()); }
+
   std::vector<int> first_;  // empty: one-sided
   std::vector<int> end_;
 };

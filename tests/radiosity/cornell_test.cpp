@@ -17,9 +17,9 @@ class SideBySide : public VisibilityBackend {
  public:
   SideBySide(int bits, int threads) : fast_(bits, threads), brute_(bits) {}
   std::string name() const override { return "side-by-side"; }
-  void load_faces(const std::vector<Triangle>& faces) override {
-    fast_.load_faces(faces);
-    brute_.load_faces(faces);
+  void load_triangles(const std::vector<Triangle>& faces) override {
+    fast_.load_faces(faces, sheets());
+    brute_.load_faces(faces, sheets());
   }
   void submit(const SegmentBatch& batch) override {
     brute_.submit(batch);

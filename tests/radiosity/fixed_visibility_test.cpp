@@ -23,7 +23,7 @@ std::vector<std::uint8_t> brute_force(const RandomBatch& s, int bits) {
   for (std::size_t i = 0; i < s.batch.size(); ++i) {
     const pipeline::FixedVec3 end = pipeline::quantize_point(s.batch.ends[i], bits);
     for (std::size_t f = 0; f < s.faces.size(); ++f) {
-      if (is_own_face(s.batch, i, static_cast<int>(f))) continue;
+      if (is_own_surface(FaceSheets{}, s.batch, i, static_cast<int>(f))) continue;
       blocked[i] |= pipeline::segment_hits(pipeline::make_face_record(s.faces[f], bits), start, end, bits);
     }
   }
@@ -79,7 +79,7 @@ TEST(PipelineFixedVisibility, CountsEveryTestedPairExceptOwnFaces) {
   v.submit(s.batch);
   std::uint64_t expected = 0;
   for (std::size_t i = 0; i < s.batch.size(); ++i)
-    for (std::size_t f = 0; f < s.faces.size(); ++f) expected += !is_own_face(s.batch, i, static_cast<int>(f));
+    for (std::size_t f = 0; f < s.faces.size(); ++f) expected += !is_own_surface(FaceSheets{}, s.batch, i, static_cast<int>(f));
   EXPECT_EQ(v.tests_performed(), expected);
   v.submit(s.batch);  // the count accumulates over batches
   EXPECT_EQ(v.tests_performed(), 2 * expected);

@@ -28,7 +28,7 @@ std::vector<std::uint8_t> brute_force(const RandomBatch& s, pipeline::FloatForma
   for (std::size_t i = 0; i < s.batch.size(); ++i) {
     const pipeline::FloatVec3 end = pipeline::round_point(s.batch.ends[i], format);
     for (std::size_t f = 0; f < s.faces.size(); ++f) {
-      if (is_own_face(s.batch, i, static_cast<int>(f))) continue;
+      if (is_own_surface(FaceSheets{}, s.batch, i, static_cast<int>(f))) continue;
       blocked[i] |= pipeline::segment_hits(pipeline::make_float_face_record(s.faces[f], format), start,
                                            end, format);
     }
@@ -101,9 +101,9 @@ class SideBySide : public VisibilityBackend {
  public:
   explicit SideBySide(pipeline::FloatFormat format) : pipeline_(format) {}
   std::string name() const override { return "side-by-side"; }
-  void load_faces(const std::vector<Triangle>& faces) override {
-    pipeline_.load_faces(faces);
-    double_.load_faces(faces);
+  void load_triangles(const std::vector<Triangle>& faces) override {
+    pipeline_.load_faces(faces, sheets());
+    double_.load_faces(faces, sheets());
   }
   void submit(const SegmentBatch& batch) override {
     pipeline_.submit(batch);

@@ -73,7 +73,7 @@ SolverResult ProgressiveRadiosity::run() {
   // recursive summation of n products of 3-band sums, u = epsilon / 2); the limit allows twice that.
   const double rounding = 2.0 * (n + 2) * std::numeric_limits<double>::epsilon();
   energy_limit_ = result.energy.emitted * (1.0 + rounding);
-  visibility_.load_faces(scene_.face_triangles());
+  visibility_.load_faces(scene_.face_triangles(), scene_.sheets);
 
   UnshotScan scan = scan_unshot();
   charge(HostWork::PatchScan, n);
@@ -119,7 +119,9 @@ void ProgressiveRadiosity::shoot(int shooter, SolverResult& result) {
   for (int j = 0; j < static_cast<int>(scene_.patches.size()); ++j) {
     if (j == shooter) continue;
     const Patch& r = scene_.patches[j];
-    const PairGeometry g = pair_geometry(s.centre, s.normal, r.centre, r.normal);
+    // Patches of one sheet (a two-sided surface's front and back) never exchange energy.
+    const PairGeometry g = scene_.sheets.same(s.face, r.face) ? PairGeometry{}
+                                                               : pair_geometry(s.centre, s.normal, r.centre, r.normal);
     const bool exchanges = g.exchanges();
     if (options_.cull_receivers && !exchanges) {
       ++result.receivers_skipped;

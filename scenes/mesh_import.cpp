@@ -416,7 +416,7 @@ bool is_text_scene_file(const std::string& path) {
     std::istringstream words(line);
     std::string first;
     if (!(words >> first) || first[0] == '#') continue;
-    return first == "material" || first == "quad" || first == "tri" || first == "camera";
+    return first == "material" || first == "quad" || first == "tri" || first == "two-sided" || first == "camera";
   }
   // A whole text file of comments and blank lines (or an empty one) is ours too: the scene parser
   // says it has no faces, where Assimp would say it has no reader for it.

@@ -8,6 +8,7 @@
 #include "scenes/mesh_import.h"
 #include "scenes/normalise.h"
 #include "scenes/scene_file.h"
+#include "scenes/sheet_finder.h"
 #include "scenes/subdivide.h"
 
 namespace rc {
@@ -89,6 +90,9 @@ PreparedScene prepare_scene(const SceneOptions& options, const std::function<voi
   if (options.face_levels > 0) phase("splitting " + std::to_string(scene.faces.size()) + " faces");
   scene.faces = split_faces(scene.faces, options.face_levels);
   normalise(scene);
+  // Two-sided surfaces (faces back to back) become sheets, their faces contiguous, before patches
+  // name faces by index (scenes/sheet_finder.h).
+  find_sheets(scene);
   if (options.patch_size > 0) {
     check_limit(patches_of_size(scene.faces, options.patch_size), kMaxPatches,
                 "--patch-size " + format_number(options.patch_size) + " makes", "patches", "kMaxPatches");

@@ -86,6 +86,14 @@ void SceneBuilder::add_surface(const std::string& name, int material,
   if (vertices.size() == 4) add_triangle({vertices[0], vertices[2], vertices[3]}, material, surface, origin);
 }
 
+void SceneBuilder::add_two_sided_surface(const std::string& name, int material, const std::vector<Vec3>& vertices,
+                                         const std::string& origin) {
+  add_surface(name, material, vertices, origin);
+  std::vector<Vec3> back(vertices.rbegin(), vertices.rend());
+  std::rotate(back.begin(), back.end() - 1, back.end());  // v0 first: the same split diagonal
+  add_surface(name + " (back)", material, back, origin);
+}
+
 void SceneBuilder::check_planar(const std::string& name, const std::vector<Vec3>& v, const std::string& origin) const {
   // A degenerate half is dropped with a warning (add_triangle); the other half is then planar.
   if (is_degenerate({v[0], v[1], v[2]}) || is_degenerate({v[0], v[2], v[3]})) return;

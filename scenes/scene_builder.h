@@ -32,6 +32,11 @@ class SceneBuilder {
   // finite or a quad folded by more than kMaxQuadFoldDegrees.
   void add_surface(const std::string& name, int material, const std::vector<Vec3>& vertices,
                    const std::string& origin);
+  // A surface lit from both sides: the surface, then its back, surface "NAME (back)" with the same
+  // material and the vertices v0 then the rest reversed (v0 v3 v2 v1, or v0 v2 v1), whose triangles
+  // are the front's with the winding turned. find_sheets makes each pair one sheet (scenes/sheets.h).
+  void add_two_sided_surface(const std::string& name, int material, const std::vector<Vec3>& vertices,
+                             const std::string& origin);
   void set_camera(const Camera& camera) { scene_.camera = camera; }
 
   const std::vector<std::string>& warnings() const { return warnings_; }

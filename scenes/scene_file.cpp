@@ -94,7 +94,7 @@ void parse_material(LineParser& p, SceneBuilder& builder) {
   }
 }
 
-void parse_surface(LineParser& p, SceneBuilder& builder, int corners) {
+void parse_surface(LineParser& p, SceneBuilder& builder, int corners, bool two_sided) {
   const std::string name = p.word("surface name");
   const std::string material = p.word("material name");
   const int index = builder.find_material(material);
@@ -103,10 +103,23 @@ void parse_surface(LineParser& p, SceneBuilder& builder, int corners) {
   for (int i = 0; i < corners; ++i) v.push_back(p.vec3("vertex coordinate"));
   p.expect_end();
   try {
-    builder.add_surface(name, index, v, p.where());
+    if (two_sided) {
+      builder.add_two_sided_surface(name, index, v, p.where());
+    } else {
+      builder.add_surface(name, index, v, p.where());
+    }
   } catch (const std::invalid_argument& e) {
     throw SceneFileError(e.what());  // already starts with the file and line
   }
+}
+
+// "two-sided quad ..." or "two-sided tri ...".
+void parse_two_sided(LineParser& p, SceneBuilder& builder) {
+  std::string shape;
+  if (!p.next_word(shape)) p.fail("'two-sided' needs a surface: two-sided quad ... or two-sided tri ...");
+  if (shape == "quad") return parse_surface(p, builder, 4, true);
+  if (shape == "tri") return parse_surface(p, builder, 3, true);
+  p.fail("'two-sided' is followed by '" + shown(shape) + "' (expected quad or tri)");
 }
 
 void parse_camera(LineParser& p, SceneBuilder& builder) {
@@ -141,15 +154,17 @@ LoadedScene parse_scene_text(const std::string& text, const std::string& source_
     if (keyword == "material") {
       parse_material(p, builder);
     } else if (keyword == "quad") {
-      parse_surface(p, builder, 4);
+      parse_surface(p, builder, 4, false);
     } else if (keyword == "tri") {
-      parse_surface(p, builder, 3);
+      parse_surface(p, builder, 3, false);
+    } else if (keyword == "two-sided") {
+      parse_two_sided(p, builder);
     } else if (keyword == "camera") {
       if (camera_line > 0) p.fail("a second camera (the first is on line " + std::to_string(camera_line) + "); a scene has one");
       camera_line = line_no;
       parse_camera(p, builder);
     } else {
-      p.fail("unknown keyword '" + shown(keyword) + "' (expected material, quad, tri or camera)");
+      p.fail("unknown keyword '" + shown(keyword) + "' (expected material, quad, tri, two-sided or camera)");
     }
   }
   try {

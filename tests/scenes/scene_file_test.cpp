@@ -34,7 +34,7 @@ TEST(SceneFile, ExampleSceneLoads) {
 }
 
 TEST(SceneFile, ErrorsNameFileLineAndProblem) {
-  EXPECT_EQ(error_of("# nothing\nbox 1 2 3\n"), "bad.scene:2: unknown keyword 'box' (expected material, quad, tri or camera)");
+  EXPECT_EQ(error_of("# nothing\nbox 1 2 3\n"), "bad.scene:2: unknown keyword 'box' (expected material, quad, tri, two-sided or camera)");
   EXPECT_EQ(error_of(std::string(kMaterial) + "tri a w 0 0 0 1 0 0 0 1\n"), "bad.scene:2: missing vertex coordinate");
   EXPECT_EQ(error_of(std::string(kMaterial) + "tri a w 0 0 0 1 0 0 0 1 x\n"),
             "bad.scene:2: 'x' is not a finite number (vertex coordinate)");
@@ -63,7 +63,7 @@ TEST(SceneFile, ZeroAreaFacesAreDroppedAndReported) {
 
 // Control bytes (here a NUL and an escape) are shown as \xNN, so the message is whole and readable.
 TEST(SceneFile, ControlBytesInAMessageAreShownEscaped) {
-  EXPECT_EQ(error_of(std::string("box\0x 1\n", 8)), "bad.scene:1: unknown keyword 'box\\x00x' (expected material, quad, tri or camera)");
+  EXPECT_EQ(error_of(std::string("box\0x 1\n", 8)), "bad.scene:1: unknown keyword 'box\\x00x' (expected material, quad, tri, two-sided or camera)");
   EXPECT_EQ(error_of(std::string(kMaterial) + "tri a w 0 0 0 1 0 0 0 1 \x1b[31m\n"),
             "bad.scene:2: '\\x1B[31m' is not a finite number (vertex coordinate)");
 }

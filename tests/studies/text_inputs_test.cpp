@@ -61,8 +61,8 @@ TEST_F(TextInputs, TheTable2FileRefusesKeysTwiceCommentsDepthAndEncodings) {
   ASSERT_EQ(shipped.find("\"schema\""), shipped.find('{') + 4);  // `{\n  "schema"`: the edit below goes before it
   const std::string twice = write("twice.json", "{\n  \"scenes\": [],\n" + shipped.substr(shipped.find('{') + 2));
   const std::string e = error_of([&] { (void)load_paper_table(twice); });
-  EXPECT_EQ(e.substr(0, twice.size() + 48), twice + ": line ") << e;
-  EXPECT_NE(e.find(": key \"scenes\" given twice in the top level (first on line 2)"), std::string::npos) << e;
+  EXPECT_EQ(e, twice + ": line 6: key \"scenes\" given twice in the top level (first on line 2); JSON readers keep only "
+                       "one, so remove the other");
   const std::string commented = write("c.json", "# Table 2\n" + shipped);
   EXPECT_EQ(error_of([&] { (void)load_paper_table(commented); }),
             commented + ": line 1: JSON has no comments ('#' here); remove it");

@@ -119,7 +119,6 @@ void Outputs::write() {
         move_file(f.temporary, f.path);
       }
     } catch (const std::exception& e) {
-      std::vector<std::string> rest;
       std::vector<std::string> rest = not_made;
       for (std::size_t j = i; j < files_.size(); ++j) rest.push_back(files_[j].path);
       throw OutputsNotWritten(e.what(), written, rest);

@@ -78,9 +78,17 @@ void Outputs::expect(const std::string& path) {
   ::unlink(probe.c_str());
 }
 
-void Outputs::add(const std::string& path, std::string bytes) { files_.push_back({path, std::move(bytes), {}}); }
+void Outputs::add(const std::string& path, std::string bytes) { files_.push_back({path, std::move(bytes), {}, {}}); }
 
-void Outputs::move_in(const std::string& path, const std::string& temporary) { files_.push_back({path, {}, temporary}); }
+void Outputs::add_made(const std::string& path, const std::function<std::string()>& make) {
+  try {
+    files_.push_back({path, make(), {}, {}});
+  } catch (const std::exception& e) {
+    files_.push_back({path, {}, {}, e.what()});
+  }
+}
+
+void Outputs::move_in(const std::string& path, const std::string& temporary) { files_.push_back({path, {}, temporary, {}}); }
 
 std::vector<std::string> Outputs::paths() const {
   std::vector<std::string> paths;
@@ -89,9 +97,15 @@ std::vector<std::string> Outputs::paths() const {
 }
 
 void Outputs::write() {
-  std::vector<std::string> written;
+  std::vector<std::string> written, not_made;
+  std::string first_failure;
   for (std::size_t i = 0; i < files_.size(); ++i) {
     const File& f = files_[i];
+    if (!f.failure.empty()) {
+      if (first_failure.empty()) first_failure = f.path + " could not be made: " + f.failure;
+      not_made.push_back(f.path);
+      continue;
+    }
     try {
       const fs::path folder = fs::path(f.path).parent_path();
       std::error_code error;
@@ -105,12 +119,13 @@ void Outputs::write() {
         move_file(f.temporary, f.path);
       }
     } catch (const std::exception& e) {
-      std::vector<std::string> rest;
+      std::vector<std::string> rest = not_made;
       for (std::size_t j = i; j < files_.size(); ++j) rest.push_back(files_[j].path);
       throw OutputsNotWritten(e.what(), written, rest);
     }
     written.push_back(f.path);
   }
+  if (!not_made.empty()) throw OutputsNotWritten(first_failure, written, not_made);
 }
 
 TemporaryFile::TemporaryFile(const std::string& suffix) {

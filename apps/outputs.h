@@ -49,12 +49,17 @@ class Outputs {
   void expect(const std::string& path);
 
   void add(const std::string& path, std::string bytes);
+  // A file whose bytes are made now by `make`, after the work: if making them fails (an exception),
+  // the other files are still written, and write() then throws OutputsNotWritten naming this one
+  // and why. A failure after a finished solve keeps what can be written.
+  void add_made(const std::string& path, const std::function<std::string()>& make);
   // A file another library has already written elsewhere (a VCD SystemC wrote to a temporary file),
   // moved to `path` with the others.
   void move_in(const std::string& path, const std::string& temporary);
 
   // Creates each file's folder when its first file is written, and each file atomically, in the
-  // order added. Throws OutputsNotWritten at the first failure.
+  // order added. Throws OutputsNotWritten at the first failure to write, or after writing the
+  // others when a file of add_made could not be made.
   void write();
   std::vector<std::string> paths() const;
   bool empty() const { return files_.empty(); }
@@ -64,6 +69,7 @@ class Outputs {
     std::string path;
     std::string bytes;
     std::string temporary;  // move_in: the file to move
+    std::string failure;    // add_made: why its bytes could not be made (it is not written)
   };
   std::vector<File> files_;
   std::vector<std::string> expected_;  // absolute, normal

@@ -42,7 +42,12 @@ nlohmann::ordered_json solver_json(const SolverResult& r) {
   return j;
 }
 
-std::string pretty_json(const nlohmann::ordered_json& json) { return json.dump(2) + "\n"; }
+// Text that is not UTF-8 (a name or path from another tool) leaves as U+FFFD rather than as
+// nlohmann's type_error.316 after the work (docs/outputs.md); names read by the scene readers are
+// already escaped as \xNN (io/text_encoding.h).
+std::string pretty_json(const nlohmann::ordered_json& json) {
+  return json.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
+}
 
 std::string patches_csv(const Scene& scene, const std::vector<Spectrum>& radiosity) {
   std::ostringstream out;

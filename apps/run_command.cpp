@@ -303,7 +303,7 @@ int run_simulation(const RunOptions& o) {
   outputs.add(o.out_dir + "/image.png", encode_png(image));
   if (!o.trace_path.empty()) outputs.add(o.trace_path, out.trace_json);
   if (vcd) outputs.move_in(o.board.vcd_path, vcd->path());
-  outputs.add(o.out_dir + "/report.json", pretty_json(make_report(o, prepared, out, progress.seconds())));
+  outputs.add_made(o.out_dir + "/report.json", [&] { return pretty_json(make_report(o, prepared, out, progress.seconds())); });
   outputs.write();
   print_summary(o, scene, out, progress.seconds(), outputs.paths());
   return 0;

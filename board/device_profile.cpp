@@ -68,7 +68,9 @@ void read_banks(const ProfileReader& r, DeviceProfile& p) {
 
 }  // namespace
 
-DeviceProfile load_device_profile(const std::string& path) { return device_profile_from_json(read_json_file(path), path); }
+DeviceProfile load_device_profile(const std::string& path) {
+  return device_profile_from_json(read_json_file(path, io::kProfileLimitBytes, "a device profile"), path);
+}
 
 DeviceProfile device_profile_from_json(const nlohmann::ordered_json& json, const std::string& origin) {
   DeviceProfile p;

@@ -7,6 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "io/json_text.h"
+
 namespace rc::board {
 
 std::string default_config_dir() { return RC_CONFIG_DIR; }
@@ -29,16 +31,10 @@ std::string resolve_profile_path(const std::string& name_or_path, const std::str
 }
 
 nlohmann::ordered_json read_json_file(const std::string& path, std::uint64_t limit_bytes, const std::string& what) {
-  std::string text;
   try {
-    text = io::read_file(path, limit_bytes, what);
-  } catch (const io::InputFileError& e) {
+    return io::parse_json_text<nlohmann::ordered_json>(io::read_file(path, limit_bytes, what), path);
+  } catch (const io::InputFileError& e) {  // the file, or its text (io/json_text.h)
     throw std::invalid_argument(e.what());
-  }
-  try {
-    return nlohmann::ordered_json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    throw std::invalid_argument(path + ": not valid JSON: " + e.what());
   }
 }
 

@@ -25,7 +25,8 @@ std::string default_config_dir();
 std::string resolve_profile_path(const std::string& name_or_path, const std::string& kind);
 
 // Parses a JSON file of at most `limit_bytes` (io/input_file.h; `what` names the kind of file in the
-// error); throws std::invalid_argument with the file name on I/O or syntax errors.
+// error) through io/json_text.h (depth limit, duplicate keys, comments, UTF-8); throws
+// std::invalid_argument with the file name on I/O, text or syntax errors.
 nlohmann::ordered_json read_json_file(const std::string& path, std::uint64_t limit_bytes = io::kProfileLimitBytes,
                                       const std::string& what = "a profile");
 

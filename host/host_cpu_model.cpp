@@ -92,7 +92,9 @@ HostProfile with_driver_model(const HostProfile& base, const DriverModel& model)
   return host_profile_from_json(with_driver_model(base.json, model, source), base.file);
 }
 
-HostProfile load_host_profile(const std::string& path) { return host_profile_from_json(board::read_json_file(path), path); }
+HostProfile load_host_profile(const std::string& path) {
+  return host_profile_from_json(board::read_json_file(path, io::kProfileLimitBytes, "a host profile"), path);
+}
 
 HostProfile host_profile_from_json(const nlohmann::ordered_json& json, const std::string& origin) {
   HostProfile p;

@@ -44,7 +44,9 @@ std::string TraceWriter::text() const {
     events.push_back({{"name", "thread_sort_index"}, {"ph", "M"}, {"pid", 1}, {"tid", id}, {"args", {{"sort_index", id}}}});
   }
   for (const auto& e : events_) events.push_back(e);
-  return nlohmann::ordered_json{{"displayTimeUnit", "ns"}, {"traceEvents", events}}.dump() + "\n";
+  // A name that is not UTF-8 leaves as U+FFFD, never as an exception after the run (docs/outputs.md).
+  return nlohmann::ordered_json{{"displayTimeUnit", "ns"}, {"traceEvents", events}}.dump(
+             -1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 
 void TraceWriter::write(const std::string& path) const { io::write_file_atomically(path, text()); }

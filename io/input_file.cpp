@@ -4,6 +4,7 @@
 #include <cstring>
 #include <fstream>
 #include <sys/stat.h>
+#include <unistd.h>
 
 namespace rc::io {
 
@@ -22,15 +23,47 @@ struct stat stat_or_throw(const std::string& path) {
   return st;
 }
 
+// Anonymous pipes live on the kernel's pipe file system: the device of a pipe we make ourselves.
+bool on_pipe_file_system(const struct stat& st) {
+  static const dev_t pipe_device = [] {
+    int fds[2];
+    if (::pipe(fds) != 0) return dev_t{0};
+    struct stat own {};
+    const bool ok = ::fstat(fds[0], &own) == 0;
+    ::close(fds[0]);
+    ::close(fds[1]);
+    return ok ? own.st_dev : dev_t{0};
+  }();
+  return S_ISFIFO(st.st_mode) && pipe_device != 0 && st.st_dev == pipe_device;
+}
+
+const char* special_kind(const struct stat& st) {
+  if (S_ISFIFO(st.st_mode)) return on_pipe_file_system(st) ? "pipe" : "named pipe (FIFO)";
+  if (S_ISCHR(st.st_mode)) return "character device";
+  if (S_ISBLK(st.st_mode)) return "block device";
+  if (S_ISSOCK(st.st_mode)) return "socket";
+  return "special file";
+}
+
+[[noreturn]] void refuse_special(const std::string& path, const struct stat& st, const std::string& what) {
+  throw InputFileError(path + ": is a " + special_kind(st) + ", not a regular file (" + what + " must be one)");
+}
+
 }  // namespace
 
-std::string read_file(const std::string& path, std::uint64_t limit_bytes, const std::string& what) {
+bool is_anonymous_pipe(const std::string& path) {
+  struct stat st {};
+  return ::stat(path.c_str(), &st) == 0 && on_pipe_file_system(st);
+}
+
+std::string read_file(const std::string& path, std::uint64_t limit_bytes, const std::string& what, Pipes pipes) {
   const struct stat st = stat_or_throw(path);
-  if (S_ISREG(st.st_mode) && static_cast<std::uint64_t>(st.st_size) > limit_bytes)
-    throw InputFileError(too_large(path, limit_bytes, what));
+  const bool pipe_read_once = pipes == Pipes::read_once && on_pipe_file_system(st);
+  if (!S_ISREG(st.st_mode) && !pipe_read_once) refuse_special(path, st, what);
+  if (static_cast<std::uint64_t>(st.st_size) > limit_bytes) throw InputFileError(too_large(path, limit_bytes, what));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputFileError(path + ": cannot open (" + std::strerror(errno) + ")");
-  // A device or pipe has no size: read in chunks and stop one byte past the limit.
+  // A pipe has no size, and a file may grow while it is read: stop one byte past the limit.
   std::string text;
   char chunk[1 << 16];
   while (in) {
@@ -44,7 +77,7 @@ std::string read_file(const std::string& path, std::uint64_t limit_bytes, const 
 
 void check_regular_file(const std::string& path, std::uint64_t limit_bytes, const std::string& what) {
   const struct stat st = stat_or_throw(path);
-  if (!S_ISREG(st.st_mode)) throw InputFileError(path + ": not a regular file (" + what + " must be one)");
+  if (!S_ISREG(st.st_mode)) refuse_special(path, st, what);
   if (static_cast<std::uint64_t>(st.st_size) > limit_bytes) throw InputFileError(too_large(path, limit_bytes, what));
 }
 

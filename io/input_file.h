@@ -21,15 +21,26 @@ class InputFileError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Whether a reader takes a pipe. Only `--scene` does (docs/scenes.md): an anonymous pipe, as bash's
+// process substitution `--scene <(gunzip -c room.scene.gz)` or a shell pipe into /dev/stdin gives,
+// is read once into memory. A named pipe (FIFO) is refused everywhere: opening one blocks until a
+// writer comes, which may be never.
+enum class Pipes { refused, read_once };
+
 // The whole file as bytes. Throws InputFileError naming `path` when it cannot be opened, is a
-// directory, or holds more than `limit_bytes` (`what` names the kind of input in that message, e.g.
-// "a scene file"). Reads at most limit_bytes + 1 bytes, so an endless stream (/dev/zero, a pipe)
-// stops at the limit.
-std::string read_file(const std::string& path, std::uint64_t limit_bytes, const std::string& what);
+// directory, a device, a socket or a pipe (before any read: a FIFO blocks on open; an anonymous
+// pipe is read with Pipes::read_once), or holds more than `limit_bytes` (`what` names the kind of
+// input in that message, e.g. "a scene file"). A pipe is read to at most limit_bytes + 1 bytes.
+std::string read_file(const std::string& path, std::uint64_t limit_bytes, const std::string& what,
+                      Pipes pipes = Pipes::refused);
 
 // Throws InputFileError unless `path` names a regular file of at most `limit_bytes` (for readers
-// that open the file themselves, such as Assimp's importer).
+// that open the file themselves, such as Assimp's importer). A special file is named by its kind:
+// "/dev/zero: is a character device, not a regular file (a mesh file must be one)".
 void check_regular_file(const std::string& path, std::uint64_t limit_bytes, const std::string& what);
+
+// True when `path` is an anonymous pipe (process substitution, a shell pipe), not a named one.
+bool is_anonymous_pipe(const std::string& path);
 
 // The UTF-8 byte order mark some editors put first in a text file; text readers skip it.
 inline constexpr char kUtf8ByteOrderMark[] = "\xEF\xBB\xBF";

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/input_file.h"
+#include "io/json_text.h"
 #include "pipeline/bit_bounds.h"
 #include "pipeline/fixed_format.h"
 #include "pipeline/hardware_blocks.h"
@@ -66,9 +67,9 @@ ResourceModel ResourceModel::load_default() { return load(default_path()); }
 ResourceModel ResourceModel::from_json_text(const std::string& text, const std::string& origin) {
   json j;
   try {
-    j = json::parse(text);
-  } catch (const json::exception& e) {
-    fail(origin, std::string("invalid JSON: ") + e.what());
+    j = io::parse_json_text(text, origin);  // depth, duplicate keys, comments, UTF-8 (io/json_text.h)
+  } catch (const io::InputFileError& e) {
+    throw std::runtime_error(e.what());
   }
   ResourceModel m;
 

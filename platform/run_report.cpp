@@ -52,7 +52,7 @@ std::string encode(const RunReport& report) {
   nlohmann::json j = report;
   j["energy"] = report.energy ? nlohmann::json(*report.energy) : nlohmann::json();
   j["energy_missing"] = report.energy_missing;
-  return j.dump();
+  return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);  // a foreign byte: U+FFFD
 }
 
 RunReport decode(const std::string& text) {

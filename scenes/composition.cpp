@@ -12,9 +12,11 @@
 #include <nlohmann/json.hpp>
 
 #include "io/input_file.h"
+#include "io/json_text.h"
 #include "scenes/cornell_box.h"
 #include "scenes/mesh_import.h"
 #include "scenes/scene_builder.h"
+#include "scenes/scene_source.h"
 
 namespace rc {
 
@@ -94,8 +96,9 @@ LoadedScene load_room(const Description& d) {
   d.only_keys(room, "room", {"file"});
   if (!room.contains("file")) d.fail("room.file", "missing");
   const std::string file = d.file(room["file"], "room.file");
-  if (is_composition_file(file)) d.fail("room.file", file + " is a composition; compositions do not nest (name its room or meshes here)");
-  if (is_text_scene_file(file)) return load_scene_file(file);
+  const SceneSource source = read_scene_source(file);  // read once; a FIFO or device is refused by name
+  if (source.format == SceneFormat::composition) d.fail("room.file", file + " is a composition; compositions do not nest (name its room or meshes here)");
+  if (source.format == SceneFormat::text) return parse_scene_text(source.bytes, file);
   MeshImportOptions o;
   o.require_emitter = false;  // the description may add the light
   return import_mesh_file(file, o);
@@ -183,9 +186,9 @@ void append(Scene& scene, Scene part, const Material* override_material) {
 
 namespace {
 
-std::string read_description(const std::string& path) {
+nlohmann::json parse_description(const std::string& text, const std::string& path) {
   try {
-    return io::read_file(path, io::kSceneLimitBytes, "a scene file");
+    return io::parse_json_text(text, path);  // depth, duplicate keys, comments, UTF-8, syntax
   } catch (const io::InputFileError& e) {
     throw SceneFileError(e.what());
   }
@@ -201,26 +204,26 @@ bool has_schema(const nlohmann::json& object) {
 }  // namespace
 
 bool is_composition_file(const std::string& path) {
-  // Only a file whose first non-space character (within kSniffBytes) is '{' is read whole.
-  // A leading byte order mark is skipped, as is_text_scene_file and nlohmann::json skip it.
-  std::ifstream in(path, std::ios::binary);
-  std::string head(kSniffBytes, '\0');
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(in.gcount()));
-  head = io::without_byte_order_mark(std::move(head));
-  const std::size_t first = head.find_first_not_of(" \t\n\v\f\r");  // std::isspace in the C locale
-  if (first == std::string::npos || head[first] != '{') return false;
-  const nlohmann::json j = nlohmann::json::parse(read_description(path), nullptr, false);
-  return j.is_object() && has_schema(j);
+  try {
+    const SceneSource source = read_scene_source(path);
+    return source.format == SceneFormat::composition && has_schema(parse_description(source.bytes, path));
+  } catch (const SceneFileError&) {
+    return false;
+  }
 }
 
 LoadedScene load_composition(const std::string& path) {
-  nlohmann::json json;
+  std::string text;
   try {
-    json = nlohmann::json::parse(read_description(path));
-  } catch (const nlohmann::json::exception& e) {
-    throw SceneFileError(path + ": not valid JSON: " + e.what());
+    text = io::read_file(path, io::kSceneLimitBytes, "a scene file");
+  } catch (const io::InputFileError& e) {
+    throw SceneFileError(e.what());
   }
+  return load_composition_text(text, path);
+}
+
+LoadedScene load_composition_text(const std::string& text, const std::string& path) {
+  const nlohmann::json json = parse_description(text, path);
   const Description d(path, json);
   d.only_keys(json, "(top level)", {"schema", "room", "meshes", "light"});
   if (!has_schema(json)) d.fail("schema", std::string("must be \"") + kSchema + "\"");
@@ -238,8 +241,9 @@ LoadedScene load_composition(const std::string& path) {
     o.require_emitter = false;
     const std::string file = d.file(m["file"], key + ".file");
     // Assimp would say only "No suitable reader found" for our own formats.
-    if (is_composition_file(file)) d.fail(key + ".file", file + " is a composition; compositions do not nest (name its meshes here)");
-    if (is_text_scene_file(file)) d.fail(key + ".file", file + " is a text scene; a mesh must be a mesh file (OBJ, PLY, OFF, STL, ...), or use it as the room");
+    const SceneFormat format = read_scene_source(file).format;
+    if (format == SceneFormat::composition) d.fail(key + ".file", file + " is a composition; compositions do not nest (name its meshes here)");
+    if (format == SceneFormat::text) d.fail(key + ".file", file + " is a text scene; a mesh must be a mesh file (OBJ, PLY, OFF, STL, ...), or use it as the room");
     LoadedScene mesh = import_mesh_file(file, o);
     mesh.scene.faces = place(d, m, key, std::move(mesh.scene.faces));
     Material override_material;

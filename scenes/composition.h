@@ -28,5 +28,8 @@ bool is_composition_file(const std::string& path);
 // Throws SceneFileError naming the file and the key for a bad description, and passes on the
 // errors of the room and mesh files it reads.
 LoadedScene load_composition(const std::string& path);
+// The same from the description's text, already read (from a pipe, say); `path` names it in errors
+// and is the folder its mesh files are found in.
+LoadedScene load_composition_text(const std::string& text, const std::string& path);
 
 }  // namespace rc

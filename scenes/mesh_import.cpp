@@ -1,6 +1,9 @@
 #include "scenes/mesh_import.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <stdexcept>
 #include <chrono>
 #include <cstdint>
 #include <type_traits>
@@ -22,6 +25,8 @@
 
 #include "io/child_process.h"
 #include "io/input_file.h"
+#include "io/text_encoding.h"
+#include "scenes/obj_material_names.h"
 #include "scenes/scene_builder.h"
 
 namespace rc {
@@ -34,13 +39,35 @@ std::string format_colour(const aiColor3D& c) {
   return text;
 }
 
+// A material colour the text format would refuse (docs/scenes.md, Meshes): the child process sends
+// its message to the parent as the reader's error.
+class MaterialError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+// Reflectance: finite, in [0, 1] (at or above max_reflectance it is clamped, with a warning).
+// Emission: finite and not negative. NaN, negative and infinite components used to become 0 or
+// pass silently.
+void check_colour(const aiColor3D& c, const std::string& material, const char* what, bool reflectance) {
+  for (const float x : {c.r, c.g, c.b}) {
+    const bool bad = !std::isfinite(x) || x < 0 || (reflectance && x > 1);
+    if (!bad) continue;
+    throw MaterialError("material '" + material + "': " + what + " " + format_colour(c) + ": " +
+                        (reflectance ? "a reflectance must be finite and within [0, 1] (0.99 and above are clamped to 0.99)"
+                                     : "an emission must be finite and not negative") +
+                        " (docs/scenes.md, Meshes)");
+  }
+}
+
 // The solver's material from an Assimp material: diffuse -> reflectance (clamped below 1, with a
-// warning), emissive -> emission.
+// warning), emissive -> emission. Names that are not UTF-8 (a Latin-1 MTL) are kept with their
+// foreign bytes shown as \xNN: they reach report.json and the terminal.
 Material material_from(const aiMaterial& m, unsigned index, const MeshImportOptions& o,
                        std::vector<std::string>& warnings, const std::string& path) {
   Material out;
   aiString name;
-  out.name = m.Get(AI_MATKEY_NAME, name) == AI_SUCCESS && name.length > 0 ? std::string(name.C_Str())
+  out.name = m.Get(AI_MATKEY_NAME, name) == AI_SUCCESS && name.length > 0 ? io::printable_utf8(name.C_Str())
                                                                            : "material " + std::to_string(index);
   out.name += " #" + std::to_string(index);  // Assimp's names need not be unique; ours must be
   aiColor3D diffuse(o.default_reflectance, o.default_reflectance, o.default_reflectance);
@@ -48,10 +75,11 @@ Material material_from(const aiMaterial& m, unsigned index, const MeshImportOpti
     warnings.push_back(path + ": material '" + out.name + "' has no diffuse colour; reflectance " +
                        std::to_string(o.default_reflectance) + " (docs/scenes.md)");
   }
+  check_colour(diffuse, out.name, "diffuse colour", true);
   const float rgb[3] = {diffuse.r, diffuse.g, diffuse.b};
   bool clamped = false;
   for (std::size_t b = 0; b < kBands; ++b) {
-    double r = std::max(0.0, static_cast<double>(rgb[b]));
+    double r = static_cast<double>(rgb[b]);
     if (r > o.max_reflectance) {
       r = o.max_reflectance;
       clamped = true;
@@ -64,8 +92,9 @@ Material material_from(const aiMaterial& m, unsigned index, const MeshImportOpti
   }
   aiColor3D emissive(0, 0, 0);
   if (m.Get(AI_MATKEY_COLOR_EMISSIVE, emissive) == AI_SUCCESS) {
+    check_colour(emissive, out.name, "emissive colour", false);
     const float e[3] = {emissive.r, emissive.g, emissive.b};
-    for (std::size_t b = 0; b < kBands; ++b) out.emission.band[b] = std::max(0.0, static_cast<double>(e[b]));
+    for (std::size_t b = 0; b < kBands; ++b) out.emission.band[b] = static_cast<double>(e[b]);
   }
   return out;
 }
@@ -196,7 +225,8 @@ RawMesh raw_mesh(const aiScene& scene, const MeshImportOptions& o, const std::st
       raw.materials.push_back(material_from(*scene.mMaterials[mat], mat, o, raw.warnings, path));
     }
     RawMesh::Part part;
-    part.origin = path + ": mesh " + std::to_string(m) + (mesh.mName.length ? " '" + std::string(mesh.mName.C_Str()) + "'" : "");
+    part.origin = io::printable_utf8(path) + ": mesh " + std::to_string(m) +
+                  (mesh.mName.length ? " '" + io::printable_utf8(mesh.mName.C_Str()) + "'" : "");
     part.material = mat < raw.material_of.size() ? raw.material_of[mat] : -1;
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
       const aiFace& face = mesh.mFaces[f];
@@ -340,6 +370,9 @@ RawMesh read_isolated(const std::string& path, const MeshImportOptions& o, std::
         } catch (const std::bad_alloc&) {
           raw = RawMesh{};
           raw.error = std::string("reading it failed") + memory_note();
+        } catch (const MaterialError& e) {
+          raw = RawMesh{};
+          raw.error = e.what();
         }
         return encode(raw);
       },
@@ -400,28 +433,21 @@ LoadedScene build_scene(const std::string& path, const MeshImportOptions& o, con
   return out;
 }
 
-}  // namespace
-
-bool is_text_scene_file(const std::string& path) {
-  // The first keyword is looked for in the first kSniffBytes only: a device or a file without line
-  // breaks (/dev/zero) must not be read to its end here.
-  std::ifstream file(path, std::ios::binary);
-  if (!file) return false;
-  std::string head(kSniffBytes, '\0');
-  file.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(file.gcount()));
-  std::istringstream in(io::without_byte_order_mark(head));
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream words(line);
-    std::string first;
-    if (!(words >> first) || first[0] == '#') continue;
-    return first == "material" || first == "quad" || first == "tri" || first == "two-sided" || first == "camera";
-  }
-  // A whole text file of comments and blank lines (or an empty one) is ours too: the scene parser
-  // says it has no faces, where Assimp would say it has no reader for it.
-  return head.size() < kSniffBytes && head.find('\0') == std::string::npos;
+bool is_obj_name(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".obj";
 }
+
+std::string read_mesh_text(const std::string& path) {
+  try {
+    return io::read_file(path, io::kSceneLimitBytes, "a mesh file");
+  } catch (const io::InputFileError& e) {
+    throw SceneFileError(e.what());
+  }
+}
+
+}  // namespace
 
 LoadedScene import_mesh_file(const std::string& path, const MeshImportOptions& o) {
   // Assimp opens the file itself and would read a device or a pipe without end.
@@ -432,8 +458,12 @@ LoadedScene import_mesh_file(const std::string& path, const MeshImportOptions& o
   }
   if (!std::ifstream(path)) throw SceneFileError(path + ": cannot open");
   check_ply_header(path);
-  const RawMesh raw = read_isolated(path, o, std::filesystem::file_size(path));
+  RawMesh raw = read_isolated(path, o, std::filesystem::file_size(path));
   if (!raw.error.empty()) throw SceneFileError(path + ": " + raw.error);
+  if (is_obj_name(path)) {
+    const std::vector<std::string> undefined = undefined_obj_materials(read_mesh_text(path), path);
+    raw.warnings.insert(raw.warnings.end(), undefined.begin(), undefined.end());
+  }
   return build_scene(path, o, raw);
 }
 

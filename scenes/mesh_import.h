@@ -12,6 +12,7 @@
 #include <string>
 
 #include "scenes/scene_file.h"
+#include "scenes/scene_source.h"  // is_text_scene_file, which callers of this header used
 
 namespace rc {
 
@@ -32,11 +33,5 @@ struct MeshImportOptions {
 // Assimp could not read it, it has no triangles, or (with require_emitter) none of its materials
 // emits light.
 LoadedScene import_mesh_file(const std::string& path, const MeshImportOptions& options = {});
-
-// True when the file is in rc2000sim's own text scene format: its first keyword, within the first
-// kSniffBytes, is material, quad, tri or camera, or it is a short text of nothing but comments and
-// blank lines (or empty), which then gets the scene parser's error. Anything else goes to Assimp.
-constexpr std::size_t kSniffBytes = 64 * 1024;
-bool is_text_scene_file(const std::string& path);
 
 }  // namespace rc

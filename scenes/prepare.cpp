@@ -8,6 +8,7 @@
 #include "scenes/mesh_import.h"
 #include "scenes/normalise.h"
 #include "scenes/scene_file.h"
+#include "scenes/scene_source.h"
 #include "scenes/sheet_finder.h"
 #include "scenes/subdivide.h"
 
@@ -48,6 +49,21 @@ std::uint64_t patches_of_size(const std::vector<Face>& faces, double size) {
   return count;
 }
 
+// Our text format, a composition (JSON), or any format Assimp reads, recognised by content. The
+// file is read once (scenes/scene_source.h): `--scene <(...)`, an anonymous pipe, is allowed, and
+// the text readers parse the bytes read; Assimp opens files by name, so a mesh must be a file.
+LoadedScene load_scene(const std::string& path) {
+  SceneSource source = read_scene_source(path, io::Pipes::read_once);
+  if (source.format == SceneFormat::text) return parse_scene_text(source.bytes, path);
+  if (source.format == SceneFormat::composition) return load_composition_text(source.bytes, path);
+  if (source.from_pipe) {
+    throw SceneFileError(path + ": a mesh from a pipe; the mesh reader (Assimp) opens files by name (an OBJ "
+                                "finds its .mtl beside it): give the mesh file itself");
+  }
+  source.bytes = std::string();  // Assimp's child process reads the file itself
+  return import_mesh_file(path);
+}
+
 }  // namespace
 
 PreparedScene prepare_scene(const SceneOptions& options) { return prepare_scene(options, nullptr); }
@@ -61,10 +77,7 @@ PreparedScene prepare_scene(const SceneOptions& options, const std::function<voi
   if (options.file.empty()) {
     out.scene = cornell_box();
   } else {
-    // Our text format, a composition (JSON), or any format Assimp reads (recognised by content).
-    LoadedScene loaded = is_text_scene_file(options.file)    ? load_scene_file(options.file)
-                         : is_composition_file(options.file) ? load_composition(options.file)
-                                                             : import_mesh_file(options.file);
+    LoadedScene loaded = load_scene(options.file);
     out.scene = std::move(loaded.scene);
     out.warnings = std::move(loaded.warnings);
   }

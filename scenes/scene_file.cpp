@@ -6,6 +6,7 @@
 
 #include "io/input_file.h"
 #include "io/parse_number.h"
+#include "io/text_encoding.h"
 #include "scenes/scene_builder.h"
 
 namespace rc {
@@ -140,6 +141,8 @@ void parse_camera(LineParser& p, SceneBuilder& builder) {
 }  // namespace
 
 LoadedScene parse_scene_text(const std::string& text, const std::string& source_name) {
+  if (const std::string wide = io::wide_encoding(text); !wide.empty())
+    throw SceneFileError(source_name + ": " + wide + "; save it as UTF-8");
   SceneBuilder builder(source_name);
   std::istringstream in(io::without_byte_order_mark(text));
   std::string line;
@@ -149,6 +152,13 @@ LoadedScene parse_scene_text(const std::string& text, const std::string& source_
     ++line_no;
     if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
     LineParser p(source_name, line_no, line);
+    // Names reach report.json and the terminal: they must be UTF-8 (comments may be anything).
+    if (const std::size_t bad = io::first_invalid_utf8(line); bad != std::string::npos) {
+      char byte[8];
+      std::snprintf(byte, sizeof byte, "0x%02X", static_cast<unsigned char>(line[bad]));
+      p.fail(std::string("not UTF-8: byte ") + byte + " at column " + std::to_string(bad + 1) +
+             " (Latin-1 or another 8-bit encoding?); save the file as UTF-8");
+    }
     std::string keyword;
     if (!p.next_word(keyword)) continue;
     if (keyword == "material") {

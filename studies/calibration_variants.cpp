@@ -77,7 +77,7 @@ nlohmann::ordered_json variants_document(const std::vector<VariantCalibration>& 
 }
 
 std::vector<CalibratedVariant> load_calibrated_variants(const std::string& path) {
-  const nlohmann::ordered_json j = board::read_json_file(path);
+  const nlohmann::ordered_json j = board::read_json_file(path, io::kProfileLimitBytes, "a variants file");
   std::vector<CalibratedVariant> out;
   try {
     if (j.at("schema") != "rc2000sim.host-variants/1") {

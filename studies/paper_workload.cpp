@@ -14,6 +14,7 @@
 
 #include "board/profile_reader.h"
 #include "io/input_file.h"
+#include "io/json_text.h"
 #include "radiosity/radiosity.h"
 
 namespace rc {
@@ -85,17 +86,11 @@ PaperRow paper_row(const nlohmann::json& scene, const std::string& path, const s
 }  // namespace
 
 std::vector<PaperRow> load_paper_table(const std::string& path) {
-  std::string text;
-  try {
-    text = io::read_file(path, io::kProfileLimitBytes, "the paper's Table 2 data");
-  } catch (const io::InputFileError& e) {
-    throw std::runtime_error(e.what());
-  }
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    throw std::runtime_error(path + ": not valid JSON: " + e.what());
+    j = io::parse_json_text(io::read_file(path, io::kProfileLimitBytes, "the paper's Table 2 data"), path);
+  } catch (const io::InputFileError& e) {  // the file, or its text (io/json_text.h)
+    throw std::runtime_error(e.what());
   }
   if (!j.is_object()) throw std::runtime_error(path + ": must be a JSON object with \"schema\" and \"scenes\"");
   only_keys(j, path, "", {"schema", "description", "source", "scenes"});

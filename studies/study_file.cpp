@@ -9,6 +9,7 @@
 #include <toml++/toml.h>
 
 #include "io/input_file.h"
+#include "io/toml_text.h"
 
 #include "studies/paper_workload.h"
 
@@ -367,6 +368,11 @@ Study default_study() {
 }
 
 Study parse_study_text(const std::string& text, const std::string& path) {
+  try {
+    io::check_toml_text(text, path);  // UTF-8 and the length of dotted keys, which toml++ lacks
+  } catch (const io::InputFileError& e) {
+    throw std::invalid_argument(e.what());
+  }
   toml::table root;
   try {
     root = toml::parse(text, path);

@@ -44,7 +44,7 @@ TEST(ProfileValidation, MissingAndNonFileProfilesAreNamed) {
   EXPECT_EQ(error_of([] { (void)find_device_profile("no-such-board"); }),
             "no devices profile 'no-such-board' (looked for " + default_config_dir() + "/devices/no-such-board.json)");
   EXPECT_EQ(error_of([] { (void)find_device_profile("/dev/null"); }),
-            "/dev/null: not a regular file (a device profile must be one)");
+            "/dev/null: is a character device, not a regular file (a device profile must be one)");
   EXPECT_EQ(error_of([] { (void)find_device_profile("/tmp/"); }), "/tmp/: is a directory, not a file");
 }
 

@@ -50,9 +50,12 @@ TEST(InputFile, RefusesAFileOverTheLimitNamingPathAndLimit) {
             dir + "/a.txt: larger than the 5-byte limit for a test file");
 }
 
-TEST(InputFile, StopsAnEndlessStreamAtTheLimit) {
+// A device is refused by name before any read (it used to be read to the limit).
+TEST(InputFile, ADeviceIsRefusedByItsKind) {
   EXPECT_EQ(message_of([] { read_file("/dev/zero", 1000, "a scene file"); }),
-            "/dev/zero: larger than the 1000-byte limit for a scene file");
+            "/dev/zero: is a character device, not a regular file (a scene file must be one)");
+  EXPECT_EQ(message_of([] { read_file("/dev/null", 1000, "a profile", Pipes::read_once); }),
+            "/dev/null: is a character device, not a regular file (a profile must be one)");
 }
 
 TEST(InputFile, NamesADirectoryAndAMissingFile) {
@@ -66,7 +69,7 @@ TEST(InputFile, CheckRegularFileRefusesDevicesAndLargeFiles) {
   std::ofstream(dir + "/m.obj") << "v 0 0 0\n";
   EXPECT_NO_THROW(check_regular_file(dir + "/m.obj", 100, "a mesh"));
   EXPECT_EQ(message_of([] { check_regular_file("/dev/zero", 100, "a mesh"); }),
-            "/dev/zero: not a regular file (a mesh must be one)");
+            "/dev/zero: is a character device, not a regular file (a mesh must be one)");
   EXPECT_EQ(message_of([&] { check_regular_file(dir + "/m.obj", 3, "a mesh"); }),
             dir + "/m.obj: larger than the 3-byte limit for a mesh");
 }

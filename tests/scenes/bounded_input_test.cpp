@@ -45,7 +45,7 @@ TEST(BoundedInput, AnEndlessDeviceIsRefusedAtOnce) {
   const auto start = std::chrono::steady_clock::now();
   SceneOptions o;
   o.file = "/dev/zero";
-  EXPECT_EQ(prepare_error(o), "/dev/zero: not a regular file (a mesh file must be one)");
+  EXPECT_EQ(prepare_error(o), "/dev/zero: is a character device, not a regular file (a scene file must be one)");
   EXPECT_FALSE(is_text_scene_file("/dev/zero"));
   EXPECT_FALSE(is_composition_file("/dev/zero"));
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
@@ -112,7 +112,8 @@ TEST(BoundedInput, AMeshEmissionThatIsNotFiniteIsNamed) {
     import_mesh_file(path);
     FAIL() << "no error";
   } catch (const SceneFileError& e) {
-    EXPECT_EQ(std::string(e.what()), path + ": material 'hot #1': emission inf is outside [0, 1e+308)");
+    EXPECT_EQ(std::string(e.what()), path + ": material 'hot #1': emissive colour (inf, 1, 1): an emission must be "
+                                            "finite and not negative (docs/scenes.md, Meshes)");
   }
   std::filesystem::remove_all(dir);
 }

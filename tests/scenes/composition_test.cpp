@@ -119,7 +119,7 @@ TEST_F(CompositionTest, ErrorsNameTheFileAndTheKey) {
   EXPECT_EQ(error_of(R"({"schema": "rc2000sim.composition/1", "meshes": [{"file": "tetra.obj", "scale": 2,
             "fit_into": {"min": [0, 0, 0], "max": [1, 1, 1]}}]})"),
             bad + ": meshes[0].fit_into: excludes scale and translate");
-  EXPECT_NE(error_of("{not json").find(bad + ": not valid JSON"), std::string::npos);
+  EXPECT_NE(error_of("{not json").find(bad + ": line 1, column 3: not valid JSON"), std::string::npos);
   EXPECT_FALSE(is_composition_file(write("other.json", R"({"schema": "something else"})")));
   // A schema of another type is not this format (value() would throw a type_error on it).
   EXPECT_EQ(error_of(R"({"schema": 1, "room": "cornell-box"})"),

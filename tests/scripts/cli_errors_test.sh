@@ -19,7 +19,7 @@ cases=0
 refused() {
   local out="$1" expected="$2"; shift 2
   local rc=0
-  "$sim" "$@" > "$work/stdout.txt" 2> "$work/stderr.txt" || rc=$?
+  timeout 60 "$sim" "$@" > "$work/stdout.txt" 2> "$work/stderr.txt" || rc=$?  # a hang fails the case
   [ "$rc" -ne 0 ] || fail "accepted: $*"
   [ "$rc" -lt 128 ] || { cat "$work/stderr.txt" >&2; fail "killed by signal $((rc - 128)): $*"; }
   grep -qF -- "$expected" "$work/stderr.txt" || { cat "$work/stderr.txt" >&2; fail "'$expected' not in the error of: $*"; }
@@ -76,7 +76,7 @@ refused "$work/o" "banks.capacity_bytes=16 (study $work/capacity.toml): banks.ca
   sweep --study "$work/capacity.toml" --quiet --out "$work/o"
 
 # A path that is there but is not a file; patches smaller than the splitting reaches.
-refused "$work/o" "/dev/null: not a regular file (a device profile must be one)" "${board[@]}" --device /dev/null --out "$work/o"
+refused "$work/o" "/dev/null: is a character device, not a regular file (a device profile must be one)" "${board[@]}" --device /dev/null --out "$work/o"
 refused "$work/o" "--patch-size 1e-09: face 0: patches of at most 1e-09 need more than 8 levels of splitting" \
   run --patch-size 1e-9 --steps 3 --quiet --out "$work/o"
 
@@ -152,4 +152,35 @@ grep -q "faces (the first: face .*) have no area on the 2^-15 grid" "$work/stder
 grep -q "have no area on the 2^-15 grid" "$work/far/report.json" || fail "report.json does not carry the warning"
 "$sim" run --scene "$work/far.json" --steps 1 --image-size 16 --quiet --out "$work/far-float" 2> "$work/stderr.txt" > /dev/null
 ! grep -q "have no area" "$work/stderr.txt" || fail "a double-precision run warns of a fixed-point grid"
+# Special files and foreign text (docs/reliability.md, round three). A FIFO anywhere used to block
+# forever: each is refused by name at once (timeout: a hang fails the test instead of stalling it).
+mkfifo "$work/in.fifo"
+fifo="$work/in.fifo: is a named pipe (FIFO), not a regular file"
+refused "$work/o" "$fifo (a scene file must be one)" run --scene "$work/in.fifo" --steps 1 --quiet --out "$work/o"
+refused "$work/o" "$fifo (a study file must be one)" sweep --study "$work/in.fifo" --quiet --out "$work/o"
+refused "$work/o" "$fifo (a device profile must be one)" run --impl board --device "$work/in.fifo" --steps 1 --quiet --out "$work/o"
+refused "$work/o" "$fifo (the paper's Table 2 data must be one)" paper --table "$work/in.fifo" --out "$work/o"
+refused "$work/o" "$fifo (a variants file must be one)" paper --variants "$work/in.fifo" --out "$work/o"
+printf '{"schema": "rc2000sim.composition/1", "room": {"file": "in.fifo"}}' > "$work/fifo-room.json"
+refused "$work/o" "$fifo (a scene file must be one)" run --scene "$work/fifo-room.json" --steps 1 --quiet --out "$work/o"
+# A composition with a key twice, a comment, or 200,000 levels of nesting (a crash before).
+printf '{"schema": "rc2000sim.composition/1",\n "meshes": [],\n "meshes": []}' > "$work/twice.json"
+refused "$work/o" "$work/twice.json: line 3: key \"meshes\" given twice in the top level (first on line 2)" \
+  run --scene "$work/twice.json" --steps 1 --quiet --out "$work/o"
+python3 -c 'import sys; open(sys.argv[1], "w").write("[" * 200000 + "]" * 200000)' "$work/deep.json"
+refused "$work/o" "$work/deep.json: line 1: nested deeper than the limit of 64" run --scene "$work/deep.json" --steps 1 --quiet --out "$work/o"
+# --scene <(...) is read once (it used to say "has no faces").
+"$sim" run --scene <(cat "$root/scenes/examples/two-rooms.scene") --steps 2 --image-size 16 --quiet --out "$work/piped" \
+  > /dev/null || fail "a scene through process substitution failed"
+[ -s "$work/piped/report.json" ] || fail "the piped run wrote no report.json"
+# A Latin-1 material name in an MTL: the run finishes and report.json holds it escaped (it used to fail
+# with type_error.316 after the solve and write nothing).
+printf 'newmtl caf\xe9\nKd 0.5 0.5 0.5\nKe 1 1 1\n' > "$work/latin1.mtl"
+printf 'mtllib latin1.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nusemtl caf\xe9\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n' > "$work/latin1.obj"
+printf '{"schema": "rc2000sim.composition/1", "meshes": [{"file": "latin1.obj", "scale": 100, "translate": [278, 100, 279]}]}' \
+  > "$work/latin1.json"
+"$sim" run --scene "$work/latin1.json" --steps 2 --image-size 16 --quiet --out "$work/latin1" > /dev/null 2>&1 ||
+  fail "the run with a Latin-1 material name failed"
+python3 -c 'import json, sys; json.load(open(sys.argv[1], encoding="utf-8"))' "$work/latin1/report.json" ||
+  fail "report.json of the Latin-1 run is not UTF-8 JSON"
 echo "PASS: $cases refusals, each with its message and nothing written; the good paths write their files"

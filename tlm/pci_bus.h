@@ -145,6 +145,7 @@ class PciBus : public sc_core::sc_module {
     int port;
     tlm::tlm_generic_payload* trans;
     sc_core::sc_time request;
+    std::uint64_t ticket;  // its turn on the bus (arrival order)
   };
   // The base-protocol state of one `in` port.
   struct AtPort {
@@ -166,6 +167,8 @@ class PciBus : public sc_core::sc_module {
   Carried carry(int port, tlm::tlm_generic_payload& trans, const sc_core::sc_time& request);
   sc_core::sc_time bus_time(const tlm::tlm_generic_payload& trans) const;
   sc_core::sc_time forward(tlm::tlm_generic_payload& trans, const Decoded& hit, const sc_core::sc_time& start);
+  void wait_for_turn(std::uint64_t ticket);
+  sc_core::sc_time start_for(const sc_core::sc_time& request) const;
   sc_core::sc_time master_abort(tlm::tlm_generic_payload& trans);
   PciInitiatorReport& counters(int port);
   void count(PciInitiatorReport& c, const tlm::tlm_generic_payload& trans, const sc_core::sc_time& occupancy,
@@ -174,6 +177,7 @@ class PciBus : public sc_core::sc_module {
   // Approximately timed path.
   void carry_requests_thread();
   void carry_queued_requests();
+  bool end_request(int port, tlm::tlm_generic_payload& trans, const sc_core::sc_time& start);
   void deliver(tlm::tlm_generic_payload& trans, const tlm::tlm_phase& phase);  // m_peq callback
   void send_response(int port, tlm::tlm_generic_payload& trans);
   void response_ended(int port, tlm::tlm_generic_payload& trans);
@@ -186,6 +190,12 @@ class PciBus : public sc_core::sc_module {
   sc_core::sc_time m_bus_free_at = sc_core::SC_ZERO_TIME;  // of this bus's arbitration when it owns it
   PciBus* m_arbiter = this;  // whose bus_free_at arbitrates this bus (itself unless shared)
   unsigned m_sharers = 0;    // buses arbitrating through this one
+  // Turns on the bus, in the arbiter: every transaction (b_transport call or BEGIN_REQ) takes a
+  // ticket on arrival and is carried when m_serving reaches it, so one is on the bus at a time even
+  // while a target waits inside b_transport.
+  std::uint64_t m_tickets = 0;
+  std::uint64_t m_serving = 0;
+  sc_core::sc_event m_turn_changed;
   std::vector<PciInitiatorReport> m_initiators;
 
   std::deque<AtRequest> m_requests;  // AT requests not yet carried, in arrival order

@@ -34,6 +34,8 @@
 #include <tlm_utils/simple_initiator_socket.h>
 #include <tlm_utils/simple_target_socket.h>
 
+#include "tests/tlm/at_target.h"
+
 namespace rc::tlmx::test {
 
 // One transaction as an initiator asks for it.
@@ -198,13 +200,14 @@ class LtInitiator : public sc_core::sc_module {
     fill(trans, r);
     const Attributes sent = Attributes::of(trans);
     sc_core::sc_time delay = r.delay;
+    const sc_core::sc_time requested = sc_core::sc_time_stamp() + r.delay;  // the call may wait
     out->b_transport(trans, delay);
-    if (delay < r.delay) m_log.add(r, "b_transport returned a smaller delay than it was given");
+    if (sc_core::sc_time_stamp() + delay < requested) m_log.add(r, "b_transport completes before it was issued");
     check_response(trans, r, sent, *out.operator->(), m_log);
     Outcome o;
     o.status = trans.get_response_status();
     o.dmi_hint = trans.is_dmi_allowed();
-    o.request = sc_core::sc_time_stamp() + r.delay;
+    o.request = requested;
     o.response = o.end_response = sc_core::sc_time_stamp() + delay;
     return o;
   }
@@ -224,8 +227,10 @@ class LtInitiator : public sc_core::sc_module {
 };
 
 // How the AT initiator answers a BEGIN_RESP: TLM_COMPLETED, TLM_UPDATED with END_RESP, or
-// TLM_ACCEPTED followed by END_RESP on the forward path `hold` later.
-enum class EndResponse { completed, updated, accepted };
+// TLM_ACCEPTED followed by END_RESP on the forward path `hold` later. at_end_request: it answers an
+// END_REQ on the backward path TLM_COMPLETED, ending the transaction there without a response (the
+// base protocol allows it, 15.2); a BEGIN_RESP arriving later is a violation.
+enum class EndResponse { completed, updated, accepted, at_end_request };
 
 // An approximately-timed initiator running `script` in its thread. issue() sends BEGIN_REQ and
 // returns at the end of the request phase (the next BEGIN_REQ may follow); finish() returns when
@@ -391,7 +396,9 @@ class AtInitiator : public sc_core::sc_module {
     const sc_core::sc_time at = sc_core::sc_time_stamp() + delay;
     if (phase == tlm::END_REQ) {
       got_end_req(rec, at);
-      return tlm::TLM_ACCEPTED;
+      if (rec.answer != EndResponse::at_end_request) return tlm::TLM_ACCEPTED;
+      over(rec, at);  // no response: status and response time stay as they were
+      return tlm::TLM_COMPLETED;
     }
     if (phase != tlm::BEGIN_RESP) {
       m_log.add(rec.request, "a phase other than END_REQ or BEGIN_RESP on the backward path");
@@ -399,6 +406,7 @@ class AtInitiator : public sc_core::sc_module {
     }
     got_begin_resp(rec, at);
     switch (rec.answer) {
+      case EndResponse::at_end_request:  // the response implied END_REQ: too late to decline it
       case EndResponse::completed:
         over(rec, at);
         return tlm::TLM_COMPLETED;
@@ -437,99 +445,6 @@ class AtInitiator : public sc_core::sc_module {
   sc_core::sc_time m_responses_free_at = sc_core::SC_ZERO_TIME;
   tlm_utils::peq_with_cb_and_phase<AtInitiator> m_end_responses;
   bool m_finished = false;
-};
-
-// An approximately-timed target without storage, for the interconnects' AT paths: it answers
-// every BEGIN_REQ in one style, with END_REQ `accept` and BEGIN_RESP `respond` after the request
-// (respond >= accept), TLM_OK_RESPONSE, reads filled with `fill_byte`. It keeps the exclusion rules
-// of its own socket as a target must (one response open at a time) and records what it saw.
-class AtTarget : public sc_core::sc_module {
- public:
-  // accepted: TLM_ACCEPTED, then END_REQ and BEGIN_RESP on the backward path;
-  // end_req: TLM_UPDATED with END_REQ, then BEGIN_RESP on the backward path;
-  // begin_resp: TLM_UPDATED with BEGIN_RESP (delay `respond`), END_RESP expected on the forward path;
-  // completed: TLM_COMPLETED (delay `respond`).
-  enum class Style { accepted, end_req, begin_resp, completed };
-
-  tlm_utils::simple_target_socket<AtTarget> in;
-  Style style;
-  sc_core::sc_time accept, respond;
-  unsigned char fill_byte = 0x5A;
-  std::vector<std::uint64_t> addresses;        // address of each BEGIN_REQ as received
-  std::vector<sc_core::sc_time> request_times;  // when each BEGIN_REQ took effect
-  std::vector<std::string> violations;          // requests while a request phase was open
-
-  AtTarget(const sc_core::sc_module_name& name, Style how, sc_core::sc_time accept_after,
-           sc_core::sc_time respond_after)
-      : sc_core::sc_module(name),
-        in("in"),
-        style(how),
-        accept(accept_after),
-        respond(respond_after),
-        m_peq("phases", this, &AtTarget::send) {
-    in.register_nb_transport_fw(this, &AtTarget::nb_transport_fw);
-  }
-
- private:
-  tlm::tlm_sync_enum nb_transport_fw(tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase, sc_core::sc_time& delay) {
-    if (phase == tlm::END_RESP) {
-      m_response_open = nullptr;
-      if (!m_due.empty()) {
-        tlm::tlm_generic_payload* next = m_due.front();
-        m_due.pop_front();
-        m_peq.notify(*next, tlm::BEGIN_RESP, delay);
-      }
-      return tlm::TLM_COMPLETED;
-    }
-    addresses.push_back(trans.get_address());
-    request_times.push_back(sc_core::sc_time_stamp() + delay);
-    if (m_request_open) violations.push_back(std::string(name()) + ": BEGIN_REQ while a request phase is open");
-    execute(trans);
-    switch (style) {
-      case Style::accepted:
-        m_request_open = true;
-        m_peq.notify(trans, tlm::END_REQ, delay + accept);
-        m_peq.notify(trans, tlm::BEGIN_RESP, delay + respond);
-        return tlm::TLM_ACCEPTED;
-      case Style::end_req:
-        m_peq.notify(trans, tlm::BEGIN_RESP, delay + respond);
-        phase = tlm::END_REQ;
-        delay += accept;
-        return tlm::TLM_UPDATED;
-      case Style::begin_resp:
-        m_response_open = &trans;
-        phase = tlm::BEGIN_RESP;
-        delay += respond;
-        return tlm::TLM_UPDATED;
-      case Style::completed:
-        delay += respond;
-        return tlm::TLM_COMPLETED;
-    }
-    return tlm::TLM_COMPLETED;
-  }
-
-  void execute(tlm::tlm_generic_payload& trans) {
-    if (trans.is_read()) std::fill_n(trans.get_data_ptr(), trans.get_data_length(), fill_byte);
-    trans.set_response_status(tlm::TLM_OK_RESPONSE);
-  }
-
-  void send(tlm::tlm_generic_payload& trans, const tlm::tlm_phase& phase) {
-    if (phase == tlm::BEGIN_RESP && m_response_open != nullptr) {
-      m_due.push_back(&trans);  // after the open response's END_RESP
-      return;
-    }
-    tlm::tlm_phase p = phase;
-    sc_core::sc_time delay = sc_core::SC_ZERO_TIME;
-    if (phase == tlm::END_REQ) m_request_open = false;
-    if (phase == tlm::BEGIN_RESP) m_request_open = false;
-    const tlm::tlm_sync_enum answer = in->nb_transport_bw(trans, p, delay);
-    if (phase == tlm::BEGIN_RESP && answer == tlm::TLM_ACCEPTED) m_response_open = &trans;
-  }
-
-  bool m_request_open = false;
-  tlm::tlm_generic_payload* m_response_open = nullptr;
-  std::deque<tlm::tlm_generic_payload*> m_due;
-  tlm_utils::peq_with_cb_and_phase<AtTarget> m_peq;
 };
 
 }  // namespace rc::tlmx::test

@@ -37,14 +37,44 @@
 #include <systemc>
 #include <tlm>
 
-#include "tests/tlm/protocol_checker.h"
 #include "tlm/hop_interposer.h"
 
 namespace rc::tlmx::test {
 
+// The attributes an initiator sets and nobody else may change.
+struct Attributes {
+  tlm::tlm_command command = tlm::TLM_IGNORE_COMMAND;
+  std::uint64_t address = 0;
+  unsigned char* data = nullptr;
+  unsigned int length = 0;
+  unsigned char* byte_enable = nullptr;
+  unsigned int byte_enable_length = 0;
+  unsigned int streaming_width = 0;
+
+  static Attributes of(const tlm::tlm_generic_payload& t) {
+    return {t.get_command(),         t.get_address(),     t.get_data_ptr(),       t.get_data_length(),
+            t.get_byte_enable_ptr(), t.get_byte_enable_length(), t.get_streaming_width()};
+  }
+  // The names of the attributes that differ in `now`, comma separated ("" if none).
+  std::string changed_in(const Attributes& now) const {
+    std::string names;
+    auto note = [&](bool differs, const char* name) {
+      if (differs) names += names.empty() ? name : std::string(", ") + name;
+    };
+    note(now.command != command, "command");
+    note(now.address != address, "address");
+    note(now.data != data, "data pointer");
+    note(now.length != length, "data length");
+    note(now.byte_enable != byte_enable, "byte-enable pointer");
+    note(now.byte_enable_length != byte_enable_length, "byte-enable length");
+    note(now.streaming_width != streaming_width, "streaming width");
+    return names;
+  }
+};
+
 struct HopCheckerConfig {
-  // The bench sends malformed payloads on purpose (reads and writes of 0 bytes, byte-enable length 0)
-  // to check the answers: then those are not breaches of the initiator's.
+  // The bench sends malformed payloads on purpose (reads and writes of 0 bytes, byte-enable length 0,
+  // streaming width 0) to check the answers: then those are not breaches of the initiator's.
   bool malformed_requests_expected = false;
   bool probe_dmi_hints = true;  // ask get_direct_mem_ptr where a response's DMI hint is set
   sc_core::sc_time implausible_delay = sc_core::sc_time(3600, sc_core::SC_SEC);
@@ -246,8 +276,8 @@ class HopChecker : public sc_core::sc_module,
       if (data_command && trans.get_data_length() == 0) breach(trans, "14.12", "read or write of 0 bytes");
       if (trans.get_byte_enable_ptr() != nullptr && trans.get_byte_enable_length() == 0)
         breach(trans, "14.14", "byte-enable pointer with length 0");
+      if (trans.get_streaming_width() == 0) breach(trans, "14.15", "streaming width 0");
     }
-    if (trans.get_streaming_width() == 0) breach(trans, "14.15", "streaming width 0");
     if (trans.is_dmi_allowed()) breach(trans, "14.16", "DMI hint set by the initiator");
     if (trans.get_response_status() != tlm::TLM_INCOMPLETE_RESPONSE)
       breach(trans, "14.17", "response status not TLM_INCOMPLETE_RESPONSE at the request");

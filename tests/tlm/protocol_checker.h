@@ -35,6 +35,7 @@
 #include <tlm_utils/simple_target_socket.h>
 
 #include "tests/tlm/at_target.h"
+#include "tests/tlm/hop_checker.h"
 
 namespace rc::tlmx::test {
 
@@ -77,37 +78,6 @@ struct Outcome {
   std::optional<sc_core::sc_time> end_request;  // END_REQ received as such (AT)
   sc_core::sc_time response;                    // BEGIN_RESP, or TLM_COMPLETED
   sc_core::sc_time end_response;                // END_RESP (AT; equal to response when completed at once)
-};
-
-// The attributes an initiator sets and nobody else may change.
-struct Attributes {
-  tlm::tlm_command command = tlm::TLM_IGNORE_COMMAND;
-  std::uint64_t address = 0;
-  unsigned char* data = nullptr;
-  unsigned int length = 0;
-  unsigned char* byte_enable = nullptr;
-  unsigned int byte_enable_length = 0;
-  unsigned int streaming_width = 0;
-
-  static Attributes of(const tlm::tlm_generic_payload& t) {
-    return {t.get_command(),         t.get_address(),     t.get_data_ptr(),       t.get_data_length(),
-            t.get_byte_enable_ptr(), t.get_byte_enable_length(), t.get_streaming_width()};
-  }
-  // The names of the attributes that differ in `now`, comma separated ("" if none).
-  std::string changed_in(const Attributes& now) const {
-    std::string names;
-    auto note = [&](bool differs, const char* name) {
-      if (differs) names += names.empty() ? name : std::string(", ") + name;
-    };
-    note(now.command != command, "command");
-    note(now.address != address, "address");
-    note(now.data != data, "data pointer");
-    note(now.length != length, "data length");
-    note(now.byte_enable != byte_enable, "byte-enable pointer");
-    note(now.byte_enable_length != byte_enable_length, "byte-enable length");
-    note(now.streaming_width != streaming_width, "streaming width");
-    return names;
-  }
 };
 
 inline void fill(tlm::tlm_generic_payload& trans, const Request& r) {
@@ -183,13 +153,51 @@ class PayloadPool : public tlm::tlm_mm_interface {
   std::vector<tlm::tlm_generic_payload*> m_free;
 };
 
+// The socket of a checking initiator as a test sees it: the initiator's own socket is bound to a
+// HopChecker inside it, so every call it makes (and every call a test makes through `->`) passes the
+// checker; bind() binds the checker's far side to the target.
+template <class Owner>
+class CheckedSocket {
+ public:
+  CheckedSocket(const char* name, HopChecker& hop) : m_socket(name), m_hop(hop) { m_socket.bind(hop.in); }
+  template <class Target>
+  void bind(Target& target) { m_hop.out.bind(target); }
+  tlm::tlm_fw_transport_if<>* operator->() { return m_socket.operator->(); }
+  tlm_utils::simple_initiator_socket<Owner>& socket() { return m_socket; }
+
+ private:
+  tlm_utils::simple_initiator_socket<Owner> m_socket;
+  HopChecker& m_hop;
+};
+
+// The checking initiators send malformed payloads on purpose (tests of the answers to them).
+inline HopCheckerConfig initiator_hop_config() {
+  HopCheckerConfig c;
+  c.malformed_requests_expected = true;
+  return c;
+}
+
+// The initiator's own breaches list, then its hop checker's, then transactions left open on the hop.
+inline std::vector<std::string> all_violations(const ViolationLog& log, const HopChecker& hop) {
+  std::vector<std::string> all = log.lines();
+  all.insert(all.end(), hop.violations().begin(), hop.violations().end());
+  const std::vector<std::string> open = hop.unfinished();
+  all.insert(all.end(), open.begin(), open.end());
+  return all;
+}
+
 // A loosely-timed initiator running `script` in its thread.
 class LtInitiator : public sc_core::sc_module {
  public:
-  tlm_utils::simple_initiator_socket<LtInitiator> out;
+  HopChecker hop;
+  CheckedSocket<LtInitiator> out;
 
   LtInitiator(const sc_core::sc_module_name& name, std::function<void(LtInitiator&)> script)
-      : sc_core::sc_module(name), out("out"), m_script(std::move(script)), m_log(this->name()) {
+      : sc_core::sc_module(name),
+        hop("hop", initiator_hop_config()),
+        out("out", hop),
+        m_script(std::move(script)),
+        m_log(this->name()) {
     SC_HAS_PROCESS(LtInitiator);
     SC_THREAD(run);
   }
@@ -212,7 +220,7 @@ class LtInitiator : public sc_core::sc_module {
     return o;
   }
 
-  const std::vector<std::string>& violations() const { return m_log.lines(); }
+  std::vector<std::string> violations() const { return all_violations(m_log, hop); }
   bool finished() const { return m_finished; }
 
  private:
@@ -237,15 +245,17 @@ enum class EndResponse { completed, updated, accepted, at_end_request };
 // the transaction is over, at its END_RESP time.
 class AtInitiator : public sc_core::sc_module {
  public:
-  tlm_utils::simple_initiator_socket<AtInitiator> out;
+  HopChecker hop;
+  CheckedSocket<AtInitiator> out;
 
   AtInitiator(const sc_core::sc_module_name& name, std::function<void(AtInitiator&)> script)
       : sc_core::sc_module(name),
-        out("out"),
+        hop("hop", initiator_hop_config()),
+        out("out", hop),
         m_script(std::move(script)),
         m_log(this->name()),
         m_end_responses("end_responses", this, &AtInitiator::send_end_response) {
-    out.register_nb_transport_bw(this, &AtInitiator::nb_transport_bw);
+    out.socket().register_nb_transport_bw(this, &AtInitiator::nb_transport_bw);
     SC_HAS_PROCESS(AtInitiator);
     SC_THREAD(run);
   }
@@ -288,7 +298,7 @@ class AtInitiator : public sc_core::sc_module {
     return finish(issue(r, answer, hold));
   }
 
-  const std::vector<std::string>& violations() const { return m_log.lines(); }
+  std::vector<std::string> violations() const { return all_violations(m_log, hop); }
   std::size_t payloads_in_use() const { return m_pool.in_use(); }
   bool finished() const { return m_finished; }
 

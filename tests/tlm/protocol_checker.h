@@ -352,12 +352,14 @@ class AtInitiator : public sc_core::sc_module {
     end_request(rec, at);
   }
 
-  void got_begin_resp(Record& rec, const sc_core::sc_time& at) {
+  // A response: a BEGIN_RESP phase, or (phase false) TLM_COMPLETED returned to BEGIN_REQ, which is no
+  // response phase: the exclusion rules (15.2.6) are about phases and do not apply to it.
+  void got_begin_resp(Record& rec, const sc_core::sc_time& at, bool phase = true) {
     advance(rec, at, "BEGIN_RESP");
     if (rec.phase != Phase::begin_req && rec.phase != Phase::end_req) m_log.add(rec.request, "BEGIN_RESP out of order");
-    if (m_open_response != nullptr)
+    if (phase && m_open_response != nullptr)
       m_log.add(rec.request, "BEGIN_RESP while another response on the socket is open (exclusion rule)");
-    if (at < m_responses_free_at)
+    if (phase && at < m_responses_free_at)
       m_log.add(rec.request, "BEGIN_RESP before the END_RESP of the previous response (exclusion rule)");
     if (!rec.request_over) end_request(rec, at);
     rec.phase = Phase::begin_resp;
@@ -367,11 +369,11 @@ class AtInitiator : public sc_core::sc_module {
     rec.outcome.dmi_hint = rec.trans->is_dmi_allowed();
   }
 
-  void over(Record& rec, const sc_core::sc_time& at) {
+  void over(Record& rec, const sc_core::sc_time& at, bool response_phase = true) {
     rec.outcome.end_response = at;
-    rec.phase = Phase::over;
     if (m_open_response == &rec) m_open_response = nullptr;
-    m_responses_free_at = std::max(m_responses_free_at, at);
+    if (response_phase && rec.phase == Phase::begin_resp) m_responses_free_at = std::max(m_responses_free_at, at);
+    rec.phase = Phase::over;
     m_active.erase(rec.trans);
     rec.trans->release();
     rec.trans = nullptr;
@@ -382,8 +384,8 @@ class AtInitiator : public sc_core::sc_module {
   // TLM_COMPLETED from the target side: request, response and its end all at `at`.
   void completed(Record& rec, const sc_core::sc_time& delay) {
     const sc_core::sc_time at = sc_core::sc_time_stamp() + delay;
-    got_begin_resp(rec, at);
-    over(rec, at);
+    got_begin_resp(rec, at, false);
+    over(rec, at, false);
   }
 
   // TLM_UPDATED returned to BEGIN_REQ: END_REQ, or BEGIN_RESP (after which END_RESP is ours to send).

@@ -48,16 +48,27 @@
 // (TLM_ACCEPTED, END_RESP later) waits for its END_RESP. A second BEGIN_REQ on a port before the
 // END_REQ of the first breaks the request exclusion rule (SC_REPORT_ERROR). The bus acquires a
 // payload with a memory manager from BEGIN_REQ to the end of its response and releases it then.
-// Towards the targets the bus always calls b_transport (always from a thread): it must know a
-// target's wait states when it reserves itself, so targets behind a PciBus must not wait() in
-// b_transport (none of the parts here do; LT-only targets on simple_target_sockets are fine).
+// An initiator may answer END_REQ TLM_COMPLETED: the transaction is still carried (the target's
+// side ends with its b_transport), and no response is sent.
+//
+// Targets: the bus always calls b_transport (always from a thread). An AT-only target (a
+// simple_target_socket with only nb_transport registered) is served through the socket's
+// b-to-nb adapter, which waits inside b_transport until the target's response: conventional PCI
+// has no split transactions, so the bus is held from the start until the target completes
+//   end = max(start + bus_time, completion)   completion = time after the call + returned delay
+// One transaction is on the bus at a time, in arrival order (every b_transport call and BEGIN_REQ
+// takes a ticket on arrival; a later one waits for its turn), so a target that waits delays those
+// behind it and never overlaps them. The offset a target is handed is start - sc_time_stamp(), or
+// zero when simulated time has already passed the start: never negative. Targets that do not wait
+// (every part here) see no change: nothing waits, and the times are those of the formulas above.
 //
 // Shared arbitration (several cards on one bus): each card keeps its own PciBus (its BAR windows,
 // its counters), and share_arbitration_with(owner) makes this bus use the owner's bus_free_at, so a
 // transfer on any of the buses waits for every other one exactly as the policy above says, as if
 // they were one bus. Without it nothing changes.
 //
-// Byte enables and streaming width pass to the target untouched. transport_dbg is routed (clipped
+// Decoding is by the bytes a transaction's addresses span (a streaming burst: its streaming width,
+// address_map.h, bytes_touched). Byte enables and streaming width pass to the target untouched. transport_dbg is routed (clipped
 // to the window, no time). DMI is refused everywhere (every PCI access must be arbitrated and
 // timed): get_direct_mem_ptr returns false with DMI_ACCESS_NONE over [0, 2^64 - 1], the whole
 // range the refusal holds for, and forwarded transactions come back with the DMI hint cleared.

@@ -2,6 +2,8 @@
 
 #include <cstring>
 
+#include "tlm/address_map.h"
+
 namespace rc::board {
 
 ControlRegs::ControlRegs(const sc_core::sc_module_name& name, sc_core::sc_time access_time,
@@ -81,7 +83,8 @@ tlm::tlm_response_status ControlRegs::check(const tlm::tlm_generic_payload& tran
   const unsigned length = trans.get_data_length();
   if (trans.get_command() == tlm::TLM_IGNORE_COMMAND) return tlm::TLM_OK_RESPONSE;
   if (length == 0) return tlm::TLM_BURST_ERROR_RESPONSE;  // nothing to address: the length first
-  if (address % 4 != 0 || address > reg::kBarSize || length > reg::kBarSize - address)
+  const std::uint64_t touched = tlmx::bytes_touched(trans);  // a streaming burst repeats its first addresses
+  if (address % 4 != 0 || address > reg::kBarSize || touched > reg::kBarSize - address)
     return tlm::TLM_ADDRESS_ERROR_RESPONSE;
   if (trans.get_byte_enable_ptr() != nullptr) return tlm::TLM_BYTE_ENABLE_ERROR_RESPONSE;
   if (length % 4 != 0 || trans.get_streaming_width() < length) return tlm::TLM_BURST_ERROR_RESPONSE;

@@ -12,7 +12,8 @@
 //   TLM_IGNORE_COMMAND                                          TLM_OK_RESPONSE, nothing touched
 //   a read or write of 0 bytes (outside the base protocol,
 //   IEEE 1666-2011 14.12; as every part answers it)             TLM_BURST_ERROR_RESPONSE
-//   address not 4-byte aligned, or [a, a + n) not in the BAR    TLM_ADDRESS_ERROR_RESPONSE
+//   address not 4-byte aligned, or [a, a + t) not in the BAR    TLM_ADDRESS_ERROR_RESPONSE
+//   (t: the bytes the addresses span, n or a smaller streaming width, tlm/address_map.h)
 //   byte enables (any)                                          TLM_BYTE_ENABLE_ERROR_RESPONSE
 //   length not a multiple of 4, or streaming width < length     TLM_BURST_ERROR_RESPONSE
 //   otherwise: whole registers in address order, TLM_OK_RESPONSE; offsets past the register

@@ -1,5 +1,8 @@
 #include "board/rc2000.h"
 
+#include <stdexcept>
+#include <string>
+
 #include "board/cycle_wrapper.h"
 #include "board/fast_wrapper.h"
 #include "tlm/timing.h"
@@ -41,15 +44,37 @@ tlmx::PciBusConfig pci_config(const BoardParams& p) {
   return c;
 }
 
+// Binds from -> to, through the interposer when there is one.
+template <class From, class To>
+void bind_hop(From& from, To& to, tlmx::HopInterposer* hop) {
+  if (hop == nullptr) return from.bind(to);
+  from.bind(hop->hop_in());
+  hop->hop_out().bind(to);
+}
+
+void check_hops(const InnerHops& hops, unsigned banks) {
+  if (!hops.local_to_bank.empty() && hops.local_to_bank.size() != banks) {
+    throw std::invalid_argument("Rc2000: InnerHops.local_to_bank has " + std::to_string(hops.local_to_bank.size()) +
+                                " interposers for " + std::to_string(banks) + " banks (give none or one per bank)");
+  }
+  std::vector<const tlmx::HopInterposer*> all{hops.pci_to_regs, hops.pci_to_local, hops.wrapper_to_local};
+  all.insert(all.end(), hops.local_to_bank.begin(), hops.local_to_bank.end());
+  for (std::size_t i = 0; i < all.size(); ++i)
+    for (std::size_t j = i + 1; j < all.size(); ++j)
+      if (all[i] != nullptr && all[i] == all[j])
+        throw std::invalid_argument("Rc2000: InnerHops names one interposer for two hops (each needs its own)");
+}
+
 }  // namespace
 
-Rc2000::Rc2000(const sc_core::sc_module_name& name, const BoardParams& params, std::uint64_t bank_page_bytes)
-    : Rc2000(name, params, make_bank_layout(params), bank_page_bytes) {}
+Rc2000::Rc2000(const sc_core::sc_module_name& name, const BoardParams& params, std::uint64_t bank_page_bytes,
+               const InnerHops& hops)
+    : Rc2000(name, params, make_bank_layout(params), bank_page_bytes, hops) {}
 
 Rc2000::Rc2000(const sc_core::sc_module_name& name, const BoardParams& params, BankLayout layout,
-               std::uint64_t bank_page_bytes)
+               std::uint64_t bank_page_bytes, const InnerHops& hops)
     : sc_core::sc_module(name),
-      m_params(params),
+      m_params((check_hops(hops, params.banks), params)),  // before any part is built
       // A caller that made the layout from the banks alone (results in the bank) gets the results
       // placed as the parameters say (place_results is idempotent).
       m_layout(place_results(std::move(layout), params.results, params.result_store_bits)),
@@ -69,8 +94,8 @@ Rc2000::Rc2000(const sc_core::sc_module_name& name, const BoardParams& params, B
     throw std::logic_error("Rc2000: the bank layout given is not the layout of the board's parameters");
   }
   dma.out.bind(pci.in);  // the bridge's DMA channel: pci.in[0]; host initiators bind after it
-  pci.out.bind(regs.in);
-  pci.out.bind(local.in);
+  bind_hop(pci.out, regs.in, hops.pci_to_regs);
+  bind_hop(pci.out, local.in, hops.pci_to_local);
   pci.map(kBar0, reg::kBarSize, 0, "rc2000.regs");
   pci.map(kBar1, m_params.banks * m_stride, 1, "rc2000.banks");
 
@@ -78,7 +103,7 @@ Rc2000::Rc2000(const sc_core::sc_module_name& name, const BoardParams& params, B
   std::vector<std::uint64_t> addresses;
   for (unsigned b = 0; b < m_params.banks; ++b) {
     m_banks.push_back(std::make_unique<tlmx::SramBank>(("bank" + std::to_string(b)).c_str(), bank_config(m_params, bank_page_bytes)));
-    local.out.bind(m_banks.back()->in);
+    bind_hop(local.out, m_banks.back()->in, hops.local_to_bank.empty() ? nullptr : hops.local_to_bank[b]);
     local.map(b * m_stride, m_params.bank_capacity_bytes, b, "bank" + std::to_string(b));
     sinks.push_back(m_banks.back().get());
     addresses.push_back(b * m_stride);
@@ -88,7 +113,7 @@ Rc2000::Rc2000(const sc_core::sc_module_name& name, const BoardParams& params, B
     m_wrapper = std::make_unique<CycleWrapper>("wrapper", m_layout, m_params.timing, regs, irq, sinks, addresses, signals);
   else
     m_wrapper = std::make_unique<FastWrapper>("wrapper", m_layout, m_params.timing, regs, irq, sinks, addresses, signals);
-  m_wrapper->out.bind(local.in);
+  bind_hop(m_wrapper->out, local.in, hops.wrapper_to_local);
 }
 
 }  // namespace rc::board

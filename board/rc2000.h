@@ -12,6 +12,9 @@
 //   wrapper ──> irq                   raised at DONE, lowered when the host clears DONE
 //
 // The host reaches the banks only through PCI (BAR1); the wrapper only through the local bus.
+// Inner hops: each of the hops above that the board binds itself (pci.out to regs and to local,
+// wrapper.out to local, local.out to each bank) takes an interposer (tlm/hop_interposer.h: a
+// monitor, a protocol checker) when InnerHops names one; the hop then runs through it.
 // Construction throws std::invalid_argument for a layout the board cannot hold (bank_layout.h).
 #pragma once
 
@@ -27,12 +30,22 @@
 #include "board/control_regs.h"
 #include "board/wrapper_base.h"
 #include "tlm/dma_engine.h"
+#include "tlm/hop_interposer.h"
 #include "tlm/irq_line.h"
 #include "tlm/pci_bus.h"
 #include "tlm/router.h"
 #include "tlm/sram_bank.h"
 
 namespace rc::board {
+
+// Interposers for the board's inner hops (nullptr: the hop is bound directly). Each must outlive
+// the simulation and be given for one hop only; banks: none, or one per bank.
+struct InnerHops {
+  tlmx::HopInterposer* pci_to_regs = nullptr;
+  tlmx::HopInterposer* pci_to_local = nullptr;
+  tlmx::HopInterposer* wrapper_to_local = nullptr;
+  std::vector<tlmx::HopInterposer*> local_to_bank;
+};
 
 class Rc2000 : public sc_core::sc_module {
   // Declared first: the parts below are built from them.
@@ -47,13 +60,15 @@ class Rc2000 : public sc_core::sc_module {
   // bank_page_bytes: the banks' storage page (tlm/sram_bank.h), the unit in which their memory is
   // allocated and granted to the wrapper through DMI; it changes neither timing nor results (tests
   // make it smaller than a word to put every word across two pages).
+  // Throws std::invalid_argument for InnerHops it cannot place (a wrong bank count, one interposer
+  // named twice).
   Rc2000(const sc_core::sc_module_name& name, const BoardParams& params,
-         std::uint64_t bank_page_bytes = tlmx::SramBankConfig{}.page_bytes);
+         std::uint64_t bank_page_bytes = tlmx::SramBankConfig{}.page_bytes, const InnerHops& hops = {});
   // With the layout of these parameters already made (and so checked) by the caller: it is not
   // made twice; its results are placed as `params` say (place_results). Throws std::logic_error if
   // it is not the layout of `params`.
   Rc2000(const sc_core::sc_module_name& name, const BoardParams& params, BankLayout layout,
-         std::uint64_t bank_page_bytes = tlmx::SramBankConfig{}.page_bytes);
+         std::uint64_t bank_page_bytes = tlmx::SramBankConfig{}.page_bytes, const InnerHops& hops = {});
 
   const BoardParams& params() const { return m_params; }
   const BankLayout& layout() const { return m_layout; }

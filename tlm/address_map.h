@@ -32,6 +32,16 @@ inline bool zero_length_transfer(const tlm::tlm_generic_payload& trans) {
   return trans.get_data_length() == 0 && trans.get_command() != tlm::TLM_IGNORE_COMMAND;
 }
 
+// The bytes a transaction's addresses span: [address, address + bytes_touched). A streaming burst
+// (streaming width w below the data length, IEEE 1666-2011 14.15) repeats the addresses
+// [address, address + w) and touches no other; otherwise it is the data length. Every part decodes by
+// this (a FIFO register at the end of a window is reached by a long burst). A streaming width of 0
+// is outside the payload rules (14.15); it is decoded as no streaming, and targets refuse it.
+inline std::uint64_t bytes_touched(const tlm::tlm_generic_payload& trans) {
+  const unsigned int width = trans.get_streaming_width();
+  return width != 0 && width < trans.get_data_length() ? width : trans.get_data_length();
+}
+
 class AddressMap {
  public:
   // Adds a window; throws std::invalid_argument if it is empty, wraps past 2^64, or overlaps one

@@ -55,24 +55,26 @@ sc_core::sc_time PciBus::programmed_io_time(std::uint64_t bytes, unsigned access
 }
 
 // The target sees the window-relative address and, as its delay, the offset at which the
-// transaction starts on the bus; it returns that plus its own delay D_t. The initiator gets its
-// own address back.
+// transaction starts on the bus (zero if that is already past: an offset is never negative). It
+// returns its own delay D_t added, possibly after waiting inside b_transport (an AT-only target
+// behind its socket's b-to-nb adapter), so the completion is taken after the call: the time then
+// plus the returned delay. The initiator gets its own address back.
 sc_core::sc_time PciBus::forward(tlm::tlm_generic_payload& trans, const Decoded& hit, const sc_core::sc_time& start) {
   const std::uint64_t address = trans.get_address();
-  const sc_core::sc_time at = start - sc_core::sc_time_stamp();
-  sc_core::sc_time target_delay = at;
+  const sc_core::sc_time now = sc_core::sc_time_stamp();
+  sc_core::sc_time target_delay = start > now ? start - now : sc_core::SC_ZERO_TIME;
   trans.set_address(hit.offset);
   out[static_cast<int>(hit.window->port)]->b_transport(trans, target_delay);
   trans.set_address(address);
   trans.set_dmi_allowed(false);  // the target may offer DMI, but not through this bus
-  return target_delay > at ? target_delay - at : sc_core::SC_ZERO_TIME;
+  return sc_core::sc_time_stamp() + target_delay;
 }
 
 // No window claims the address: nobody asserts DEVSEL, the initiator times out.
 sc_core::sc_time PciBus::master_abort(tlm::tlm_generic_payload& trans) {
   std::ostringstream msg;
   msg << name() << ": no BAR window holds address 0x" << std::hex << trans.get_address() << " + 0x"
-      << trans.get_data_length() << " bytes (master abort)";
+      << bytes_touched(trans) << " bytes (master abort)";
   SC_REPORT_WARNING(kMsgType, msg.str().c_str());
   trans.set_response_status(tlm::TLM_ADDRESS_ERROR_RESPONSE);
   return cycles(m_config.master_abort_cycles, m_config.clock_period);
@@ -86,24 +88,45 @@ sc_core::sc_time PciBus::bus_time(const tlm::tlm_generic_payload& trans) const {
                         : transfer_time(bytes);
 }
 
-// One transaction, LT or AT alike: arbitration at `request`, the target's call, the counters.
+// One transaction, LT or AT alike, in its turn: arbitration at `request`, the target's call, the
+// counters; then the next turn.
 PciBus::Carried PciBus::carry(int port, tlm::tlm_generic_payload& trans, const sc_core::sc_time& request) {
-  const std::optional<Decoded> hit = m_map.decode(trans.get_address(), trans.get_data_length());
-  sc_core::sc_time& bus_free_at = m_arbiter->m_bus_free_at;
-  const sc_core::sc_time start = std::max(request, bus_free_at);
-  const sc_core::sc_time occupancy = hit ? std::max(bus_time(trans), forward(trans, *hit, start)) : master_abort(trans);
-  bus_free_at = start + occupancy;
+  const std::optional<Decoded> hit = m_map.decode(trans.get_address(), bytes_touched(trans));
+  PciBus& arbiter = *m_arbiter;
+  const sc_core::sc_time start = start_for(request);
+  const sc_core::sc_time end = hit ? std::max(start + bus_time(trans), forward(trans, *hit, start))
+                                   : start + master_abort(trans);
+  arbiter.m_bus_free_at = end;
   PciInitiatorReport& c = counters(port);
-  count(c, trans, occupancy, start - request);
+  count(c, trans, end - start, start - request);
   if (!hit) ++c.address_errors;
-  return {start, start + occupancy};
+  ++arbiter.m_serving;
+  arbiter.m_turn_changed.notify();
+  return {start, end};
+}
+
+// Returns when it is `ticket`'s turn on the bus: at once, unless a target is waiting inside
+// b_transport for an earlier transaction. AT requests of this bus whose turn comes first are
+// carried from here (so none is overtaken); those of a bus sharing the arbitration by its own thread.
+// When a transaction requested at `request` starts, in its turn: when the bus is free.
+sc_core::sc_time PciBus::start_for(const sc_core::sc_time& request) const {
+  return std::max(request, m_arbiter->m_bus_free_at);
+}
+
+void PciBus::wait_for_turn(std::uint64_t ticket) {
+  for (;;) {
+    carry_queued_requests();
+    if (m_arbiter->m_serving == ticket) return;
+    sc_core::wait(m_arbiter->m_turn_changed);
+  }
 }
 
 void PciBus::b_transport(int port, tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) {
   if (zero_length_transfer(trans)) return trans.set_response_status(tlm::TLM_BURST_ERROR_RESPONSE);
-  carry_queued_requests();  // AT requests that arrived before this call go first
-  const Carried carried = carry(port, trans, sc_core::sc_time_stamp() + delay);
-  // A target that called wait() may have moved simulated time past the completion time.
+  const sc_core::sc_time request = sc_core::sc_time_stamp() + delay;  // the call's local time
+  wait_for_turn(m_arbiter->m_tickets++);
+  const Carried carried = carry(port, trans, request);
+  // Time may have moved (a target waited, or this call waited for one): never a negative offset.
   const sc_core::sc_time now = sc_core::sc_time_stamp();
   delay = carried.end > now ? carried.end - now : sc_core::SC_ZERO_TIME;
 }
@@ -132,7 +155,7 @@ tlm::tlm_sync_enum PciBus::nb_transport_fw(int port, tlm::tlm_generic_payload& t
     p.request_open = true;
     if (trans.has_mm()) trans.acquire();
     m_at_port_of[&trans] = port;
-    m_requests.push_back({port, &trans, sc_core::sc_time_stamp() + delay});
+    m_requests.push_back({port, &trans, sc_core::sc_time_stamp() + delay, m_arbiter->m_tickets++});
     m_request_arrived.notify();  // immediate: carried in this evaluation phase, before time moves
     return tlm::TLM_ACCEPTED;
   }
@@ -149,31 +172,42 @@ tlm::tlm_sync_enum PciBus::nb_transport_fw(int port, tlm::tlm_generic_payload& t
 
 void PciBus::carry_requests_thread() {
   for (;;) {
-    sc_core::wait(m_request_arrived);
-    carry_queued_requests();
+    carry_queued_requests();  // first: requests may arrive before this thread first runs
+    sc_core::wait(m_request_arrived | m_arbiter->m_turn_changed);
   }
 }
 
-// Carries the queued AT requests in arrival order (always from a thread: targets get b_transport),
-// sends END_REQ at each one's start and schedules its BEGIN_RESP at its end.
+// Carries the queued AT requests whose turn it is, in arrival order (always from a thread: targets
+// get b_transport), sends END_REQ at each one's start and schedules its BEGIN_RESP at its end. An
+// initiator may end the transaction at END_REQ (TLM_COMPLETED, 15.2): it gets no response; the
+// target's side is over already (its b_transport has returned).
 void PciBus::carry_queued_requests() {
-  while (!m_requests.empty()) {
+  while (!m_requests.empty() && m_requests.front().ticket == m_arbiter->m_serving) {
     const AtRequest r = m_requests.front();
     m_requests.pop_front();
+    const bool respond = end_request(r.port, *r.trans, start_for(r.request));
     const Carried carried = carry(r.port, *r.trans, r.request);
-    at_port(r.port).request_open = false;
-    const sc_core::sc_time now = sc_core::sc_time_stamp();
-    tlm::tlm_phase phase = tlm::END_REQ;
-    sc_core::sc_time delay = carried.start > now ? carried.start - now : sc_core::SC_ZERO_TIME;
-    const tlm::tlm_sync_enum answer = in[r.port]->nb_transport_bw(*r.trans, phase, delay);
-    if (answer == tlm::TLM_COMPLETED) {  // the initiator ended the transaction early: no response
+    if (!respond) {  // the initiator ended the transaction at END_REQ: no response
       m_at_port_of.erase(r.trans);
       if (r.trans->has_mm()) r.trans->release();
       continue;
     }
-    if (answer != tlm::TLM_ACCEPTED) protocol_error(r.port, "END_REQ must be answered TLM_ACCEPTED or TLM_COMPLETED");
+    const sc_core::sc_time now = sc_core::sc_time_stamp();
     m_peq.notify(*r.trans, tlm::BEGIN_RESP, carried.end > now ? carried.end - now : sc_core::SC_ZERO_TIME);
   }
+}
+
+// END_REQ at `start`, when the bus takes the transaction (before the target's call, which may
+// wait); false if the initiator answers TLM_COMPLETED and wants no response.
+bool PciBus::end_request(int port, tlm::tlm_generic_payload& trans, const sc_core::sc_time& start) {
+  at_port(port).request_open = false;
+  const sc_core::sc_time now = sc_core::sc_time_stamp();
+  tlm::tlm_phase phase = tlm::END_REQ;
+  sc_core::sc_time delay = start > now ? start - now : sc_core::SC_ZERO_TIME;
+  const tlm::tlm_sync_enum answer = in[port]->nb_transport_bw(trans, phase, delay);
+  if (answer == tlm::TLM_COMPLETED) return false;
+  if (answer != tlm::TLM_ACCEPTED) protocol_error(port, "END_REQ must be answered TLM_ACCEPTED or TLM_COMPLETED");
+  return true;
 }
 
 void PciBus::deliver(tlm::tlm_generic_payload& trans, const tlm::tlm_phase& phase) {

@@ -48,16 +48,27 @@
 // (TLM_ACCEPTED, END_RESP later) waits for its END_RESP. A second BEGIN_REQ on a port before the
 // END_REQ of the first breaks the request exclusion rule (SC_REPORT_ERROR). The bus acquires a
 // payload with a memory manager from BEGIN_REQ to the end of its response and releases it then.
-// Towards the targets the bus always calls b_transport (always from a thread): it must know a
-// target's wait states when it reserves itself, so targets behind a PciBus must not wait() in
-// b_transport (none of the parts here do; LT-only targets on simple_target_sockets are fine).
+// An initiator may answer END_REQ TLM_COMPLETED: the transaction is still carried (the target's
+// side ends with its b_transport), and no response is sent.
+//
+// Targets: the bus always calls b_transport (always from a thread). An AT-only target (a
+// simple_target_socket with only nb_transport registered) is served through the socket's
+// b-to-nb adapter, which waits inside b_transport until the target's response: conventional PCI
+// has no split transactions, so the bus is held from the start until the target completes
+//   end = max(start + bus_time, completion)   completion = time after the call + returned delay
+// One transaction is on the bus at a time, in arrival order (every b_transport call and BEGIN_REQ
+// takes a ticket on arrival; a later one waits for its turn), so a target that waits delays those
+// behind it and never overlaps them. The offset a target is handed is start - sc_time_stamp(), or
+// zero when simulated time has already passed the start: never negative. Targets that do not wait
+// (every part here) see no change: nothing waits, and the times are those of the formulas above.
 //
 // Shared arbitration (several cards on one bus): each card keeps its own PciBus (its BAR windows,
 // its counters), and share_arbitration_with(owner) makes this bus use the owner's bus_free_at, so a
 // transfer on any of the buses waits for every other one exactly as the policy above says, as if
 // they were one bus. Without it nothing changes.
 //
-// Byte enables and streaming width pass to the target untouched. transport_dbg is routed (clipped
+// Decoding is by the bytes a transaction's addresses span (a streaming burst: its streaming width,
+// address_map.h, bytes_touched). Byte enables and streaming width pass to the target untouched. transport_dbg is routed (clipped
 // to the window, no time). DMI is refused everywhere (every PCI access must be arbitrated and
 // timed): get_direct_mem_ptr returns false with DMI_ACCESS_NONE over [0, 2^64 - 1], the whole
 // range the refusal holds for, and forwarded transactions come back with the DMI hint cleared.
@@ -145,6 +156,7 @@ class PciBus : public sc_core::sc_module {
     int port;
     tlm::tlm_generic_payload* trans;
     sc_core::sc_time request;
+    std::uint64_t ticket;  // its turn on the bus (arrival order)
   };
   // The base-protocol state of one `in` port.
   struct AtPort {
@@ -166,6 +178,8 @@ class PciBus : public sc_core::sc_module {
   Carried carry(int port, tlm::tlm_generic_payload& trans, const sc_core::sc_time& request);
   sc_core::sc_time bus_time(const tlm::tlm_generic_payload& trans) const;
   sc_core::sc_time forward(tlm::tlm_generic_payload& trans, const Decoded& hit, const sc_core::sc_time& start);
+  void wait_for_turn(std::uint64_t ticket);
+  sc_core::sc_time start_for(const sc_core::sc_time& request) const;
   sc_core::sc_time master_abort(tlm::tlm_generic_payload& trans);
   PciInitiatorReport& counters(int port);
   void count(PciInitiatorReport& c, const tlm::tlm_generic_payload& trans, const sc_core::sc_time& occupancy,
@@ -174,6 +188,7 @@ class PciBus : public sc_core::sc_module {
   // Approximately timed path.
   void carry_requests_thread();
   void carry_queued_requests();
+  bool end_request(int port, tlm::tlm_generic_payload& trans, const sc_core::sc_time& start);
   void deliver(tlm::tlm_generic_payload& trans, const tlm::tlm_phase& phase);  // m_peq callback
   void send_response(int port, tlm::tlm_generic_payload& trans);
   void response_ended(int port, tlm::tlm_generic_payload& trans);
@@ -186,6 +201,12 @@ class PciBus : public sc_core::sc_module {
   sc_core::sc_time m_bus_free_at = sc_core::SC_ZERO_TIME;  // of this bus's arbitration when it owns it
   PciBus* m_arbiter = this;  // whose bus_free_at arbitrates this bus (itself unless shared)
   unsigned m_sharers = 0;    // buses arbitrating through this one
+  // Turns on the bus, in the arbiter: every transaction (b_transport call or BEGIN_REQ) takes a
+  // ticket on arrival and is carried when m_serving reaches it, so one is on the bus at a time even
+  // while a target waits inside b_transport.
+  std::uint64_t m_tickets = 0;
+  std::uint64_t m_serving = 0;
+  sc_core::sc_event m_turn_changed;
   std::vector<PciInitiatorReport> m_initiators;
 
   std::deque<AtRequest> m_requests;  // AT requests not yet carried, in arrival order

@@ -29,7 +29,7 @@ void Router::unmapped(tlm::tlm_generic_payload& trans) {
   ++m_report.address_errors;
   std::ostringstream msg;
   msg << name() << ": no window holds address 0x" << std::hex << trans.get_address() << " + 0x"
-      << trans.get_data_length() << " bytes";
+      << bytes_touched(trans) << " bytes";
   SC_REPORT_WARNING(kMsgType, msg.str().c_str());
   trans.set_response_status(tlm::TLM_ADDRESS_ERROR_RESPONSE);
 }
@@ -37,7 +37,7 @@ void Router::unmapped(tlm::tlm_generic_payload& trans) {
 void Router::b_transport(int, tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) {
   if (zero_length_transfer(trans)) return trans.set_response_status(tlm::TLM_BURST_ERROR_RESPONSE);
   const std::uint64_t address = trans.get_address();
-  const std::optional<Decoded> hit = m_map.decode(address, trans.get_data_length());
+  const std::optional<Decoded> hit = m_map.decode(address, bytes_touched(trans));
   if (!hit) return unmapped(trans);
   ++m_report.transactions;
   delay += cycles(m_config.latency_cycles, m_config.clock_period);
@@ -92,7 +92,7 @@ tlm::tlm_sync_enum Router::begin_request(int port, tlm::tlm_generic_payload& tra
     return tlm::TLM_COMPLETED;  // no time, as for b_transport
   }
   const std::uint64_t address = trans.get_address();
-  const std::optional<Decoded> hit = m_map.decode(address, trans.get_data_length());
+  const std::optional<Decoded> hit = m_map.decode(address, bytes_touched(trans));
   if (!hit) {
     unmapped(trans);
     return tlm::TLM_COMPLETED;  // no time, as for b_transport
@@ -154,10 +154,23 @@ tlm::tlm_sync_enum Router::nb_transport_bw(int port, tlm::tlm_generic_payload& t
     return tlm::TLM_COMPLETED;
   }
   request_ended(trans, now() + delay);
-  if (in[f->in_port]->nb_transport_bw(trans, phase, delay) != tlm::TLM_ACCEPTED) {
-    SC_REPORT_ERROR(kMsgType, (std::string(name()) + ": an initiator must answer END_REQ with TLM_ACCEPTED").c_str());
-  }
+  send_end_request(trans, phase, delay);
   return tlm::TLM_ACCEPTED;
+}
+
+// END_REQ to the initiator on the backward path. The initiator may end the transaction there
+// (TLM_COMPLETED, IEEE 1666-2011 15.2): it gets no response, and the router finishes the target's
+// side itself when the target's BEGIN_RESP comes (begin_response).
+void Router::send_end_request(tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase, sc_core::sc_time& delay) {
+  Flight& f = m_flights.at(&trans);  // a reference into the map stays valid across the call
+  const tlm::tlm_sync_enum answer = in[f.in_port]->nb_transport_bw(trans, phase, delay);
+  if (answer == tlm::TLM_COMPLETED) {
+    f.initiator_done = true;
+  } else if (answer != tlm::TLM_ACCEPTED) {
+    const std::string msg = std::string(name()) + ": in[" + std::to_string(f.in_port) +
+                            "]: END_REQ must be answered TLM_ACCEPTED or TLM_COMPLETED";
+    SC_REPORT_ERROR(kMsgType, msg.c_str());
+  }
 }
 
 // BEGIN_RESP from a target waiting for the answer: passed to a free initiator and its answer back.
@@ -165,6 +178,11 @@ tlm::tlm_sync_enum Router::begin_response(tlm::tlm_generic_payload& trans, tlm::
                                           sc_core::sc_time& delay) {
   request_ended(trans, now() + delay);  // implied END_REQ, if none came
   Flight& f = m_flights.at(&trans);
+  if (f.initiator_done) {  // the initiator ended the transaction at END_REQ: the response ends here
+    trans.set_address(f.address);
+    release(trans);
+    return tlm::TLM_COMPLETED;
+  }
   Hop& initiator = initiator_hop(f.in_port);
   if (initiator.open != nullptr) {
     f.target_waits = true;
@@ -206,12 +224,7 @@ void Router::send_held_request(tlm::tlm_generic_payload& trans) {
   const tlm::tlm_sync_enum answer = out[f.out_port]->nb_transport_fw(trans, phase, delay);
   if (answer == tlm::TLM_ACCEPTED) return;
   request_ended(trans, now() + delay);
-  if (answer == tlm::TLM_UPDATED && phase == tlm::END_REQ) {
-    if (in[f.in_port]->nb_transport_bw(trans, phase, delay) != tlm::TLM_ACCEPTED) {
-      SC_REPORT_ERROR(kMsgType, (std::string(name()) + ": an initiator must answer END_REQ with TLM_ACCEPTED").c_str());
-    }
-    return;
-  }
+  if (answer == tlm::TLM_UPDATED && phase == tlm::END_REQ) return send_end_request(trans, phase, delay);
   f.target_waits = answer == tlm::TLM_UPDATED;
   respond_later(trans, delay);
 }

@@ -26,7 +26,10 @@
 //     responded through a return value, the initiator gets TLM_UPDATED with END_REQ instead) and
 //     delivered at max(its time, the END_RESP time of the previous one); the target gets its
 //     END_RESP when the initiator gives it.
-// A payload with a memory manager is acquired from BEGIN_REQ to its end at the router. An unmapped
+// An initiator may answer END_REQ TLM_COMPLETED (it wants no response, IEEE 1666-2011 15.2): the
+// router then sends it nothing more and ends the target's response itself (TLM_COMPLETED to the
+// target's BEGIN_RESP), as the PciBus does. A payload with a memory manager is acquired from
+// BEGIN_REQ to its end at the router. An unmapped
 // or zero-length BEGIN_REQ is completed at once (TLM_COMPLETED with its error, no time). Targets may be AT or
 // LT-only (simple_target_socket converts; it answers BEGIN_REQ with TLM_ACCEPTED and no END_REQ
 // before its BEGIN_RESP, so requests to it are serialised). Byte enables and streaming width pass
@@ -93,6 +96,7 @@ class Router : public sc_core::sc_module {
     sc_core::sc_time due;   // while held: when its BEGIN_REQ (or BEGIN_RESP) was due
     bool held_request = false;  // answered TLM_ACCEPTED and held: the target's answers go back as calls
     bool target_waits = false;  // the target has responded and waits for END_RESP on the forward path
+    bool initiator_done = false;  // the initiator answered END_REQ TLM_COMPLETED: no response goes to it
   };
   // Exclusion-rule state of one side of the router: the open phase (request towards a target,
   // response towards an initiator), when the last one ended, and the transactions held behind it.
@@ -114,6 +118,7 @@ class Router : public sc_core::sc_module {
                                        tlm::tlm_phase& phase, sc_core::sc_time& delay);
   tlm::tlm_sync_enum begin_response(tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase, sc_core::sc_time& delay);
   void send_held_request(tlm::tlm_generic_payload& trans);
+  void send_end_request(tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase, sc_core::sc_time& delay);
   void respond_later(tlm::tlm_generic_payload& trans, const sc_core::sc_time& delay);
   void send_response(tlm::tlm_generic_payload& trans, sc_core::sc_time delay);
   void request_ended(tlm::tlm_generic_payload& trans, const sc_core::sc_time& at);

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "tlm/address_map.h"
 #include "tlm/no_data_extension.h"
 #include "tlm/timing.h"
 
@@ -88,10 +89,10 @@ tlm::tlm_response_status SramBank::check(const tlm::tlm_generic_payload& trans) 
     ++m_report.rejected;
     return tlm::TLM_BURST_ERROR_RESPONSE;
   }
-  if (!in_range(trans.get_address(), trans.get_data_length())) {
+  if (!in_range(trans.get_address(), bytes_touched(trans))) {
     ++m_report.address_errors;
     std::ostringstream msg;
-    msg << name() << ": address 0x" << std::hex << trans.get_address() << " + 0x" << trans.get_data_length()
+    msg << name() << ": address 0x" << std::hex << trans.get_address() << " + 0x" << bytes_touched(trans)
         << " bytes is outside the bank (capacity 0x" << m_config.capacity_bytes << ")";
     SC_REPORT_WARNING(kMsgType, msg.str().c_str());
     return tlm::TLM_ADDRESS_ERROR_RESPONSE;

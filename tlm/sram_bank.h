@@ -17,7 +17,8 @@
 //   TLM_IGNORE_COMMAND                              OK, nothing done, no time
 //   data_length 0 (forbidden by 14.12 for a read or write; zero bytes are moved with IGNORE)
 //                                                   TLM_BURST_ERROR_RESPONSE, counted as rejected
-//   [a, a + n) not inside [0, capacity)             TLM_ADDRESS_ERROR_RESPONSE, warned, counted
+//   [a, a + t) not inside [0, capacity)             TLM_ADDRESS_ERROR_RESPONSE, warned, counted
+//     (t: the bytes the addresses span, n, or the streaming width w when w < n: address_map.h)
 //   byte enables of length 0, or an element other than 0x00 / 0xFF (undefined by 14.14)
 //                                                   TLM_BYTE_ENABLE_ERROR_RESPONSE, counted as rejected
 //   streaming width < data length                   TLM_BURST_ERROR_RESPONSE, counted as rejected

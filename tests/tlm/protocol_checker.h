@@ -34,6 +34,9 @@
 #include <tlm_utils/simple_initiator_socket.h>
 #include <tlm_utils/simple_target_socket.h>
 
+#include "tests/tlm/at_target.h"
+#include "tests/tlm/hop_checker.h"
+
 namespace rc::tlmx::test {
 
 // One transaction as an initiator asks for it.
@@ -75,37 +78,6 @@ struct Outcome {
   std::optional<sc_core::sc_time> end_request;  // END_REQ received as such (AT)
   sc_core::sc_time response;                    // BEGIN_RESP, or TLM_COMPLETED
   sc_core::sc_time end_response;                // END_RESP (AT; equal to response when completed at once)
-};
-
-// The attributes an initiator sets and nobody else may change.
-struct Attributes {
-  tlm::tlm_command command = tlm::TLM_IGNORE_COMMAND;
-  std::uint64_t address = 0;
-  unsigned char* data = nullptr;
-  unsigned int length = 0;
-  unsigned char* byte_enable = nullptr;
-  unsigned int byte_enable_length = 0;
-  unsigned int streaming_width = 0;
-
-  static Attributes of(const tlm::tlm_generic_payload& t) {
-    return {t.get_command(),         t.get_address(),     t.get_data_ptr(),       t.get_data_length(),
-            t.get_byte_enable_ptr(), t.get_byte_enable_length(), t.get_streaming_width()};
-  }
-  // The names of the attributes that differ in `now`, comma separated ("" if none).
-  std::string changed_in(const Attributes& now) const {
-    std::string names;
-    auto note = [&](bool differs, const char* name) {
-      if (differs) names += names.empty() ? name : std::string(", ") + name;
-    };
-    note(now.command != command, "command");
-    note(now.address != address, "address");
-    note(now.data != data, "data pointer");
-    note(now.length != length, "data length");
-    note(now.byte_enable != byte_enable, "byte-enable pointer");
-    note(now.byte_enable_length != byte_enable_length, "byte-enable length");
-    note(now.streaming_width != streaming_width, "streaming width");
-    return names;
-  }
 };
 
 inline void fill(tlm::tlm_generic_payload& trans, const Request& r) {
@@ -181,13 +153,51 @@ class PayloadPool : public tlm::tlm_mm_interface {
   std::vector<tlm::tlm_generic_payload*> m_free;
 };
 
+// The socket of a checking initiator as a test sees it: the initiator's own socket is bound to a
+// HopChecker inside it, so every call it makes (and every call a test makes through `->`) passes the
+// checker; bind() binds the checker's far side to the target.
+template <class Owner>
+class CheckedSocket {
+ public:
+  CheckedSocket(const char* name, HopChecker& hop) : m_socket(name), m_hop(hop) { m_socket.bind(hop.in); }
+  template <class Target>
+  void bind(Target& target) { m_hop.out.bind(target); }
+  tlm::tlm_fw_transport_if<>* operator->() { return m_socket.operator->(); }
+  tlm_utils::simple_initiator_socket<Owner>& socket() { return m_socket; }
+
+ private:
+  tlm_utils::simple_initiator_socket<Owner> m_socket;
+  HopChecker& m_hop;
+};
+
+// The checking initiators send malformed payloads on purpose (tests of the answers to them).
+inline HopCheckerConfig initiator_hop_config() {
+  HopCheckerConfig c;
+  c.malformed_requests_expected = true;
+  return c;
+}
+
+// The initiator's own breaches list, then its hop checker's, then transactions left open on the hop.
+inline std::vector<std::string> all_violations(const ViolationLog& log, const HopChecker& hop) {
+  std::vector<std::string> all = log.lines();
+  all.insert(all.end(), hop.violations().begin(), hop.violations().end());
+  const std::vector<std::string> open = hop.unfinished();
+  all.insert(all.end(), open.begin(), open.end());
+  return all;
+}
+
 // A loosely-timed initiator running `script` in its thread.
 class LtInitiator : public sc_core::sc_module {
  public:
-  tlm_utils::simple_initiator_socket<LtInitiator> out;
+  HopChecker hop;
+  CheckedSocket<LtInitiator> out;
 
   LtInitiator(const sc_core::sc_module_name& name, std::function<void(LtInitiator&)> script)
-      : sc_core::sc_module(name), out("out"), m_script(std::move(script)), m_log(this->name()) {
+      : sc_core::sc_module(name),
+        hop("hop", initiator_hop_config()),
+        out("out", hop),
+        m_script(std::move(script)),
+        m_log(this->name()) {
     SC_HAS_PROCESS(LtInitiator);
     SC_THREAD(run);
   }
@@ -198,18 +208,19 @@ class LtInitiator : public sc_core::sc_module {
     fill(trans, r);
     const Attributes sent = Attributes::of(trans);
     sc_core::sc_time delay = r.delay;
+    const sc_core::sc_time requested = sc_core::sc_time_stamp() + r.delay;  // the call may wait
     out->b_transport(trans, delay);
-    if (delay < r.delay) m_log.add(r, "b_transport returned a smaller delay than it was given");
+    if (sc_core::sc_time_stamp() + delay < requested) m_log.add(r, "b_transport completes before it was issued");
     check_response(trans, r, sent, *out.operator->(), m_log);
     Outcome o;
     o.status = trans.get_response_status();
     o.dmi_hint = trans.is_dmi_allowed();
-    o.request = sc_core::sc_time_stamp() + r.delay;
+    o.request = requested;
     o.response = o.end_response = sc_core::sc_time_stamp() + delay;
     return o;
   }
 
-  const std::vector<std::string>& violations() const { return m_log.lines(); }
+  std::vector<std::string> violations() const { return all_violations(m_log, hop); }
   bool finished() const { return m_finished; }
 
  private:
@@ -224,23 +235,27 @@ class LtInitiator : public sc_core::sc_module {
 };
 
 // How the AT initiator answers a BEGIN_RESP: TLM_COMPLETED, TLM_UPDATED with END_RESP, or
-// TLM_ACCEPTED followed by END_RESP on the forward path `hold` later.
-enum class EndResponse { completed, updated, accepted };
+// TLM_ACCEPTED followed by END_RESP on the forward path `hold` later. at_end_request: it answers an
+// END_REQ on the backward path TLM_COMPLETED, ending the transaction there without a response (the
+// base protocol allows it, 15.2); a BEGIN_RESP arriving later is a violation.
+enum class EndResponse { completed, updated, accepted, at_end_request };
 
 // An approximately-timed initiator running `script` in its thread. issue() sends BEGIN_REQ and
 // returns at the end of the request phase (the next BEGIN_REQ may follow); finish() returns when
 // the transaction is over, at its END_RESP time.
 class AtInitiator : public sc_core::sc_module {
  public:
-  tlm_utils::simple_initiator_socket<AtInitiator> out;
+  HopChecker hop;
+  CheckedSocket<AtInitiator> out;
 
   AtInitiator(const sc_core::sc_module_name& name, std::function<void(AtInitiator&)> script)
       : sc_core::sc_module(name),
-        out("out"),
+        hop("hop", initiator_hop_config()),
+        out("out", hop),
         m_script(std::move(script)),
         m_log(this->name()),
         m_end_responses("end_responses", this, &AtInitiator::send_end_response) {
-    out.register_nb_transport_bw(this, &AtInitiator::nb_transport_bw);
+    out.socket().register_nb_transport_bw(this, &AtInitiator::nb_transport_bw);
     SC_HAS_PROCESS(AtInitiator);
     SC_THREAD(run);
   }
@@ -283,7 +298,7 @@ class AtInitiator : public sc_core::sc_module {
     return finish(issue(r, answer, hold));
   }
 
-  const std::vector<std::string>& violations() const { return m_log.lines(); }
+  std::vector<std::string> violations() const { return all_violations(m_log, hop); }
   std::size_t payloads_in_use() const { return m_pool.in_use(); }
   bool finished() const { return m_finished; }
 
@@ -337,12 +352,14 @@ class AtInitiator : public sc_core::sc_module {
     end_request(rec, at);
   }
 
-  void got_begin_resp(Record& rec, const sc_core::sc_time& at) {
+  // A response: a BEGIN_RESP phase, or (phase false) TLM_COMPLETED returned to BEGIN_REQ, which is no
+  // response phase: the exclusion rules (15.2.6) are about phases and do not apply to it.
+  void got_begin_resp(Record& rec, const sc_core::sc_time& at, bool phase = true) {
     advance(rec, at, "BEGIN_RESP");
     if (rec.phase != Phase::begin_req && rec.phase != Phase::end_req) m_log.add(rec.request, "BEGIN_RESP out of order");
-    if (m_open_response != nullptr)
+    if (phase && m_open_response != nullptr)
       m_log.add(rec.request, "BEGIN_RESP while another response on the socket is open (exclusion rule)");
-    if (at < m_responses_free_at)
+    if (phase && at < m_responses_free_at)
       m_log.add(rec.request, "BEGIN_RESP before the END_RESP of the previous response (exclusion rule)");
     if (!rec.request_over) end_request(rec, at);
     rec.phase = Phase::begin_resp;
@@ -352,11 +369,11 @@ class AtInitiator : public sc_core::sc_module {
     rec.outcome.dmi_hint = rec.trans->is_dmi_allowed();
   }
 
-  void over(Record& rec, const sc_core::sc_time& at) {
+  void over(Record& rec, const sc_core::sc_time& at, bool response_phase = true) {
     rec.outcome.end_response = at;
-    rec.phase = Phase::over;
     if (m_open_response == &rec) m_open_response = nullptr;
-    m_responses_free_at = std::max(m_responses_free_at, at);
+    if (response_phase && rec.phase == Phase::begin_resp) m_responses_free_at = std::max(m_responses_free_at, at);
+    rec.phase = Phase::over;
     m_active.erase(rec.trans);
     rec.trans->release();
     rec.trans = nullptr;
@@ -367,8 +384,8 @@ class AtInitiator : public sc_core::sc_module {
   // TLM_COMPLETED from the target side: request, response and its end all at `at`.
   void completed(Record& rec, const sc_core::sc_time& delay) {
     const sc_core::sc_time at = sc_core::sc_time_stamp() + delay;
-    got_begin_resp(rec, at);
-    over(rec, at);
+    got_begin_resp(rec, at, false);
+    over(rec, at, false);
   }
 
   // TLM_UPDATED returned to BEGIN_REQ: END_REQ, or BEGIN_RESP (after which END_RESP is ours to send).
@@ -391,7 +408,9 @@ class AtInitiator : public sc_core::sc_module {
     const sc_core::sc_time at = sc_core::sc_time_stamp() + delay;
     if (phase == tlm::END_REQ) {
       got_end_req(rec, at);
-      return tlm::TLM_ACCEPTED;
+      if (rec.answer != EndResponse::at_end_request) return tlm::TLM_ACCEPTED;
+      over(rec, at);  // no response: status and response time stay as they were
+      return tlm::TLM_COMPLETED;
     }
     if (phase != tlm::BEGIN_RESP) {
       m_log.add(rec.request, "a phase other than END_REQ or BEGIN_RESP on the backward path");
@@ -399,6 +418,7 @@ class AtInitiator : public sc_core::sc_module {
     }
     got_begin_resp(rec, at);
     switch (rec.answer) {
+      case EndResponse::at_end_request:  // the response implied END_REQ: too late to decline it
       case EndResponse::completed:
         over(rec, at);
         return tlm::TLM_COMPLETED;
@@ -437,99 +457,6 @@ class AtInitiator : public sc_core::sc_module {
   sc_core::sc_time m_responses_free_at = sc_core::SC_ZERO_TIME;
   tlm_utils::peq_with_cb_and_phase<AtInitiator> m_end_responses;
   bool m_finished = false;
-};
-
-// An approximately-timed target without storage, for the interconnects' AT paths: it answers
-// every BEGIN_REQ in one style, with END_REQ `accept` and BEGIN_RESP `respond` after the request
-// (respond >= accept), TLM_OK_RESPONSE, reads filled with `fill_byte`. It keeps the exclusion rules
-// of its own socket as a target must (one response open at a time) and records what it saw.
-class AtTarget : public sc_core::sc_module {
- public:
-  // accepted: TLM_ACCEPTED, then END_REQ and BEGIN_RESP on the backward path;
-  // end_req: TLM_UPDATED with END_REQ, then BEGIN_RESP on the backward path;
-  // begin_resp: TLM_UPDATED with BEGIN_RESP (delay `respond`), END_RESP expected on the forward path;
-  // completed: TLM_COMPLETED (delay `respond`).
-  enum class Style { accepted, end_req, begin_resp, completed };
-
-  tlm_utils::simple_target_socket<AtTarget> in;
-  Style style;
-  sc_core::sc_time accept, respond;
-  unsigned char fill_byte = 0x5A;
-  std::vector<std::uint64_t> addresses;        // address of each BEGIN_REQ as received
-  std::vector<sc_core::sc_time> request_times;  // when each BEGIN_REQ took effect
-  std::vector<std::string> violations;          // requests while a request phase was open
-
-  AtTarget(const sc_core::sc_module_name& name, Style how, sc_core::sc_time accept_after,
-           sc_core::sc_time respond_after)
-      : sc_core::sc_module(name),
-        in("in"),
-        style(how),
-        accept(accept_after),
-        respond(respond_after),
-        m_peq("phases", this, &AtTarget::send) {
-    in.register_nb_transport_fw(this, &AtTarget::nb_transport_fw);
-  }
-
- private:
-  tlm::tlm_sync_enum nb_transport_fw(tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase, sc_core::sc_time& delay) {
-    if (phase == tlm::END_RESP) {
-      m_response_open = nullptr;
-      if (!m_due.empty()) {
-        tlm::tlm_generic_payload* next = m_due.front();
-        m_due.pop_front();
-        m_peq.notify(*next, tlm::BEGIN_RESP, delay);
-      }
-      return tlm::TLM_COMPLETED;
-    }
-    addresses.push_back(trans.get_address());
-    request_times.push_back(sc_core::sc_time_stamp() + delay);
-    if (m_request_open) violations.push_back(std::string(name()) + ": BEGIN_REQ while a request phase is open");
-    execute(trans);
-    switch (style) {
-      case Style::accepted:
-        m_request_open = true;
-        m_peq.notify(trans, tlm::END_REQ, delay + accept);
-        m_peq.notify(trans, tlm::BEGIN_RESP, delay + respond);
-        return tlm::TLM_ACCEPTED;
-      case Style::end_req:
-        m_peq.notify(trans, tlm::BEGIN_RESP, delay + respond);
-        phase = tlm::END_REQ;
-        delay += accept;
-        return tlm::TLM_UPDATED;
-      case Style::begin_resp:
-        m_response_open = &trans;
-        phase = tlm::BEGIN_RESP;
-        delay += respond;
-        return tlm::TLM_UPDATED;
-      case Style::completed:
-        delay += respond;
-        return tlm::TLM_COMPLETED;
-    }
-    return tlm::TLM_COMPLETED;
-  }
-
-  void execute(tlm::tlm_generic_payload& trans) {
-    if (trans.is_read()) std::fill_n(trans.get_data_ptr(), trans.get_data_length(), fill_byte);
-    trans.set_response_status(tlm::TLM_OK_RESPONSE);
-  }
-
-  void send(tlm::tlm_generic_payload& trans, const tlm::tlm_phase& phase) {
-    if (phase == tlm::BEGIN_RESP && m_response_open != nullptr) {
-      m_due.push_back(&trans);  // after the open response's END_RESP
-      return;
-    }
-    tlm::tlm_phase p = phase;
-    sc_core::sc_time delay = sc_core::SC_ZERO_TIME;
-    if (phase == tlm::END_REQ) m_request_open = false;
-    if (phase == tlm::BEGIN_RESP) m_request_open = false;
-    const tlm::tlm_sync_enum answer = in->nb_transport_bw(trans, p, delay);
-    if (phase == tlm::BEGIN_RESP && answer == tlm::TLM_ACCEPTED) m_response_open = &trans;
-  }
-
-  bool m_request_open = false;
-  tlm::tlm_generic_payload* m_response_open = nullptr;
-  std::deque<tlm::tlm_generic_payload*> m_due;
-  tlm_utils::peq_with_cb_and_phase<AtTarget> m_peq;
 };
 
 }  // namespace rc::tlmx::test

@@ -92,7 +92,7 @@ SolverResult ProgressiveRadiosity::run() {
   // Energy guard. With exact form factors (summing to at most 1 over a shooter's receivers) and
   // rho < 1, every step loses energy, so the total unshot power never exceeds the emitted power.
   // The point and disc rules can overshoot near a patch (the default Cornell solve with point form
-  // factors has 15 steps whose receivers get back up to 2.32 times the shot power), but in every
+  // factors has 639 of 4064 steps that deliver more than they shot, up to 3.37 times), but in every
   // converging solve measured the total stays below the emitted power (at most 0.9988 of it,
   // docs/radiosity.md, Guards); a solve that diverges grows it geometrically. So exceeding the
   // emitted power is the error. The computed sums differ from the exact ones by at most (n + 2) u

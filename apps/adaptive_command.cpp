@@ -19,7 +19,8 @@ namespace rc {
 namespace {
 
 struct AdaptiveOptions : AdaptiveSpec {
-  std::string form_factor_name = "disc";
+  AdaptiveOptions() : form_factor_name(to_string(form_factor)) {}  // the library's default (the base's)
+  std::string form_factor_name;
   int lanes = 2;
   std::string out_dir = "out/adaptive";
   std::string docs_dir;
@@ -146,8 +147,7 @@ void add_adaptive_command(CLI::App& app, int& exit_code) {
   add_bits_option(*cmd, o->bits);
   cmd->add_option("--convergence", o->convergence, "Convergence of every run")->check(convergence_target())
       ->capture_default_str();
-  cmd->add_option("--form-factor", o->form_factor_name, "point (paper) or disc")
-      ->check(CLI::IsMember({"point", "disc"}))->capture_default_str();
+  add_form_factor_option(*cmd, o->form_factor_name, "Every run: ");
   cmd->add_option("--visibility", o->visibility, "Bit-exact backend of the runs: fixed or fast")
       ->check(CLI::IsMember({"fixed", "fast"}))->capture_default_str();
   cmd->add_option("--device", o->board.device, "Board whose time is simulated")->capture_default_str();

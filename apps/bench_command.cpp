@@ -127,7 +127,7 @@ int run_bench(const BenchOptions& o) {
 
 void add_bench_command(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<BenchOptions>();
-  auto base_ff = std::make_shared<std::string>("disc");
+  auto base_ff = std::make_shared<std::string>(to_string(o->base.form_factor));
   o->board.concurrent = true;
   o->board.host = "athlon-mp-2600-calibrated";
   CLI::App* cmd = app.add_subcommand("bench", "Simulator wall time and predicted hardware time against radiosity error");
@@ -137,8 +137,7 @@ void add_bench_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("--base-patch-levels", o->base.patch_levels, "Base point: patch levels")->check(CLI::Range(0, 6))
       ->capture_default_str();
-  cmd->add_option("--form-factor", *base_ff, "Base point: form factor")->check(CLI::IsMember({"point", "disc"}))
-      ->capture_default_str();
+  add_form_factor_option(*cmd, *base_ff, "Base point: ");
   cmd->add_option("--widths", o->widths, "Widths to sweep")->check(CLI::Range(7, 31))->delimiter(',')->capture_default_str();
   cmd->add_option("--formats", o->formats, "Float formats to sweep (float:E,M; ';'-separated; 'none' for none), "
                                            "each on the board's float lanes")

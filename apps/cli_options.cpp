@@ -80,8 +80,17 @@ void add_solver_options(CLI::App& cmd, SolverCli& solver) {
       ->check(convergence_target())->capture_default_str();
   cmd.add_option("--steps", solver.options.fixed_steps,
                  "Run exactly this many shooting steps instead (at least 1; without it: to --convergence)");
-  cmd.add_option("--form-factor", solver.form_factor, "point (paper) or disc")
-      ->check(CLI::IsMember({"point", "disc"}))->capture_default_str();
+  add_form_factor_option(cmd, solver.form_factor);
+}
+
+CLI::Option* add_form_factor_option(CLI::App& cmd, std::string& name, const std::string& what) {
+  const auto& names = form_factor_names();
+  return cmd.add_option("--form-factor", name,
+                        what + "Form factor: analytic (exact from each receiver's centre to the shooter's triangle, "
+                               "never creates energy), point (the paper's centre-to-centre rule) or disc "
+                               "(docs/radiosity.md)")
+      ->check(CLI::IsMember(std::vector<std::string>(names.begin(), names.end())))
+      ->capture_default_str();
 }
 
 void add_bits_option(CLI::App& cmd, int& bits) {

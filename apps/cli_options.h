@@ -16,7 +16,7 @@ namespace rc {
 // Solver options as parsed; the form factor arrives as a name and is resolved after parsing.
 struct SolverCli {
   SolverOptions options;
-  std::string form_factor = "point";
+  std::string form_factor = to_string(SolverOptions{}.form_factor);  // the library's default: analytic
   // The options, checked: --steps at least 1 and within the solver's cap, and --convergence not given
   // beside --steps (a fixed count never reads it). Throws CLI::ValidationError naming the option.
   SolverOptions resolved(const CLI::App& cmd) const;
@@ -25,6 +25,9 @@ struct SolverCli {
 void add_scene_options(CLI::App& cmd, SceneOptions& scene);
 void add_solver_options(CLI::App& cmd, SolverCli& solver);
 void add_bits_option(CLI::App& cmd, int& bits);
+// --form-factor NAME, one of form_factor_names() (radiosity/form_factor.h), its default shown; `what`
+// prefixes the help ("Base point: " for bench). Resolve with parse_form_factor_kind.
+CLI::Option* add_form_factor_option(CLI::App& cmd, std::string& name, const std::string& what = "");
 
 // A convergence target: strictly between 0 and 1 (0 stops before the first step; 1 asks for no unshot
 // power at all and runs to the solver's step cap).

@@ -39,6 +39,13 @@ nlohmann::ordered_json solver_json(const SolverResult& r) {
   j["segments"] = r.segments;
   j["blocked_segments"] = r.blocked_segments;
   j["receivers_skipped"] = r.receivers_skipped;
+  const FormFactorSums& f = r.form_factor_sums;
+  j["form_factor_sums"] = {{"normalised", f.normalised},
+                           {"steps_above_one", f.steps_above_one},
+                           {"largest", f.largest},
+                           {"largest_step", f.largest_step},
+                           {"largest_shooter", f.largest_shooter}};
+  j["emission_exponent"] = r.emission_exponent;
   return j;
 }
 

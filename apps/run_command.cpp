@@ -194,7 +194,7 @@ void print_summary(const RunOptions& o, const Scene& scene, const RunOutcome& ou
 }
 
 nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& prepared, const RunOutcome& out,
-                                   double wall) {
+                                   const std::vector<std::string>& solver_warnings, double wall) {
   const Scene& scene = prepared.scene;
   nlohmann::ordered_json report;
   report["schema"] = "rc2000sim.run/1";
@@ -220,6 +220,7 @@ nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& pre
                         {"patch_levels", o.scene.patch_size > 0 ? nlohmann::ordered_json() : nlohmann::ordered_json(o.scene.patch_levels)},
                         {"patch_size", o.scene.patch_size > 0 ? nlohmann::ordered_json(o.scene.patch_size) : nlohmann::ordered_json()}};
   report["solver"] = solver_json(out.solver);
+  report["solver"]["warnings"] = solver_warnings;
   if (out.board) {
     report["host_work"] = work_json(out.board->work);
   } else {
@@ -298,12 +299,19 @@ int run_simulation(const RunOptions& o) {
       o.impl == "board" ? run_board(o, scene, progress, vcd ? vcd->path() : std::string()) : run_software(o, scene, progress);
   const RgbImage image = tone_map(render_radiosity(scene, out.solver.radiosity, o.render), o.render.key);
   progress.finish();
+  // Point and disc: steps that created energy, said once (docs/radiosity.md, Form-factor sums).
+  std::vector<std::string> solver_warnings;
+  if (std::string w = form_factor_sum_warning(scene, out.solver, o.solver.form_factor); !w.empty()) {
+    std::fprintf(stderr, "warning: %s\n", w.c_str());
+    solver_warnings.push_back(std::move(w));
+  }
 
   outputs.add(o.out_dir + "/patches.csv", patches_csv(scene, out.solver.radiosity));
   outputs.add(o.out_dir + "/image.png", encode_png(image));
   if (!o.trace_path.empty()) outputs.add(o.trace_path, out.trace_json);
   if (vcd) outputs.move_in(o.board.vcd_path, vcd->path());
-  outputs.add_made(o.out_dir + "/report.json", [&] { return pretty_json(make_report(o, prepared, out, progress.seconds())); });
+  outputs.add_made(o.out_dir + "/report.json",
+                   [&] { return pretty_json(make_report(o, prepared, out, solver_warnings, progress.seconds())); });
   outputs.write();
   print_summary(o, scene, out, progress.seconds(), outputs.paths());
   return 0;

@@ -70,6 +70,7 @@ struct SweepOptions {
   std::string concurrent = "on";
   bool paper_faithful = true;
   std::string visibility = "fast";
+  std::string form_factor = Study{}.form_factor;  // the paper's point rule (a sweep replicates its workload)
   bool full_banks = false;
   bool quiet = false;
   bool list_fields = false;
@@ -86,7 +87,7 @@ struct MergeOptions {
 const char* const kStudyOptions[] = {"--scene", "--faces", "--face-levels", "--patch-levels", "--patch-size",
                                      "--steps", "--convergence", "--lanes", "--banks", "--bits", "--devices",
                                      "--concurrent", "--paper-faithful", "--host", "--visibility", "--full-banks",
-                                     "--cards", "--card-split", "--card-bus"};
+                                     "--cards", "--card-split", "--card-bus", "--form-factor"};
 
 Study study_from_options(const SweepOptions& o) {
   Study s = default_study();
@@ -96,6 +97,7 @@ Study study_from_options(const SweepOptions& o) {
   s.convergence = o.convergence;
   s.paper_faithful = o.paper_faithful;
   s.visibility = o.visibility;
+  s.form_factor = o.form_factor;
   s.full_banks = o.full_banks;
   s.axes.devices = parse_name_list(o.devices, "--devices");
   s.axes.hosts = parse_name_list(o.hosts, "--host");
@@ -231,6 +233,7 @@ nlohmann::ordered_json sweep_json(const Study& s, const SceneSweep& r, const std
   j["scene"] = {{"name", r.scene.name}, {"source", r.scene.source}, {"faces", r.scene.faces}, {"patches", r.scene.patches}};
   j["solver"] = {{"paper_faithful", s.paper_faithful}, {"steps_policy", s.steps}, {"convergence", s.convergence},
                  {"visibility", s.visibility}};
+  if (s.form_factor != Study{}.form_factor) j["solver"]["form_factor"] = s.form_factor;  // point: as before it existed
   j["host_profile"] = s.axes.hosts.size() == 1 ? nlohmann::ordered_json(s.axes.hosts.front())
                                                : nlohmann::ordered_json(s.axes.hosts);
   nlohmann::ordered_json w = nlohmann::ordered_json::array();
@@ -516,6 +519,7 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("--visibility", o->visibility, "Bit-exact backend that answers visibility once per width: fixed or fast")
       ->check(CLI::IsMember({"fixed", "fast"}))->capture_default_str();
+  add_form_factor_option(*cmd, o->form_factor, "Every solve (default: the paper's point rule): ");
   cmd->add_option("--out", o->out_dir, "Output folder for sweep.csv, sweep.json, study.json and the plots (with "
                                        "--shard: for the shard file)")->check(output_path())
       ->capture_default_str();

@@ -28,7 +28,7 @@ struct AdaptiveSpec {
   int reference_levels = 4;        // no patch is split deeper than this (errors are measured there)
   int bits = 15;
   double convergence = 0.995;
-  FormFactorKind form_factor = FormFactorKind::Disc;
+  FormFactorKind form_factor = FormFactorKind::Analytic;  // the runs' (the reference's: disc, fixed)
   std::string visibility = "fast";
   BoardRunOptions board;           // the hardware whose time is simulated
   int image_size = 256;

@@ -26,9 +26,9 @@ std::vector<BenchPoint> sweep_points(const BenchSpec& o) {
   for (const std::string& f : o.formats) vary("arith", [&](BenchPoint& p) { p.arith = f; });
   for (double c : o.convergences) vary("convergence", [&](BenchPoint& p) { p.convergence = c; });
   for (int m : o.patch_levels) vary("patch_levels", [&](BenchPoint& p) { p.patch_levels = m; });
-  vary("form_factor", [&](BenchPoint& p) {
-    p.form_factor = p.form_factor == FormFactorKind::PointToPoint ? FormFactorKind::Disc : FormFactorKind::PointToPoint;
-  });
+  for (const std::string& name : form_factor_names()) {
+    vary("form_factor", [&](BenchPoint& p) { p.form_factor = parse_form_factor_kind(name); });
+  }
   return points;
 }
 

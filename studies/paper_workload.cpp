@@ -155,6 +155,7 @@ std::vector<PaperScene> prepare_paper_scenes(const std::vector<PaperRow>& rows, 
     p.row = rows[i];
     p.scene = prepare_scene(paper_scene_options(p.row.faces, p.row.patches)).scene;
     p.solver.cull_receivers = false;
+    p.solver.form_factor = FormFactorKind::PointToPoint;  // the paper's rule (sec 2)
     p.solver.fixed_steps = p.row.steps;
     p.recorded_steps = p.row.steps + p.row.steps / 10;
   }

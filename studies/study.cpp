@@ -174,6 +174,11 @@ void check_study(const Study& s) {
     throw std::invalid_argument(where(s) + ": solver.visibility: expected fixed or fast, got '" + s.visibility + "'");
   if (!(s.convergence > 0 && s.convergence < 1))
     throw std::invalid_argument(where(s) + ": solver.convergence: must lie strictly between 0 and 1");
+  try {
+    (void)parse_form_factor_kind(s.form_factor);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(where(s) + ": solver.form_factor: " + e.what());
+  }
   std::set<std::string> paths;
   for (const ProfileAxis& a : s.axes.profile) {
     if (!paths.insert(a.field.field + to_string(a.field.kind)).second)
@@ -214,6 +219,8 @@ nlohmann::ordered_json study_json(const Study& s) {
                  {"paper_faithful", s.paper_faithful},
                  {"visibility", s.visibility},
                  {"full_banks", s.full_banks}};
+  // Recorded when not the paper's point rule, so records of point studies read as before it existed.
+  if (s.form_factor != Study{}.form_factor) j["solver"]["form_factor"] = s.form_factor;
   nlohmann::ordered_json profile = nlohmann::ordered_json::array();
   for (const ProfileAxis& a : s.axes.profile) profile.push_back({{"path", a.field.path}, {"values", a.values}});
   nlohmann::ordered_json concurrent = nlohmann::ordered_json::array();
@@ -244,6 +251,7 @@ Study study_from_json(const nlohmann::ordered_json& j) {
     s.paper_faithful = solver.at("paper_faithful").get<bool>();
     s.visibility = solver.at("visibility").get<std::string>();
     s.full_banks = solver.at("full_banks").get<bool>();
+    s.form_factor = solver.value("form_factor", Study{}.form_factor);
     const auto& axes = j.at("axes");
     s.axes.devices = axes.at("devices").get<std::vector<std::string>>();
     s.axes.bits = axes.at("bits").get<std::vector<int>>();

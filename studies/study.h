@@ -33,6 +33,9 @@ struct Study {
   double convergence = SolverOptions{}.convergence;
   bool paper_faithful = true;
   std::string visibility = "fast";  // the bit-exact backend that answers visibility once per width
+  // The solver's form factor (form_factor_names()). The paper's point rule by default: a sweep
+  // replicates the paper's workload (Table 2's steps, every segment sent) on other boards.
+  std::string form_factor = "point";
   bool full_banks = false;          // false: banks as small as change no pass (compact_bank_capacity)
   SweepAxes axes;
   std::vector<ProfileSetting> fixed;  // applied to every configuration's profiles

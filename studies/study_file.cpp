@@ -227,7 +227,7 @@ void read_scenes(const Reader& r, const toml::node& node, Study& s) {
 }
 
 void read_solver(const Reader& r, const toml::table& t, Study& s) {
-  r.only(t, "solver.", {"steps", "convergence", "paper_faithful", "visibility", "full_banks"});
+  r.only(t, "solver.", {"steps", "convergence", "paper_faithful", "visibility", "full_banks", "form_factor"});
   if (const toml::node* n = t.get("steps")) {
     s.steps = n->is_integer() ? std::to_string(r.integer(*n, "solver.steps", 1, 10000000)) : r.text(*n, "solver.steps");
     try {
@@ -246,6 +246,14 @@ void read_solver(const Reader& r, const toml::table& t, Study& s) {
     if (s.visibility != "fixed" && s.visibility != "fast") r.fail(*n, "solver.visibility", "expected fixed or fast");
   }
   if (const toml::node* n = t.get("full_banks")) s.full_banks = r.boolean(*n, "solver.full_banks");
+  if (const toml::node* n = t.get("form_factor")) {
+    s.form_factor = r.text(*n, "solver.form_factor");
+    try {
+      (void)parse_form_factor_kind(s.form_factor);
+    } catch (const std::invalid_argument& e) {
+      r.fail(*n, "solver.form_factor", e.what());
+    }
+  }
 }
 
 // A profile path and where it was written: TOML tables are sorted by key, so the file's order

@@ -34,6 +34,7 @@ SolverOptions base_solver(const Study& s) {
   SolverOptions o;
   o.cull_receivers = !s.paper_faithful;
   o.convergence = s.convergence;
+  o.form_factor = parse_form_factor_kind(s.form_factor);
   return o;
 }
 

@@ -175,5 +175,22 @@ TEST(StudyFile, FilesThatAreNotStudiesAreRefusedBeforeReading) {
   }
 }
 
+// [solver] form_factor: the paper's point rule unless the study says otherwise; a name of
+// form_factor_names(), else an error naming the key, the line and the names. Recorded (and read back)
+// only when not point, so point studies' records are what they were before the setting existed.
+TEST(StudyFile, TheFormFactorIsAFixedSolverSettingPointByDefault) {
+  EXPECT_EQ(parse("").form_factor, "point");
+  const Study analytic = parse("[solver]\nform_factor = \"analytic\"\n");
+  EXPECT_EQ(analytic.form_factor, "analytic");
+  const nlohmann::ordered_json record = study_json(analytic);
+  EXPECT_EQ(record.at("solver").at("form_factor"), "analytic");
+  EXPECT_EQ(study_from_json(record).form_factor, "analytic");
+  EXPECT_FALSE(study_json(parse("")).at("solver").contains("form_factor"));
+  EXPECT_EQ(study_from_json(study_json(parse(""))).form_factor, "point");
+  const std::string e = error_of("[solver]\nform_factor = \"exact\"\n");
+  EXPECT_NE(e.find("inline.toml:2: solver.form_factor: unknown form factor 'exact' (expected point, disc or analytic)"),
+            std::string::npos) << e;
+}
+
 }  // namespace
 }  // namespace rc

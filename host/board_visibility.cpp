@@ -411,7 +411,8 @@ void BoardVisibility::upload_mask(std::size_t batch, std::size_t set) {
   const FaceSheets& sheets = this->sheets();
   buffer_.assign(n * word_bytes_, 0);
   // One run of rays ending on one sheet at a time: O(sheets with rays x log rays), not O(faces x log rays).
-  for (auto it = std::lower_bound(begin, end, sheets.first(f0)); it != end && *it < f1;) {
+  // A sheet that starts in the set holds rays ending beyond it (on its faces after the set) too.
+  for (auto it = std::lower_bound(begin, end, sheets.first(f0)); it != end && sheets.first(*it) < f1;) {
     const int first = sheets.first(*it), last = sheets.end(*it);
     const auto next = std::lower_bound(it, end, last);
     const auto rays = static_cast<std::uint32_t>(next - it);

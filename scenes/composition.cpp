@@ -167,6 +167,12 @@ std::vector<Face> place(const Description& d, const nlohmann::json& m, const std
 void append(Scene& scene, Scene part, const Material* override_material) {
   const int base = static_cast<int>(scene.materials.size());
   const int surfaces = scene.faces.empty() ? 0 : scene.faces.back().surface + 1;
+  // The part's surfaces keep their names after the scene's (a mesh's unnamed ones take its name).
+  int part_surfaces = static_cast<int>(part.surface_names.size());
+  for (const Face& f : part.faces) part_surfaces = std::max(part_surfaces, f.surface + 1);
+  part.surface_names.resize(static_cast<std::size_t>(part_surfaces), part.name);
+  scene.surface_names.resize(static_cast<std::size_t>(surfaces));
+  scene.surface_names.insert(scene.surface_names.end(), part.surface_names.begin(), part.surface_names.end());
   if (override_material != nullptr) {
     scene.materials.push_back(*override_material);
   } else {
@@ -235,7 +241,7 @@ LoadedScene load_composition_text(const std::string& text, const std::string& pa
   for (std::size_t i = 0; i < meshes.size(); ++i) {
     const std::string key = "meshes[" + std::to_string(i) + "]";
     const nlohmann::json& m = meshes[i];
-    d.only_keys(m, key, {"file", "rotate", "fit_into", "scale", "translate", "material"});
+    d.only_keys(m, key, {"file", "rotate", "fit_into", "scale", "translate", "material", "two_sided"});
     if (!m.contains("file")) d.fail(key + ".file", "missing");
     MeshImportOptions o;
     o.require_emitter = false;
@@ -246,6 +252,10 @@ LoadedScene load_composition_text(const std::string& text, const std::string& pa
     if (format == SceneFormat::text) d.fail(key + ".file", file + " is a text scene; a mesh must be a mesh file (OBJ, PLY, OFF, STL, ...), or use it as the room");
     LoadedScene mesh = import_mesh_file(file, o);
     mesh.scene.faces = place(d, m, key, std::move(mesh.scene.faces));
+    if (m.contains("two_sided")) {
+      if (!m["two_sided"].is_boolean()) d.fail(key + ".two_sided", "must be true or false");
+      if (m["two_sided"].get<bool>()) add_back_faces(mesh.scene);  // thin shells: leaves, paper, plates
+    }
     Material override_material;
     const bool overridden = m.contains("material");
     if (overridden) {

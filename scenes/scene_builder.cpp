@@ -94,6 +94,21 @@ void SceneBuilder::add_two_sided_surface(const std::string& name, int material, 
   add_surface(name + " (back)", material, back, origin);
 }
 
+void add_back_faces(Scene& scene) {
+  const std::size_t faces = scene.faces.size();
+  std::size_t surfaces = scene.surface_names.size();
+  for (const Face& f : scene.faces) surfaces = std::max(surfaces, static_cast<std::size_t>(f.surface) + 1);
+  scene.surface_names.resize(surfaces, scene.name);  // a mesh's unnamed surfaces take its name
+  for (std::size_t i = 0; i < surfaces; ++i) scene.surface_names.push_back(scene.surface_names[i] + " (back)");
+  scene.faces.reserve(2 * faces);
+  for (std::size_t f = 0; f < faces; ++f) {
+    Face back = scene.faces[f];
+    std::swap(back.tri.v1, back.tri.v2);
+    back.surface += static_cast<int>(surfaces);
+    scene.faces.push_back(back);
+  }
+}
+
 void SceneBuilder::check_planar(const std::string& name, const std::vector<Vec3>& v, const std::string& origin) const {
   // A degenerate half is dropped with a warning (add_triangle); the other half is then planar.
   if (is_degenerate({v[0], v[1], v[2]}) || is_degenerate({v[0], v[2], v[3]})) return;

@@ -18,6 +18,10 @@ namespace rc {
 // the Cornell data's fold and far below that.
 constexpr double kMaxQuadFoldDegrees = 5.0;
 
+// Makes every face of `scene` two-sided: after the faces, each face's back (its vertices v0 v2 v1,
+// the same material) on a surface "NAME (back)" per surface. find_sheets then pairs them up.
+void add_back_faces(Scene& scene);
+
 class SceneBuilder {
  public:
   explicit SceneBuilder(std::string scene_name);

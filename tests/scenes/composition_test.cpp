@@ -43,6 +43,31 @@ class CompositionTest : public ::testing::Test {
   std::filesystem::path dir_;
 };
 
+// "two_sided": a back face for each of the tetrahedron's 4, each pair one sheet once prepared. (It
+// floats above the floor: resting on it, its bottom would face the floor back to back, and the floor
+// would join that sheet, as it should.)
+TEST_F(CompositionTest, ATwoSidedMeshGetsABackForEveryFace) {
+  const std::string path = write("scene.json", R"({"schema": "rc2000sim.composition/1", "room": "cornell-box",
+    "meshes": [{"file": "tetra.obj", "fit_into": {"min": [100, 50, 100], "max": [300, 150, 300]}, "two_sided": true}]})");
+  const LoadedScene s = load_composition(path);
+  const std::size_t box = cornell_box().faces.size();
+  ASSERT_EQ(s.scene.faces.size(), box + 8);
+  for (std::size_t f = 0; f < 4; ++f) {
+    const Face& front = s.scene.faces[box + f];
+    const Face& back = s.scene.faces[box + 4 + f];
+    EXPECT_EQ(back.tri.cross(), -front.tri.cross());
+    EXPECT_EQ(s.scene.surface_name(back.surface), s.scene.surface_name(front.surface) + " (back)");
+  }
+  SceneOptions o;
+  o.file = path;
+  o.patch_levels = 0;
+  const Scene prepared = prepare_scene(o).scene;
+  EXPECT_EQ(prepared.sheets.shared_sheets(), 4u);
+  EXPECT_EQ(prepared.sheets.faces_in_shared_sheets(), 8u);
+  EXPECT_EQ(error_of(R"({"schema": "rc2000sim.composition/1", "meshes": [{"file": "tetra.obj", "two_sided": 1}]})"),
+            (dir_ / "bad.json").string() + ": meshes[0].two_sided: must be true or false");
+}
+
 // The box's 38 faces plus the tetrahedron's 4, fitted into the given box (uniform scale, centred
 // on x and z, resting on its floor), with its material replaced by the override.
 TEST_F(CompositionTest, AMeshFitsIntoTheBoxWithItsMaterial) {
@@ -108,7 +133,7 @@ TEST_F(CompositionTest, AnAddedLightLightsAMeshRoom) {
 TEST_F(CompositionTest, ErrorsNameTheFileAndTheKey) {
   const std::string bad = (dir_ / "bad.json").string();
   EXPECT_EQ(error_of(R"({"schema": "rc2000sim.composition/1", "meshes": [{"file": "tetra.obj", "sclae": 2}]})"),
-            bad + ": meshes[0].sclae: unknown key (allowed: file, rotate, fit_into, scale, translate, material)");
+            bad + ": meshes[0].sclae: unknown key (allowed: file, rotate, fit_into, scale, translate, material, two_sided)");
   EXPECT_EQ(error_of(R"({"schema": "rc2000sim.composition/1", "meshes": [{"file": "tetra.obj", "scale": -1}]})"),
             bad + ": meshes[0].scale: must be positive");
   EXPECT_EQ(error_of(R"({"schema": "rc2000sim.composition/1", "meshes": [{"file": "tetra.obj",

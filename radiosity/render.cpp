@@ -169,6 +169,9 @@ HdrImage render_radiosity(const Scene& scene, const std::vector<Spectrum>& radio
   std::vector<ScreenTriangle> triangles;
   triangles.reserve(scene.patches.size());
   for (const Patch& p : scene.patches) {
+    // A two-sided surface's faces lie in one plane (a sheet): only the side facing the camera is
+    // drawn, or front and back would fight over every pixel. One-sided faces are drawn either way.
+    if (scene.sheets.size_of(p.face) > 1 && !(glm::dot(p.normal, scene.camera.position - p.centre) > 0)) continue;
     const int surface = scene.faces[p.face].surface;
     ScreenTriangle t;
     const Vec3 corner[3] = {p.tri.v0, p.tri.v1, p.tri.v2};

@@ -99,13 +99,12 @@ struct Source {
   SceneText text;
 };
 
-// two-rooms.scene's panel stands on the patch-centre lattice: from patch level 1 on, some segments
-// between patch centres pass exactly through its apex or its top edges (10 segments at level 1, 78
-// at level 2, found in exact rational arithmetic), where only rounding decides whether they are
-// blocked, so a rotation or a mirror changes those answers (up to 12% on a patch at level 1; level 0
-// has 2 such segments, through the apex). Moved
-// by (0.0137, 0.0071, 0) the panel is off that lattice (no such segment at levels 0 to 2) and still
-// stands between the rooms, two-sided as before.
+// two-rooms.scene's panel stands on the patch-centre lattice: some segments between patch centres
+// pass exactly through its apex or its top edges (2 at level 0, 10 at level 1, 78 at level 2, found
+// in exact rational arithmetic by tests/reference/grazing_segments.py), where only rounding decides
+// whether they are blocked, so a rotation or a mirror changes those answers (up to 12% on a patch at
+// level 1). Moved by (0.0137, 0.0071, 0) the panel is off that lattice (no such segment at levels 0
+// to 2) and still stands between the rooms, two-sided as before.
 SceneText nudged_panel(SceneText text) {
   for (test::TextSurface& s : text.surfaces) {
     if (s.name.rfind("panel", 0) != 0) continue;

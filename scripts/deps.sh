@@ -10,8 +10,9 @@ RC_PACKAGES=(build-essential cmake ninja-build pkg-config libsystemc-dev libglm-
 # Installed by scripts/test only: real models in many formats (tests/scenes/mesh_import_test.cpp),
 # the cluster engines the sweep scripts drive (scripts/sweep-slurm, scripts/sweep-parallel; their tests
 # in tests/scripts bring up a private single-node Slurm with its own munged), and clang with its
-# sanitizer and libFuzzer run-times for the sanitizer build and the fuzzers (docs/reliability.md).
-RC_TEST_PACKAGES=(assimp-testmodels parallel slurm-wlm munge clang libclang-rt-14-dev)
+# sanitizer and libFuzzer run-times for the sanitizer build and the fuzzers (docs/reliability.md), and
+# numpy for the independent reference solver (tests/reference/radiosity_reference.py).
+RC_TEST_PACKAGES=(assimp-testmodels parallel slurm-wlm munge clang libclang-rt-14-dev python3-numpy)
 
 # Installs RC_PACKAGES and any packages given as arguments that are missing.
 rc_install_missing() {

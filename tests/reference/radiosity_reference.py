@@ -292,7 +292,7 @@ class Reference:
             if not (math.isfinite(total) and total <= self.emitted * (1 + rounding)):
                 raise Diverged(self.steps, created=False)
             slack = rounding * (self.emitted + shot_total)
-            if not (self.absorbed <= self.emitted + slack and self.escaping >= -slack):
+            if not self.absorbed <= self.emitted + slack:  # more absorbed than was ever emitted
                 raise Diverged(self.steps, created=True)
         self.unshot = float(np.sum(self.power(unshot)))
         return b

@@ -622,6 +622,41 @@ Validity validity_from(const std::string& status, const std::string& kind) {
   throw std::invalid_argument("sweep row: unknown invalid_kind '" + kind + "'");
 }
 
+const char* const kRowFigures[] = {"steps", "clock_mhz", "nominal_rays_per_cycle", "simulated_seconds",
+                                   "fpga_busy_seconds", "host_compute_seconds", "driver_cpu_seconds",
+                                   "pci_transfer_seconds", "waiting_seconds", "pci_utilisation", "max_bank_utilisation",
+                                   "busiest_bank", "mean_lane_utilisation", "intersections_per_second_while_busy",
+                                   "fpga_limit_share", "speedup_vs_one_lane", "speedup_vs_software", "energy_joules",
+                                   "energy_per_step_joules", "energy_per_intersection_nanojoules", "average_watts",
+                                   "energy_delay_product_joule_seconds", "fpga_joules", "sram_joules", "pci_joules",
+                                   "host_joules"};
+
+// A row read back (a shard file, hand-edited or damaged) must hold figures a run can produce: every
+// number finite and non-negative (null: not measured), a simulated row's time positive and at most
+// kMaxRowSeconds, shares and utilisations at most 1. Otherwise merge would write the number as a
+// result (negative or 1e308 simulated seconds were accepted).
+void check_row_figures(const nlohmann::ordered_json& j, const SweepRow& r) {
+  const std::string row = "row " + r.config.label() + ": ";
+  for (const char* key : kRowFigures) {
+    const nlohmann::ordered_json& v = j.at(key);
+    if (v.is_null()) continue;
+    if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() < 0) {
+      throw std::invalid_argument(row + key + " = " + v.dump() +
+                                  " is not a figure a run produces (a finite number, not negative, or null)");
+    }
+  }
+  if (r.validity != Validity::ok) return;
+  if (!(r.simulated_seconds > 0 && r.simulated_seconds <= kMaxRowSeconds)) {
+    char text[96];
+    std::snprintf(text, sizeof text, "%g is outside (0, %g]", r.simulated_seconds, kMaxRowSeconds);
+    throw std::invalid_argument(row + "simulated_seconds = " + text + " for a simulated row (kMaxRowSeconds)");
+  }
+  for (const char* key : {"pci_utilisation", "max_bank_utilisation", "mean_lane_utilisation", "fpga_limit_share"}) {
+    const double x = number_from(j, key);
+    if (x > 1 + 1e-9) throw std::invalid_argument(row + key + " = " + j.at(key).dump() + " is above 1 (a share)");
+  }
+}
+
 }  // namespace
 
 SweepRow sweep_row_from_json(const nlohmann::ordered_json& j, const SweepConfig& config) {
@@ -664,6 +699,7 @@ SweepRow sweep_row_from_json(const nlohmann::ordered_json& j, const SweepConfig&
   r.host_joules = number_from(j, "host_joules");
   r.energy_missing = j.at("energy_missing").get<std::string>();
   r.pareto_time_energy = !j.at("pareto_time_energy").is_null() && j.at("pareto_time_energy").get<int>() == 1;
+  check_row_figures(j, r);
   return r;
 }
 

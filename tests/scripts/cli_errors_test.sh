@@ -39,7 +39,7 @@ PY
 }
 device() { profile devices xc2v6000 "$work/$1.json" "$2"; }
 
-tiny=(--faces 0 --face-levels 0 --patch-levels 0 --steps 3 --image-size 16 --quiet)
+tiny=(--face-levels 0 --patch-levels 0 --steps 3 --image-size 16 --quiet)
 board=(run --impl board "${tiny[@]}")
 
 echo "1. device and host profiles, against the limits the model derives"
@@ -49,7 +49,7 @@ refused "$work/o" "small.json: banks.capacity_bytes = 16 is smaller than one fac
 refused "$work/o" "rc2000sim run: failed: " "${board[@]}" --device "$work/small.json" --out "$work/o"
 refused "$work/o" "nothing written to $work/o/" "${board[@]}" --device "$work/small.json" --out "$work/o"
 refused "$work/o" "banks.capacity_bytes = 16 is smaller than one face record" \
-  sweep --devices "$work/small.json" --faces 0 --face-levels 0 --patch-levels 0 --steps 3 --lanes 1 --banks 6 --quiet --out "$work/o"
+  sweep --devices "$work/small.json" --face-levels 0 --patch-levels 0 --steps 3 --lanes 1 --banks 6 --quiet --out "$work/o"
 device parts 'p["banks"]["capacity_bytes"]["value"] = 4194305'
 refused "$work/o" "banks.capacity_bytes = 4194305 is not a whole number of 4-byte words" \
   "${board[@]}" --device "$work/parts.json" --out "$work/o"
@@ -138,7 +138,7 @@ done
 python3 -c "import json, sys; r = json.load(open(sys.argv[1])); sys.exit(r['settings']['bits'] is not None)" \
   "$work/soft/report.json" || fail "a float-visibility run records a fractional width"
 ! find "$work" -name '*.partial-*' | grep -q . || fail "a temporary file was left: $(find "$work" -name '*.partial-*')"
-"$sim" sweep --devices xc2v6000 --faces 0 --face-levels 0 --patch-levels 0 --steps 3 --lanes 1-2 --banks 6 --quiet \
+"$sim" sweep --devices xc2v6000 --face-levels 0 --patch-levels 0 --steps 3 --lanes 1-2 --banks 6 --quiet \
   --out "$work/sweep" > /dev/null || fail "a sweep failed"
 [ -s "$work/sweep/sweep.csv" ] && [ -s "$work/sweep/study.json" ] || fail "the sweep wrote no sweep.csv or study.json"
 # A room beside a mesh ten million units away: at 15 bits the room's faces have no area on the grid

@@ -646,9 +646,10 @@ void check_row_figures(const nlohmann::ordered_json& j, const SweepRow& r) {
     }
   }
   if (r.validity != Validity::ok) return;
-  if (!(r.simulated_seconds > 0 && r.simulated_seconds <= kMaxRowSeconds)) {
+  const double seconds = number_from(j, "simulated_seconds");
+  if (!(seconds > 0 && seconds <= kMaxRowSeconds)) {
     char text[96];
-    std::snprintf(text, sizeof text, "%g is outside (0, %g]", r.simulated_seconds, kMaxRowSeconds);
+    std::snprintf(text, sizeof text, "%g is outside (0, %g]", seconds, kMaxRowSeconds);
     throw std::invalid_argument(row + "simulated_seconds = " + text + " for a simulated row (kMaxRowSeconds)");
   }
   for (const char* key : {"pci_utilisation", "max_bank_utilisation", "mean_lane_utilisation", "fpga_limit_share"}) {
@@ -667,6 +668,7 @@ SweepRow sweep_row_from_json(const nlohmann::ordered_json& j, const SweepConfig&
   if (!same) throw std::invalid_argument("sweep row " + j.dump() + " is not the plan's " + config.label());
   r.config.device = j.at("device").get<std::string>();  // the profile's name (the plan may hold a path)
   r.validity = validity_from(j.at("status").get<std::string>(), j.at("invalid_kind").get<std::string>());
+  check_row_figures(j, r);  // before any figure is read as a number
   r.reason = j.at("reason").get<std::string>();
   r.steps = j.at("steps").get<int>();
   r.clock_mhz = number_from(j, "clock_mhz");
@@ -699,7 +701,6 @@ SweepRow sweep_row_from_json(const nlohmann::ordered_json& j, const SweepConfig&
   r.host_joules = number_from(j, "host_joules");
   r.energy_missing = j.at("energy_missing").get<std::string>();
   r.pareto_time_energy = !j.at("pareto_time_energy").is_null() && j.at("pareto_time_energy").get<int>() == 1;
-  check_row_figures(j, r);
   return r;
 }
 

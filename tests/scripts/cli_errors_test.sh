@@ -197,6 +197,17 @@ mean = sum(pixels) / len(pixels)
 print(f"   the dim scene's picture: mean grey level {mean:.0f} of 255")
 sys.exit(0 if mean > 20 else 1)
 PY
+# Calibration on a one-row table: two runs cannot pin five cost groups; the fit sets some to 0 and is
+# refused, after the variants are printed with the table's run count (it said "all 16 runs").
+python3 - "$root/configs/paper-table2.json" "$work/one-row.json" <<'PY'
+import json, sys
+t = json.load(open(sys.argv[1]))
+t["scenes"] = t["scenes"][:1]
+json.dump(t, open(sys.argv[2], "w"))
+PY
+refused "$work/cal" "one-row.json: variant per_segment/dma/once/form_factors: the fit sets every cost of group step to 0 s" \
+  calibrate --table "$work/one-row.json" --out "$work/cal/host.json" --variants-out "$work/cal/variants.json" --quiet
+grep -q "fit to all 2 runs" "$work/stdout.txt" || fail "calibrate does not print the table's run count"
 # Shards whose rows hold figures no run produces are refused by merge, naming the row and key.
 "$sim" sweep --study "$root/tests/studies/data/small.toml" --shard 0/1 --quiet --out "$work/shards" > /dev/null || fail "a shard failed"
 for bad in -1 1e308; do

@@ -1,6 +1,7 @@
 // `rc2000sim calibrate`: fits the host CPU cost model to the paper's Table 2 software and
 // single-pipeline columns (and nothing else), and writes the calibrated host profile.
 #include <cstdio>
+#include <stdexcept>
 #include <memory>
 
 #include "apps/cli_options.h"
@@ -27,7 +28,8 @@ struct CalibrateOptions {
 };
 
 void print_variants(const std::vector<VariantCalibration>& variants, std::size_t best) {
-  std::printf("\nDriver-model variants (docs/calibration.md): fit to all 16 runs, and leave-one-out cross-validation\n");
+  std::printf("\nDriver-model variants (docs/calibration.md): fit to all %zu runs, and leave-one-out cross-validation\n",
+              variants[best].observations.size());
   std::printf("  %-32s", "variant (unit/transfer/faces)");
   for (int g = 0; g < kCostGroups; ++g) std::printf(" %14s", to_string(CostGroup(g)).c_str());
   std::printf(" %8s %8s %8s\n", "fit rms", "CV mean", "CV worst");
@@ -70,6 +72,12 @@ int run_calibrate(const CalibrateOptions& o) {
   const std::vector<VariantCalibration>& fitted = calibration.variants;
   const std::size_t best = calibration.chosen;
   const VariantCalibration& chosen = fitted[best];
+  const std::string problem = fit_problem(chosen.fit, chosen.observations);
+  if (!problem.empty()) {
+    print_variants(fitted, best);  // what was fitted, before the refusal says why it is not written
+    print_chosen(chosen);
+    throw std::invalid_argument(o.table + ": variant " + chosen.used.driver_model.name() + ": " + problem);
+  }
   outputs.add(o.out, pretty_json(calibrated_profile(chosen.used, chosen.fit, chosen.observations, o.name, &chosen.cv)));
   outputs.add(o.variants_out, pretty_json(variants_document(fitted, base.name)));
   outputs.write();

@@ -1,7 +1,9 @@
 #include "apps/cli_options.h"
 
+#include <cstdio>
 #include <stdexcept>
 
+#include "io/parse_number.h"
 #include "pipeline/float_format.h"
 
 namespace rc {
@@ -12,6 +14,35 @@ CLI::Validator output_path() {
         return text.empty() ? "is empty: name a folder or file to write (e.g. out)" : "";
       },
       "PATH", "output path");
+}
+
+std::string readable(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", x);
+  return text;
+}
+
+CLI::Validator positive_finite() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        const std::optional<double> x = io::parse_finite(text);
+        if (!x) return "'" + text + "' is not a finite number";
+        if (!(*x > 0)) return readable(*x) + " must be positive";
+        return "";
+      },
+      "> 0", "positive finite number");
+}
+
+CLI::Validator count_at_least_one(const std::string& meaning) {
+  return CLI::Validator(
+      [meaning](std::string& text) -> std::string {
+        const std::optional<std::int64_t> n = io::parse_integer(text);
+        if (!n) return "'" + text + "' is not a whole number";
+        if (*n < 1) return "must be at least 1 (" + meaning + "); omit it for the scene's own faces (sweep without --scene: the "
+                                       "paper's 70)";
+        return "";
+      },
+      ">= 1", "count");
 }
 
 CLI::Validator convergence_target() {
@@ -64,14 +95,14 @@ void add_scene_options(CLI::App& cmd, SceneOptions& scene) {
   cmd.add_option("--scene", scene.file, "Scene file (docs/scenes.md); default: the embedded Cornell Box")
       ->check(CLI::ExistingFile);
   cmd.add_option("--faces", scene.face_target, "Refine to exactly this many faces first (70: the paper's count)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(count_at_least_one("the number of faces to refine to"));
   cmd.add_option("--face-levels", scene.face_levels, "Split every face into 4^k faces")->check(CLI::Range(0, 8));
   CLI::Option* levels = cmd.add_option("--patch-levels", scene.patch_levels, "Split every face into 4^m patches")
                             ->check(CLI::Range(0, 8))->capture_default_str();
   cmd.add_option("--patch-size", scene.patch_size,
                  "Instead of --patch-levels: split each face until its patches' edges are at most this long "
                  "(normalised units, the scene scaled into [0,1)^3; for meshes that are not grids)")
-      ->check(CLI::PositiveNumber)->excludes(levels);
+      ->check(positive_finite())->excludes(levels);
 }
 
 void add_solver_options(CLI::App& cmd, SolverCli& solver) {

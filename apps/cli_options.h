@@ -33,6 +33,16 @@ CLI::Option* add_form_factor_option(CLI::App& cmd, std::string& name, const std:
 // power at all and runs to the solver's step cap).
 CLI::Validator convergence_target();
 
+// Number checks whose messages print numbers readably (%g: CLI11's PositiveNumber printed the
+// double range's bound in 309 digits) and refuse NaN and infinities (CLI11's let "nan" through, and a
+// NaN --patch-size then meant "not given"):
+std::string readable(double x);
+// A finite number above 0 (--patch-size).
+CLI::Validator positive_finite();
+// A whole number of at least 1 where 0 would mean "not given" (--faces 0 was taken as no --faces):
+// "must be at least 1 (<meaning>); omit it ...".
+CLI::Validator count_at_least_one(const std::string& meaning);
+
 // A path the command writes (--out, --docs, --trace, --vcd, --variants-out): not empty (an empty
 // --out made "/patches.csv", at the file system's root).
 CLI::Validator output_path();

@@ -5,9 +5,13 @@
 #include <cstdio>
 #include <string>
 
+#include <sys/types.h>
+
 namespace rc {
 
 // A plot script running in a child process that takes its requests on stdin (apps/plots/entry.py).
+// The child ends with this process (studies/child_guard.h): an interrupted command leaves no script
+// drawing into its folder.
 // Start it before the last stretch of work that leaves a core idle (a single-threaded SystemC
 // study): the interpreter and matplotlib load meanwhile, and draw() costs only the drawing.
 class PlotProcess {
@@ -24,7 +28,8 @@ class PlotProcess {
 
  private:
   std::string command_;
-  std::FILE* pipe_ = nullptr;
+  std::FILE* pipe_ = nullptr;  // the requests, to the child's stdin
+  pid_t pid_ = -1;
   bool ok_ = true;
 };
 

@@ -92,26 +92,54 @@ LanesThatFit lanes_that_fit(const std::string& device, const std::string& host, 
   return lanes_that_fit(board::find_device_profile(device), find_host_profile(host), bits);
 }
 
+namespace {
+
+// The estimates, or why the profile cannot give them (LanesThatFit::missing).
+template <class Estimate>
+LanesThatFit estimated_or_why(const board::DeviceProfile& profile, Estimate estimate) {
+  try {
+    return estimate();
+  } catch (const std::invalid_argument& e) {
+    LanesThatFit none;
+    none.paper_rule.device = none.model.device = profile.name;
+    none.missing = std::string("not estimated: ") + e.what() +
+                   " (the estimate tries every lane count up to what fits; the run itself needs only its own)";
+    return none;
+  }
+}
+
+}  // namespace
+
 LanesThatFit lanes_that_fit(const board::DeviceProfile& profile, const HostProfile& host_profile, int bits) {
-  return {board::paper_rule_lanes_that_fit(profile, measured_peak_software_rate(load_paper_table(default_paper_table_path()))),
-          board::model_lanes_that_fit(profile, 1.0 / host_profile.work[static_cast<int>(HostWork::IntersectionTest)].to_seconds(),
-                                      bits)};
+  return estimated_or_why(profile, [&] {
+    return LanesThatFit{
+        board::paper_rule_lanes_that_fit(profile, measured_peak_software_rate(load_paper_table(default_paper_table_path()))),
+        board::model_lanes_that_fit(profile, 1.0 / host_profile.work[static_cast<int>(HostWork::IntersectionTest)].to_seconds(),
+                                    bits),
+        ""};
+  });
 }
 
 LanesThatFit lanes_that_fit(const board::DeviceProfile& profile, const HostProfile& host_profile,
                             pipeline::FloatFormat format) {
-  return {board::paper_rule_lanes_that_fit(profile, measured_peak_software_rate(load_paper_table(default_paper_table_path()))),
-          board::float_lanes_that_fit(profile, 1.0 / host_profile.work[static_cast<int>(HostWork::IntersectionTest)].to_seconds(),
-                                      format)};
+  return estimated_or_why(profile, [&] {
+    return LanesThatFit{
+        board::paper_rule_lanes_that_fit(profile, measured_peak_software_rate(load_paper_table(default_paper_table_path()))),
+        board::float_lanes_that_fit(profile, 1.0 / host_profile.work[static_cast<int>(HostWork::IntersectionTest)].to_seconds(),
+                                    format),
+        ""};
+  });
 }
 
 nlohmann::ordered_json lanes_that_fit_json(const LanesThatFit& e) {
+  if (!e.missing.empty()) return {{"not_estimated", e.missing}};
   return {{"paper_rule", estimate_json(e.paper_rule)},
           {"model", estimate_json(e.model)},
           {"why_different", board::why_estimates_differ(e.paper_rule, e.model)}};
 }
 
 std::string lanes_that_fit_line(const LanesThatFit& e) {
+  if (!e.missing.empty()) return e.model.device + ": " + e.missing;
   char line[256];
   std::snprintf(line, sizeof line, "%s: paper's rule (15-bit Table 1 pipeline) %d lanes, %.4g int/s (%.1fx software); model %d lanes, %.4g int/s (%.1fx)",
                 e.model.device.c_str(), e.paper_rule.lanes, e.paper_rule.intersections_per_s,

@@ -28,8 +28,12 @@ nlohmann::ordered_json estimate_json(const board::PaperEstimate& estimate);
 // "Lanes that fit" on `device` under the paper's rule and the model's, with why they differ: what a
 // board run's or a sweep's device would do at full rate (docs/calibration.md, "Sec 5.6"). The paper
 // rule's software rate is Table 2's peak; the model's is `host`'s intersection test.
+// Sec 5.6's estimates ask the device profile for every lane count up to what fits; a profile that
+// gives no clock for some count (no clock.mhz_default) cannot be estimated, which must not fail a run
+// or sweep that never uses that count: `missing` then says why, naming the profile and key.
 struct LanesThatFit {
   board::PaperEstimate paper_rule, model;
+  std::string missing;  // "": estimated
 };
 LanesThatFit lanes_that_fit(const std::string& device, const std::string& host, int bits);
 LanesThatFit lanes_that_fit(const board::DeviceProfile& device, const HostProfile& host, int bits);

@@ -338,7 +338,8 @@ void add_run_command(CLI::App& app, int& exit_code) {
   b.host = "athlon-mp-2600-calibrated";  // the profile fitted to the paper's measurements (docs/calibration.md)
   cmd->add_option("--device", b.device, "Board: device profile, configs/devices/NAME.json or a path")->capture_default_str();
   cmd->add_option("--lanes", options->lanes, "Board: pipeline lanes")->check(CLI::Range(1, 64))->capture_default_str();
-  cmd->add_option("--banks", b.banks, "Board: memory banks (0: the profile's)")->check(CLI::Range(0, 64))
+  // 0 is the setup's "the profile's"; given, it would mean "not given": refused like any count below 1.
+  cmd->add_option("--banks", b.banks, "Board: memory banks, 1..64 (default: the profile's)")->check(CLI::Range(1, 64))
       ->capture_default_str();
   cmd->add_flag("--concurrent", b.concurrent, "Board: form factors while the FPGA works (paper sec 4.3)");
   cmd->add_option("--cards", options->cards,

@@ -12,7 +12,8 @@ double DeviceProfile::clock_mhz(int lanes) const {
   const auto it = clock_mhz_by_lanes.find(lanes);
   if (it != clock_mhz_by_lanes.end()) return it->second;
   if (clock_mhz_default) return *clock_mhz_default;
-  throw std::invalid_argument("device profile " + name + " gives no clock for " + std::to_string(lanes) +
+  throw std::invalid_argument((file.empty() ? name : file) + ": clock.mhz_by_lanes." + std::to_string(lanes) + ": missing: device profile " +
+                              name + " gives no clock for " + std::to_string(lanes) +
                               " lanes (clock.mhz_by_lanes has no entry and there is no clock.mhz_default)");
 }
 
@@ -94,7 +95,8 @@ DeviceProfile device_profile_from_json(const nlohmann::ordered_json& json, const
   p.pci_clock_mhz = r.number("pci.clock_mhz", 1, 1000);
   p.pci_burst_efficiency = r.number("pci.burst_efficiency", 1e-3, 1.0);
   p.pci_setup_cycles = static_cast<unsigned>(r.integer("pci.setup_cycles", 0, 1000));
-  p.pci_max_burst_bytes = r.integer("pci.max_burst_bytes", 8, std::uint64_t(1) << 32);
+  // At most 2^32 - 1: a burst is one TLM transaction, whose data length is 32-bit (tlm/dma_engine.cpp).
+  p.pci_max_burst_bytes = r.integer("pci.max_burst_bytes", 8, (std::uint64_t(1) << 32) - 1);
   p.pci_master_abort_cycles = static_cast<unsigned>(r.integer("pci.master_abort_cycles", 1, 1000));
   p.bridge_latency_cycles = static_cast<unsigned>(r.integer("pci.bridge_latency_cycles", 0, 1000));
 

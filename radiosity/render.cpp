@@ -204,21 +204,46 @@ HdrImage render_radiosity(const Scene& scene, const std::vector<Spectrum>& radio
   return out;
 }
 
+namespace {
+
+// The power of two that brings the brightest covered pixel of a dim scene into [1, 2): a scene's
+// units are its own (docs/scenes.md), and the tone map's 1e-9 floor below (which keeps black pixels
+// out of the logarithm) assumed values near 1. Emission of 1e-10 gave an all-black picture, and
+// luminances near the subnormals overflowed the scale. 0 for a scene whose brightest pixel is at
+// least 1 (the Cornell Box's units): its picture stays the same, byte for byte.
+int dim_scene_exponent(const HdrImage& hdr) {
+  double brightest = 0;
+  for (std::size_t i = 0; i < hdr.pixels.size(); ++i)
+    if (hdr.covered[i]) brightest = std::max(brightest, luminance(hdr.pixels[i]));
+  if (!(brightest > 0) || brightest >= 1) return 0;
+  return -std::ilogb(brightest);  // exact: a power of two changes no digit of a normal double
+}
+
+}  // namespace
+
 // Photographic tone mapping (Reinhard et al. 2002, global operator): scale so the log-average
 // luminance lands on `key`, then compress highlights with L / (1 + L) so the light stays white.
+// Pixels are first scaled by the power of two of dim_scene_exponent: any unit system gives a picture.
 RgbImage tone_map(const HdrImage& hdr, double key) {
+  const int exponent = dim_scene_exponent(hdr);
+  auto pixel = [&](std::size_t i) {
+    Spectrum p = hdr.pixels[i];
+    if (exponent != 0)
+      for (double& b : p.band) b = std::ldexp(b, exponent);
+    return p;
+  };
   double log_sum = 0;
   std::size_t count = 0;
   for (std::size_t i = 0; i < hdr.pixels.size(); ++i) {
     if (!hdr.covered[i]) continue;
-    log_sum += std::log(1e-9 + luminance(hdr.pixels[i]));
+    log_sum += std::log(1e-9 + luminance(pixel(i)));
     ++count;
   }
   const double log_average = count ? std::exp(log_sum / count) : 1.0;
   const double scale = key / log_average;
   RgbImage out{hdr.width, hdr.height, std::vector<std::uint8_t>(hdr.pixels.size() * 3, 0)};
   for (std::size_t i = 0; i < hdr.pixels.size(); ++i) {
-    const Spectrum c = hdr.pixels[i] * scale;
+    const Spectrum c = pixel(i) * scale;
     const double l = luminance(c);
     const double compress = 1.0 / (1.0 + l);
     for (std::size_t b = 0; b < 3 && b < kBands; ++b) out.pixels[i * 3 + b] = to_srgb8(c[b] * compress);

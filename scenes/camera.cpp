@@ -24,10 +24,11 @@ void check_camera(const Camera& c) {
   check_finite(c.position, "position");
   check_finite(c.look_at, "look-at point");
   check_finite(c.up, "up vector");
-  if (!(c.vertical_fov_deg > 0 && c.vertical_fov_deg < 180)) {
-    char fov[32];
-    std::snprintf(fov, sizeof fov, "%g", c.vertical_fov_deg);
-    throw std::invalid_argument(std::string("camera vertical field of view ") + fov + " degrees is outside (0, 180)");
+  if (!(c.vertical_fov_deg >= kMinFieldOfViewDeg && c.vertical_fov_deg < 180)) {
+    char fov[128];
+    std::snprintf(fov, sizeof fov, "%g degrees is outside [%g, 180) (kMinFieldOfViewDeg: narrower views leave the "
+                  "projection's range)", c.vertical_fov_deg, kMinFieldOfViewDeg);
+    throw std::invalid_argument(std::string("camera vertical field of view ") + fov);
   }
   // Directions are compared after exact power-of-two scaling, so no length overflows or vanishes.
   const int e = -magnitude_exponent({c.position, c.look_at});

@@ -18,11 +18,16 @@ struct Camera {
 // within 0.00006 degrees of the view is no choice anyone means.
 constexpr double kMinCameraUpSine = 1e-6;
 
+// The narrowest vertical field of view check_camera accepts, in degrees: 3.6 arc seconds, a telescope's
+// view. Narrower, the projection's focal length 1 / tan(fov / 2) leaves the doubles' range for
+// nothing anyone means (1e-300 degrees overflowed it and gave an all-black picture, exit 0).
+constexpr double kMinFieldOfViewDeg = 1e-3;
+
 // The one check of a camera, run wherever one is made (scene files, after normalisation, before
 // rendering). Throws std::invalid_argument naming the problem (callers add the file and line):
 // a coordinate that is not finite, the eye at the point looked at (no view direction), a zero up
 // vector or one parallel to the view direction (within kMinCameraUpSine), or a vertical field of
-// view outside (0, 180) degrees. Scale-free: a camera at 1e-300 or 1e200 is judged as at 1.
+// view outside [kMinFieldOfViewDeg, 180) degrees. Scale-free: a camera at 1e-300 or 1e200 is judged as at 1.
 void check_camera(const Camera& camera);
 
 }  // namespace rc

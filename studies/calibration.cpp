@@ -89,6 +89,29 @@ CalibrationFit fit_calibration(const std::vector<CalibrationObservation>& observ
   return fit;
 }
 
+std::string fit_problem(const CalibrationFit& fit, const std::vector<CalibrationObservation>& observations) {
+  char text[512];
+  if (!(fit.rms_relative_residual <= kMaxFitRmsResidual)) {
+    std::snprintf(text, sizeof text,
+                  "the fit misses its %zu runs by %.3g%% rms (at most %.0f%%: kMaxFitRmsResidual, "
+                  "docs/calibration.md): the table's times are not what this model of the host can produce",
+                  observations.size(), 100 * fit.rms_relative_residual, 100 * kMaxFitRmsResidual);
+    return text;
+  }
+  for (int g = 0; g < kCostGroups; ++g) {
+    double paid = 0;
+    for (const CalibrationObservation& o : observations) paid += o.group_seconds[g];
+    if (paid > 0 && fit.scale[g] == 0) {
+      std::snprintf(text, sizeof text,
+                    "the fit sets every cost of group %s to 0 s (the non-negativity bound), though the runs pay it: "
+                    "the table's times are shorter than the rest of the model explains",
+                    to_string(CostGroup(g)).c_str());
+      return text;
+    }
+  }
+  return "";
+}
+
 CrossValidation cross_validate(const std::vector<CalibrationObservation>& observations) {
   if (observations.size() < 2) throw std::invalid_argument("cross-validation needs at least two observations");
   CrossValidation cv;
@@ -175,7 +198,8 @@ nlohmann::ordered_json calibrated_profile(const HostProfile& base, const Calibra
                       {"factors", factors},
                       {"rms_relative_residual", fit.rms_relative_residual}};
   if (cv != nullptr) {
-    j["calibration"]["cross_validation"] = {{"method", "leave one out: each run predicted by the fit to the other 15"},
+    j["calibration"]["cross_validation"] = {{"method", "leave one out: each run predicted by the fit to the other " +
+                                                          std::to_string(observations.size() - 1)},
                                             {"mean_absolute_relative_error", cv->mean_absolute},
                                             {"rms_relative_error", cv->rms},
                                             {"worst_relative_error", cv->worst}};

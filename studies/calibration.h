@@ -57,6 +57,17 @@ double minimum_scale(CostGroup group);
 // with no cost below minimum_scale. Throws std::invalid_argument without observations.
 CalibrationFit fit_calibration(const std::vector<CalibrationObservation>& observations);
 
+// The most a calibrated profile may miss its own data by: the rms relative residual of the fit. The
+// shipped fits of Table 2 miss by 1.9% to 4.8% (docs/calibration.md); a fit five times worse than
+// the worst of them does not describe the runs, whatever it is written as.
+constexpr double kMaxFitRmsResidual = 0.25;
+
+// Why `fit` must not become a profile, or "" when it may: its rms relative residual is above
+// kMaxFitRmsResidual, or a cost group the observations pay was fitted to zero (the non-negativity
+// bound: the measured times are shorter than the rest of the model explains, so a cost of 0 s is
+// the fit giving up, not a measurement). `calibrate` refuses such a fit and writes nothing.
+std::string fit_problem(const CalibrationFit& fit, const std::vector<CalibrationObservation>& observations);
+
 // Leave-one-out cross-validation: each observation predicted by the fit to all the others.
 struct CrossValidation {
   std::vector<double> relative_errors;  // (prediction - measured) / measured, per observation

@@ -44,7 +44,7 @@ bool within_tolerance(const VariantCalibration& variant, const VariantCalibratio
 struct CalibratedVariant {
   HostProfile profile;       // calibrated; its driver model is the variant
   double cv_error = 0;       // cross-validated mean absolute relative error
-  double fit_rms = 0;        // rms relative residual of the fit to all 16 runs
+  double fit_rms = 0;        // rms relative residual of the fit to all the runs
   bool chosen = false;       // the default (least CV error)
   bool in_spread = false;    // within kVariantTolerance of the chosen one
 };

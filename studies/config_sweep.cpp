@@ -622,6 +622,42 @@ Validity validity_from(const std::string& status, const std::string& kind) {
   throw std::invalid_argument("sweep row: unknown invalid_kind '" + kind + "'");
 }
 
+const char* const kRowFigures[] = {"steps", "clock_mhz", "nominal_rays_per_cycle", "simulated_seconds",
+                                   "fpga_busy_seconds", "host_compute_seconds", "driver_cpu_seconds",
+                                   "pci_transfer_seconds", "waiting_seconds", "pci_utilisation", "max_bank_utilisation",
+                                   "busiest_bank", "mean_lane_utilisation", "intersections_per_second_while_busy",
+                                   "fpga_limit_share", "speedup_vs_one_lane", "speedup_vs_software", "energy_joules",
+                                   "energy_per_step_joules", "energy_per_intersection_nanojoules", "average_watts",
+                                   "energy_delay_product_joule_seconds", "fpga_joules", "sram_joules", "pci_joules",
+                                   "host_joules"};
+
+// A row read back (a shard file, hand-edited or damaged) must hold figures a run can produce: every
+// number finite and non-negative (null: not measured), a simulated row's time positive and at most
+// kMaxRowSeconds, shares and utilisations at most 1. Otherwise merge would write the number as a
+// result (negative or 1e308 simulated seconds were accepted).
+void check_row_figures(const nlohmann::ordered_json& j, const SweepRow& r) {
+  const std::string row = "row " + r.config.label() + ": ";
+  for (const char* key : kRowFigures) {
+    const nlohmann::ordered_json& v = j.at(key);
+    if (v.is_null()) continue;
+    if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() < 0) {
+      throw std::invalid_argument(row + key + " = " + v.dump() +
+                                  " is not a figure a run produces (a finite number, not negative, or null)");
+    }
+  }
+  if (r.validity != Validity::ok) return;
+  const double seconds = number_from(j, "simulated_seconds");
+  if (!(seconds > 0 && seconds <= kMaxRowSeconds)) {
+    char text[96];
+    std::snprintf(text, sizeof text, "%g is outside (0, %g]", seconds, kMaxRowSeconds);
+    throw std::invalid_argument(row + "simulated_seconds = " + text + " for a simulated row (kMaxRowSeconds)");
+  }
+  for (const char* key : {"pci_utilisation", "max_bank_utilisation", "mean_lane_utilisation", "fpga_limit_share"}) {
+    const double x = number_from(j, key);
+    if (x > 1 + 1e-9) throw std::invalid_argument(row + key + " = " + j.at(key).dump() + " is above 1 (a share)");
+  }
+}
+
 }  // namespace
 
 SweepRow sweep_row_from_json(const nlohmann::ordered_json& j, const SweepConfig& config) {
@@ -632,6 +668,7 @@ SweepRow sweep_row_from_json(const nlohmann::ordered_json& j, const SweepConfig&
   if (!same) throw std::invalid_argument("sweep row " + j.dump() + " is not the plan's " + config.label());
   r.config.device = j.at("device").get<std::string>();  // the profile's name (the plan may hold a path)
   r.validity = validity_from(j.at("status").get<std::string>(), j.at("invalid_kind").get<std::string>());
+  check_row_figures(j, r);  // before any figure is read as a number
   r.reason = j.at("reason").get<std::string>();
   r.steps = j.at("steps").get<int>();
   r.clock_mhz = number_from(j, "clock_mhz");

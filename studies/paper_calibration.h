@@ -1,6 +1,6 @@
 // Calibrating the host model on the paper's Table 2, every driver-model variant at once: the
 // software run of each scene (the driver does not touch it) and every variant's single-pipeline run
-// of each scene are simulated in one timing study; each variant is fitted to its 16 cells and
+// of each scene are simulated in one timing study; each variant is fitted to its cells (two per table row) and
 // cross-validated (calibration_variants.h), and the one with the least cross-validated error is
 // chosen (docs/calibration.md).
 #pragma once

@@ -35,9 +35,29 @@ void check_values(const Study& s, const Profile& profile, ProfileKind kind) {
   }
 }
 
+// Rows, sweep keys and plots name a profile by its "name": two files of one name would make rows
+// that cannot be told apart (and duplicate keys in sweep.json).
+void check_distinct_name(const Study& s, std::map<std::string, std::string>& files, const std::string& name,
+                         const std::string& file, const char* kind) {
+  const auto [it, fresh] = files.emplace(name, file);
+  if (!fresh) {
+    throw std::invalid_argument(where(s) + ": two " + kind + " profiles are named '" + name + "': " + it->second +
+                                " and " + file + "; rows and plots are keyed by the name: give each its own \"name\"");
+  }
+}
+
 void check_profile_values(const Study& s) {
-  for (const std::string& d : s.axes.devices) check_values(s, board::find_device_profile(d), ProfileKind::device);
-  for (const std::string& h : s.axes.hosts) check_values(s, find_host_profile(h), ProfileKind::host);
+  std::map<std::string, std::string> device_files, host_files;
+  for (const std::string& d : s.axes.devices) {
+    const board::DeviceProfile p = board::find_device_profile(d);
+    check_distinct_name(s, device_files, p.name, p.file, "device");
+    check_values(s, p, ProfileKind::device);
+  }
+  for (const std::string& h : s.axes.hosts) {
+    const HostProfile p = find_host_profile(h);
+    check_distinct_name(s, host_files, p.name, p.file, "host");
+    check_values(s, p, ProfileKind::host);
+  }
 }
 
 // ---- settings that would change nothing --------------------------------------------------------

@@ -181,6 +181,16 @@ std::string relative_to(const std::string& study_file, const std::string& path) 
   return (std::filesystem::path(study_file).parent_path() / p).lexically_normal().string();
 }
 
+// A device or host named by a path (as board::resolve_profile_path tells a path from a name) lies,
+// like a scene file, relative to the study file's folder; a bare name is a profile of configs/.
+std::vector<std::string> profiles_relative_to(const std::string& study_file, std::vector<std::string> names) {
+  for (std::string& n : names) {
+    const bool is_path = n.find('/') != std::string::npos || (n.size() > 5 && n.compare(n.size() - 5, 5, ".json") == 0);
+    if (is_path) n = relative_to(study_file, n);
+  }
+  return names;
+}
+
 StudyScene read_scene(const Reader& r, const toml::table& t, const std::string& key) {
   r.only(t, key + ".", {"name", "paper", "file", "faces", "face_levels", "patch_levels", "patch_size"});
   StudyScene s;
@@ -302,9 +312,9 @@ void read_axes(const Reader& r, const toml::table& t, Study& s) {
       // A section of profile fields (banks.clock_mhz = ... written unquoted is the table "banks").
       collect_paths(*node.as_table(), name, profile_paths);
     } else if (name == "devices") {
-      s.axes.devices = name_axis(r, node, k);
+      s.axes.devices = profiles_relative_to(r.file(), name_axis(r, node, k));
     } else if (name == "hosts") {
-      s.axes.hosts = name_axis(r, node, k);
+      s.axes.hosts = profiles_relative_to(r.file(), name_axis(r, node, k));
     } else if (name == "bits") {
       s.axes.bits = int_axis(r, node, k, 7, 31);
     } else if (name == "lanes") {

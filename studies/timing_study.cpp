@@ -12,6 +12,7 @@
 
 #include "platform/software_system.h"
 #include "radiosity/visibility_factory.h"
+#include "studies/child_guard.h"
 
 namespace rc {
 
@@ -175,17 +176,20 @@ std::vector<TimingOutcome> run_timing_study(const std::vector<TimingCase>& cases
   std::vector<pid_t> children;
   std::vector<int> pipes;
   std::fflush(nullptr);  // nothing buffered may be written twice
+  const pid_t parent = ::getpid();
   for (unsigned s = 1; s < shards; ++s) {
     int fds[2];
     if (::pipe(fds) != 0) throw std::runtime_error(std::string("timing study: pipe: ") + std::strerror(errno));
     const pid_t pid = ::fork();
     if (pid < 0) throw std::runtime_error(std::string("timing study: fork: ") + std::strerror(errno));
     if (pid == 0) {
+      die_with_parent(parent, SIGKILL);  // a worker has nothing to clean up; it must not outlive the study
       ::close(fds[0]);
       for (int fd : pipes) ::close(fd);
       run_child(cases, dealt[s], fds[1]);
     }
     ::close(fds[1]);
+    register_child(pid);  // ended with this process if it is interrupted
     children.push_back(pid);
     pipes.push_back(fds[0]);
   }
@@ -203,6 +207,7 @@ std::vector<TimingOutcome> run_timing_study(const std::vector<TimingCase>& cases
     ::close(pipes[c]);
     int status = 0;
     ::waitpid(children[c], &status, 0);
+    unregister_child(children[c]);
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || text.empty()) {
       child_error = "timing study: worker process " + std::to_string(c + 1) + " died (status " + std::to_string(status) + ")";
       continue;

@@ -67,11 +67,8 @@ def slug(name):
 
 
 def ordered(values):
-    seen = []
-    for v in values:
-        if v not in seen:
-            seen.append(v)
-    return seen
+    """The distinct values in first-seen order (a dict: linear in the rows, whatever the count)."""
+    return list(dict.fromkeys(values))
 
 
 def software_seconds(rows):
@@ -288,26 +285,27 @@ def axis_plot(rows, axis, extras, out):
     fig, axes = plt.subplots(1, len(panels), figsize=(7.5 * len(panels), 4.6), squeeze=False)
     used = set()
     for ax, (key, label, usable) in zip(axes[0], panels):
+        best = {}  # (line, value) -> the best row: one pass over the rows, whatever the number of values
+        for r in rows:
+            if not usable(r):
+                continue
+            at = ((r["device"], r["bits"], driver(r)) + tuple(r[e] for e in others), r[axis])
+            if at not in best or float(r[key]) < float(best[at][key]):
+                best[at] = r
         for index, line in enumerate(lines):
-            xs, ys, kinds = [], [], []
-            for v in values:
-                ok = [r for r in rows if (r["device"], r["bits"], driver(r)) + tuple(r[e] for e in others) == line
-                      and r[axis] == v and usable(r)]
-                if not ok:
-                    continue
-                best = min(ok, key=lambda r: float(r[key]))
-                xs.append(position[v])
-                ys.append(float(best[key]))
-                kinds.append(best["bottleneck"])
-            if not xs:
+            points = [(position[v], float(best[(line, v)][key]), best[(line, v)]["bottleneck"]) for v in values
+                      if (line, v) in best]
+            if not points:
                 continue
             label_text = f"{line[0]}, {line[1]}-bit, {line[2]}" + "".join(f", {e}={v}" for e, v in zip(others, line[3:]))
             style = ["-", "--", ":", "-."][index % 4]  # lines that coincide stay visible
-            (handle,) = ax.plot(xs, ys, style, lw=1.2, label=label_text, color=plt.cm.tab10(index % 10))
-            for x, y, kind in zip(xs, ys, kinds):
+            (handle,) = ax.plot([p[0] for p in points], [p[1] for p in points], style, lw=1.2, label=label_text,
+                                color=plt.cm.tab10(index % 10))
+            for kind in ordered(p[2] for p in points):  # one marker artist per bottleneck, not per point
                 used.add(kind)
-                ax.plot(x, y, BOTTLENECKS.get(kind, ("?", "*", kind))[1], color=handle.get_color(), ms=6, mec="k",
-                        mew=0.4)
+                mine = [p for p in points if p[2] == kind]
+                ax.plot([p[0] for p in mine], [p[1] for p in mine], BOTTLENECKS.get(kind, ("?", "*", kind))[1], ls="",
+                        color=handle.get_color(), ms=6, mec="k", mew=0.4)
         if not numeric:
             ax.set_xticks(range(len(values)))
             ax.set_xticklabels(values)
@@ -326,6 +324,51 @@ def axis_plot(rows, axis, extras, out):
     plt.close(fig)
 
 
+# Pictures per scene (per sweep.csv), at most: at about 0.2 s each, 40 cost seconds, like the sweep's
+# own computation of a small study. A study with many combinations of its axes (a profile axis of
+# 100 values made 404 pictures; 1,000 values took minutes to draw after a 3 s computation) gets its
+# axis plots, which show every value, and the pictures of its first combinations; a line on stderr
+# says what was not drawn (docs/outputs.md, "Plots").
+MAX_PICTURES = 40
+
+
+def planned_pictures(rows, extras, out):
+    """The pictures of each combination of width, driver and the extra axes' values, in CSV order:
+    a list of (combination, [(file, draw)]), the rows grouped once (a thousand-value axis must not
+    scan every row per value)."""
+    blocks = {}
+    for r in rows:
+        blocks.setdefault((r["bits"], driver(r), tuple(r[e] for e in extras)), []).append(r)
+    settings = [e for e in extras if e not in DESIGN_COLUMNS]
+    fronts = {}
+    for r in rows:
+        fronts.setdefault((r["bits"], tuple(r[e] for e in settings)), []).append(r)
+    plan = []
+    for (bits, drv, values), block in blocks.items():
+        name = drv + "".join(f"_{slug(e)}={slug(v)}" for e, v in zip(extras, values))
+        title = f"{bits}-bit, {drv}" + "".join(f", {e}={v}" for e, v in zip(extras, values))
+        pictures = []
+        if any(r["status"] == "ok" for r in block):
+            pictures.append((f"lanes_b{bits}_{name}.png", lambda b=block, n=name, w=bits: lanes_plot(b, w, n, out)))
+        if any(has_energy(r) for r in block):
+            pictures.append((f"energy_b{bits}_{name}.png", lambda b=block, n=name, w=bits: energy_plot(b, w, n, out)))
+        for device in ordered(r["device"] for r in block):
+            mine = [r for r in block if r["device"] == device]
+            if any(r["invalid_kind"] != "does_not_fit" for r in mine):
+                pictures.append((f"heatmap_{slug(device)}_b{bits}_{name}.png",
+                                 lambda m=mine, d=device, n=name, w=bits: heatmap(m, d, w, n, out)))
+        plan.append((title, pictures))
+    # The front chooses among designs (driver, host and cards included); each width and each
+    # combination of profile settings has its own (studies/config_sweep.h).
+    for (bits, values), block in fronts.items():
+        if any(has_energy(r) for r in block):
+            name = "".join(f"_{slug(e)}={slug(v)}" for e, v in zip(settings, values))
+            title = f"{bits}-bit front" + "".join(f", {e}={v}" for e, v in zip(settings, values))
+            plan.append((title, [(f"pareto_b{bits}{name}.png",
+                                  lambda b=block, n=name, w=bits: pareto_plot(b, w, n, out))]))
+    return plan
+
+
 def main(csv_path, out):
     with open(csv_path) as f:
         reader = csv.DictReader(f)
@@ -336,28 +379,27 @@ def main(csv_path, out):
         why = next((r.get("energy_missing", "") for r in simulated if r.get("energy_missing", "")),
                    "the CSV has no energy columns")
         print(f"sweep.py: no energy plots: {why}", file=sys.stderr)
-    for bits in ordered(r["bits"] for r in rows):
-        for drv in ordered(driver(r) for r in rows):
-            for values in ordered(tuple(r[e] for e in extras) for r in rows):
-                block = [r for r in rows if r["bits"] == bits and driver(r) == drv
-                         and tuple(r[e] for e in extras) == values]
-                name = drv + "".join(f"_{slug(e)}={slug(v)}" for e, v in zip(extras, values))
-                if any(r["status"] == "ok" for r in block):
-                    lanes_plot(block, bits, name, out)
-                if any(has_energy(r) for r in block):
-                    energy_plot(block, bits, name, out)
-                for device in ordered(r["device"] for r in block):
-                    heatmap([r for r in block if r["device"] == device], device, bits, name, out)
-        # The front chooses among designs (driver, host and cards included); each width and each
-        # combination of profile settings has its own (studies/config_sweep.h).
-        settings = [e for e in extras if e not in DESIGN_COLUMNS]
-        for values in ordered(tuple(r[e] for e in settings) for r in rows):
-            block = [r for r in rows if r["bits"] == bits and tuple(r[e] for e in settings) == values]
-            if any(has_energy(r) for r in block):
-                name = "".join(f"_{slug(e)}={slug(v)}" for e, v in zip(settings, values))
-                pareto_plot(block, bits, name, out)
-    for axis in extras:
+    for axis in extras:  # the summaries: every value of every axis, drawn whatever the cap
         axis_plot(rows, axis, extras, out)
+    plan = planned_pictures(rows, extras, out)
+    budget = MAX_PICTURES - len(extras)
+    drawn = 0
+    skipped = []
+    for title, pictures in plan:
+        if skipped or drawn + len(pictures) > budget:  # whole combinations only, in CSV order
+            skipped.append((title, pictures))
+            continue
+        for _, draw in pictures:
+            draw()
+        drawn += len(pictures)
+    if skipped:
+        count = sum(len(p) for _, p in skipped)
+        total = len(extras) + sum(len(p) for _, p in plan)
+        print(f"sweep.py: {out}: drew {total - count} of {total} pictures (at most {MAX_PICTURES} per scene; "
+              f"docs/outputs.md): {len(extras)} axis plot(s), which show every value, and the pictures of the first "
+              f"{len(plan) - len(skipped)} of {len(plan)} combinations; not drawn: {count} picture(s) of "
+              f"{len(skipped)} combinations, from '{skipped[0][0]}' to '{skipped[-1][0]}' (sweep.csv has every row)",
+              file=sys.stderr)
 
 
 if __name__ == "__main__":

@@ -138,7 +138,13 @@ TEST(ProfileValidation, ClocksArePositiveAndFinite) {
   EXPECT_EQ(device_error(j), "configs/devices/x.json: wrapper.pass_start_cycles: value -3 is outside [0, 1048576]");
   j = xc2v6000();
   j["pci"]["max_burst_bytes"]["value"] = 3;
-  EXPECT_EQ(device_error(j), "configs/devices/x.json: pci.max_burst_bytes: value 3 is outside [8, 4294967296]");
+  EXPECT_EQ(device_error(j), "configs/devices/x.json: pci.max_burst_bytes: value 3 is outside [8, 4294967295]");
+  // A burst is one TLM transaction, whose length is 32-bit: exactly 2^32 passed this check and then
+  // failed inside the DMA engine, naming neither file nor key (issue 27).
+  j["pci"]["max_burst_bytes"]["value"] = 4294967296.0;
+  EXPECT_EQ(device_error(j), "configs/devices/x.json: pci.max_burst_bytes: value 4294967296 is outside [8, 4294967295]");
+  j["pci"]["max_burst_bytes"]["value"] = 4294967295.0;
+  EXPECT_EQ(device_error(j), "(no error)");
 }
 
 // A value without its source, or with a source that is not text, is named (it once reached

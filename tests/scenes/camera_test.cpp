@@ -46,12 +46,36 @@ TEST(CameraCheck, DegenerateCamerasAreNamed) {
   EXPECT_NE(problem(camera({1, 1, -3}, {1, 1, 0}, {0, 1e-7, 1})).find("is parallel"), std::string::npos);
   EXPECT_EQ(problem(camera({1, 1, -3}, {1, 1, 0}, {0, 1e-5, 1})), "");  // sine 1e-5 > kMinCameraUpSine
   EXPECT_EQ(problem(camera({1, 2, 3}, {1, 2, 3}, {0, 1, 0})), "camera looks at its own position (1, 2, 3) (no view direction)");
-  EXPECT_EQ(problem(camera({1, 1, -3}, {1, 1, 0}, {0, 1, 0}, 0)), "camera vertical field of view 0 degrees is outside (0, 180)");
-  EXPECT_NE(problem(camera({1, 1, -3}, {1, 1, 0}, {0, 1, 0}, 180)).find("is outside (0, 180)"), std::string::npos);
-  EXPECT_NE(problem(camera({1, 1, -3}, {1, 1, 0}, {0, 1, 0}, NAN)).find("is outside (0, 180)"), std::string::npos);
+  EXPECT_EQ(problem(camera({1, 1, -3}, {1, 1, 0}, {0, 1, 0}, 0)),
+            "camera vertical field of view 0 degrees is outside [0.001, 180) (kMinFieldOfViewDeg: narrower views leave "
+            "the projection's range)");
+  EXPECT_NE(problem(camera({1, 1, -3}, {1, 1, 0}, {0, 1, 0}, 180)).find("is outside [0.001, 180)"), std::string::npos);
+  EXPECT_NE(problem(camera({1, 1, -3}, {1, 1, 0}, {0, 1, 0}, NAN)).find("is outside [0.001, 180)"), std::string::npos);
   EXPECT_EQ(problem(camera({1, NAN, -3}, {1, 1, 0}, {0, 1, 0})), "camera position (1, nan, -3) is not finite");
   EXPECT_EQ(problem(camera({1, 1, -3}, {1, 1, INFINITY}, {0, 1, 0})), "camera look-at point (1, 1, inf) is not finite");
   EXPECT_EQ(problem(camera({1, 1, -3}, {1, 1, 0}, {0, -INFINITY, 0})), "camera up vector (0, -inf, 0) is not finite");
+}
+
+// A field of view of 1e-300 degrees overflowed the projection and gave an all-black picture with
+// exit 0 (issue 27): below kMinFieldOfViewDeg is refused, in a scene file with its file and line;
+// at the limit the camera passes.
+TEST(CameraCheck, FieldsOfViewNarrowerThanTheLimitAreRefused) {
+  for (double fov : {1e-300, 1e-10, 9.99e-4}) {
+    EXPECT_NE(problem(camera({1, 1, -3}, {1, 1, 0}, {0, 1, 0}, fov)).find("degrees is outside [0.001, 180)"),
+              std::string::npos)
+        << fov;
+  }
+  EXPECT_EQ(problem(camera({1, 1, -3}, {1, 1, 0}, {0, 1, 0}, kMinFieldOfViewDeg)), "");
+  try {
+    parse_scene_text("material w reflectance 0.5 0.5 0.5 emission 1 1 1\ntri a w 0 0 0 1 0 0 0 1 0\n"
+                     "camera 1 1 -3  1 1 0  0 1 0  1e-300\n",
+                     "narrow.scene");
+    ADD_FAILURE() << "a field of view of 1e-300 degrees was accepted";
+  } catch (const SceneFileError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "narrow.scene:3: camera vertical field of view 1e-300 degrees is outside [0.001, 180) "
+              "(kMinFieldOfViewDeg: narrower views leave the projection's range)");
+  }
 }
 
 TEST(CameraCheck, SceneFilesNameTheFileAndLine) {
@@ -67,8 +91,9 @@ TEST(CameraCheck, SceneFilesNameTheFileAndLine) {
   EXPECT_EQ(error_of("camera 1 1 -3  1 1 0  0 0 0  45\n"), "cam.scene:3: camera up vector is zero");
   EXPECT_NE(error_of("camera 1 1 -3  1 1 0  0 0 1  45\n").find("cam.scene:3: camera up vector (0, 0, 1) is parallel"),
             std::string::npos);
-  EXPECT_EQ(error_of("camera 1 1 -3  1 1 0  0 1 0  0\n"),
-            "cam.scene:3: camera vertical field of view 0 degrees is outside (0, 180)");
+  EXPECT_NE(error_of("camera 1 1 -3  1 1 0  0 1 0  0\n")
+                .find("cam.scene:3: camera vertical field of view 0 degrees is outside [0.001, 180)"),
+            std::string::npos);
   EXPECT_EQ(error_of("camera 1 1 -3  1 1 0  0 1 0  45\n"), "");
 }
 

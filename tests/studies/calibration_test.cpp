@@ -108,6 +108,45 @@ TEST(Calibration, RejectsObservationsWithoutMeasurements) {
   EXPECT_THROW(fit_calibration({o}), std::invalid_argument);
 }
 
+// A fit that does not describe its runs is no profile (issue 27): rms residuals above
+// kMaxFitRmsResidual, or a cost group the runs pay fitted to 0 (the non-negativity bound). The
+// synthetic fit above passes; measurements 1e8 times the model's (a table in the wrong unit) and
+// measurements below the fixed seconds alone (every cost fitted to 0) are refused.
+TEST(Calibration, FitsThatDoNotDescribeTheRunsAreRefused) {
+  auto observation = [](double software_test, double receiver, double step, double fixed, double measured) {
+    CalibrationObservation o;
+    o.label = "run";
+    o.group_seconds[static_cast<int>(CostGroup::SoftwareTest)] = software_test;
+    o.group_seconds[static_cast<int>(CostGroup::Receiver)] = receiver;
+    o.group_seconds[static_cast<int>(CostGroup::Step)] = step;
+    o.fixed_seconds = fixed;
+    o.measured_seconds = measured;
+    return o;
+  };
+  // Made from factors 2, 3, 4 exactly: a fit with no residual and no zero.
+  std::vector<CalibrationObservation> good = {observation(1, 0.1, 0.01, 0, 2.34), observation(0.1, 1, 0.01, 0, 3.24),
+                                              observation(0.1, 0.1, 1, 0, 4.5), observation(1, 1, 1, 0, 9)};
+  EXPECT_EQ(fit_problem(fit_calibration(good), good), "");
+
+  // The fixed seconds alone exceed every measurement: each cost goes to the bound 0.
+  std::vector<CalibrationObservation> too_fast = {observation(1, 0.1, 0.01, 5, 1), observation(0.1, 1, 0.01, 5, 2)};
+  const CalibrationFit zero = fit_calibration(too_fast);
+  EXPECT_EQ(zero.scale[static_cast<int>(CostGroup::SoftwareTest)], 0);
+  const std::string rms = fit_problem(zero, too_fast);
+  EXPECT_NE(rms.find("the fit misses its 2 runs by"), std::string::npos) << rms;
+  EXPECT_NE(rms.find("(at most 25%: kMaxFitRmsResidual"), std::string::npos) << rms;
+
+  // Within the residual bound, but one paid group fitted to 0: the runs were made with an
+  // intersection cost of -10 times the estimate, which the fit can only hold at its bound 0.
+  std::vector<CalibrationObservation> no_test = {observation(1e-3, 1, 0.01, 0, 3.03), observation(1e-3, 0.1, 1, 0, 4.29),
+                                                 observation(1e-3, 1, 1, 0, 6.99)};
+  const CalibrationFit fit = fit_calibration(no_test);
+  ASSERT_LE(fit.rms_relative_residual, kMaxFitRmsResidual);
+  EXPECT_EQ(fit_problem(fit, no_test),
+            "the fit sets every cost of group software_test to 0 s (the non-negativity bound), though the runs pay it: "
+            "the table's times are shorter than the rest of the model explains");
+}
+
 // The variants file `paper --variants` reads: the shipped one loads with one chosen variant in the
 // spread; an edited copy with no chosen variant, two, or a chosen one outside the spread is refused.
 TEST(Calibration, VariantsFileMustChooseExactlyOneVariantInTheSpread) {

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -163,6 +165,47 @@ card_bus = "shared,separate"
   EXPECT_EQ(configs[3].card_split, "faces");
   EXPECT_EQ(extra_columns(s.axes), (std::vector<std::string>{"cards", "card_split", "card_bus"}));
   EXPECT_EQ(study_json(study_from_json(study_json(s))).dump(), study_json(s).dump());
+}
+
+// A copy of a shipped device profile at `path`, renamed `name`.
+void write_device_copy(const std::string& path, const std::string& name) {
+  std::ifstream in(kSource + "/configs/devices/xc2v6000.json");
+  nlohmann::ordered_json j = nlohmann::ordered_json::parse(in);
+  j["name"] = name;
+  std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+  std::ofstream(path) << j.dump(2);
+}
+
+// Device and host paths in a study lie relative to the study file's folder, as its scene files do
+// (issue 27: they resolved against the working folder). A bare name is a profile of configs/.
+TEST(StudyFile, ProfilePathsLieBesideTheStudyFile) {
+  const std::string dir = ::testing::TempDir() + "relative-study";
+  write_device_copy(dir + "/profiles/mine.json", "mine");
+  std::ofstream(dir + "/s.toml") << "[[scenes]]\npaper = { faces = 70, patches = 280 }\n[axes]\n"
+                                    "devices = [\"profiles/mine.json\", \"xc2v6000\"]\nlanes = [1]\nbanks = [6]\n";
+  const Study s = load_study_file(dir + "/s.toml");
+  ASSERT_EQ(s.axes.devices.size(), 2u);
+  EXPECT_EQ(s.axes.devices[0], dir + "/profiles/mine.json");
+  EXPECT_EQ(s.axes.devices[1], "xc2v6000");
+  std::filesystem::remove_all(dir);
+}
+
+// Rows, sweep keys and plots name a device by its profile's "name": two files of one name (a copy
+// of a profile edited but not renamed) gave duplicate sweep keys and a plot-script traceback, exit 0.
+TEST(StudyFile, TwoProfilesOfOneNameAreRefusedNamingBothFiles) {
+  const std::string dir = ::testing::TempDir() + "same-name-study";
+  write_device_copy(dir + "/edited.json", "xc2v6000");
+  std::ofstream(dir + "/s.toml") << "[[scenes]]\npaper = { faces = 70, patches = 280 }\n[axes]\n"
+                                    "devices = [\"xc2v6000\", \"edited.json\"]\nlanes = [1]\nbanks = [6]\n";
+  try {
+    (void)load_study_file(dir + "/s.toml");
+    ADD_FAILURE() << "two devices named xc2v6000 were accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), "study " + dir + "/s.toml: two device profiles are named 'xc2v6000': " + kSource +
+                                         "/configs/devices/xc2v6000.json and " + dir +
+                                         "/edited.json; rows and plots are keyed by the name: give each its own \"name\"");
+  }
+  std::filesystem::remove_all(dir);
 }
 
 TEST(StudyFile, FilesThatAreNotStudiesAreRefusedBeforeReading) {

@@ -1,5 +1,5 @@
 // `rc2000sim adaptive` (issue 14, paper sec 6): adaptive patches against uniform patches at equal
-// patch count, in error and in simulated hardware time (studies/adaptive_study.h). Writes
+// patch count, in error and in simulated hardware time (host_sw/studies/adaptive_study.h). Writes
 // adaptive.csv, the images of every run and of the reference, and pareto.png; with --docs DIR also
 // DIR/adaptive-patches.md. docs/results/adaptive-patches.md.
 #include <cstdio>
@@ -11,8 +11,8 @@
 #include "apps/plot.h"
 #include "apps/progress.h"
 #include "apps/report.h"
-#include "radiosity/png_writer.h"
-#include "studies/adaptive_study.h"
+#include "host_sw/radiosity/png_writer.h"
+#include "host_sw/studies/adaptive_study.h"
 
 namespace rc {
 

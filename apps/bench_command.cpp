@@ -16,11 +16,11 @@
 #include "apps/plot.h"
 #include "pipeline/float_format.h"
 #include "apps/progress.h"
-#include "studies/bench_study.h"
-#include "radiosity/float_visibility.h"
-#include "radiosity/render.h"
-#include "studies/solution_error.h"
-#include "studies/timing_study.h"
+#include "host_sw/studies/bench_study.h"
+#include "host_sw/radiosity/float_visibility.h"
+#include "host_sw/radiosity/render.h"
+#include "host_sw/studies/solution_error.h"
+#include "host_sw/studies/timing_study.h"
 
 namespace rc {
 

@@ -6,11 +6,11 @@
 #include "apps/cli_options.h"
 #include "apps/outputs.h"
 #include "apps/report.h"
-#include "studies/paper_workload.h"
+#include "host_sw/studies/paper_workload.h"
 #include "apps/progress.h"
-#include "studies/calibration.h"
-#include "studies/calibration_variants.h"
-#include "studies/paper_calibration.h"
+#include "host_sw/studies/calibration.h"
+#include "host_sw/studies/calibration_variants.h"
+#include "host_sw/studies/paper_calibration.h"
 
 namespace rc {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "radiosity/radiosity.h"
+#include "host_sw/radiosity/radiosity.h"
 #include "scenes/prepare.h"
 
 namespace rc {
@@ -25,7 +25,7 @@ struct SolverCli {
 void add_scene_options(CLI::App& cmd, SceneOptions& scene);
 void add_solver_options(CLI::App& cmd, SolverCli& solver);
 void add_bits_option(CLI::App& cmd, int& bits);
-// --form-factor NAME, one of form_factor_names() (radiosity/form_factor.h), its default shown; `what`
+// --form-factor NAME, one of form_factor_names() (host_sw/radiosity/form_factor.h), its default shown; `what`
 // prefixes the help ("Base point: " for bench). Resolve with parse_form_factor_kind.
 CLI::Option* add_form_factor_option(CLI::App& cmd, std::string& name, const std::string& what = "");
 

@@ -13,13 +13,13 @@
 #include "apps/outputs.h"
 #include "apps/paper_document.h"
 #include "board/throughput_estimates.h"
-#include "studies/paper_workload.h"
+#include "host_sw/studies/paper_workload.h"
 #include "apps/plot.h"
 #include "apps/progress.h"
 #include "apps/report.h"
-#include "platform/run_report.h"
-#include "studies/calibration_variants.h"
-#include "studies/paper_prediction.h"
+#include "host_sw/platform/run_report.h"
+#include "host_sw/studies/calibration_variants.h"
+#include "host_sw/studies/paper_prediction.h"
 
 namespace rc {
 

@@ -12,10 +12,10 @@
 #include "apps/progress.h"
 #include "apps/report.h"
 #include "io/parse_number.h"
-#include "radiosity/png_writer.h"
+#include "host_sw/radiosity/png_writer.h"
 #include "pipeline/float_format.h"
-#include "radiosity/fixed_visibility.h"
-#include "radiosity/visibility_factory.h"
+#include "host_sw/visibility/fixed_visibility.h"
+#include "host_sw/visibility/visibility_factory.h"
 
 namespace rc {
 

@@ -6,9 +6,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "platform/board_run.h"
-#include "radiosity/radiosity.h"
-#include "radiosity/render.h"
+#include "host_sw/platform/board_run.h"
+#include "host_sw/radiosity/radiosity.h"
+#include "host_sw/radiosity/render.h"
 #include "scenes/prepare.h"
 
 namespace rc {

@@ -22,8 +22,8 @@
 #include "apps/progress.h"
 #include "apps/report.h"
 #include "board/profile_reader.h"
-#include "studies/study_file.h"
-#include "studies/sweep_study.h"
+#include "host_sw/studies/study_file.h"
+#include "host_sw/studies/sweep_study.h"
 
 namespace rc {
 

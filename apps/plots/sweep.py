@@ -349,7 +349,7 @@ def main(csv_path, out):
                 for device in ordered(r["device"] for r in block):
                     heatmap([r for r in block if r["device"] == device], device, bits, name, out)
         # The front chooses among designs (driver, host and cards included); each width and each
-        # combination of profile settings has its own (studies/config_sweep.h).
+        # combination of profile settings has its own (host_sw/studies/config_sweep.h).
         settings = [e for e in extras if e not in DESIGN_COLUMNS]
         for values in ordered(tuple(r[e] for e in settings) for r in rows):
             block = [r for r in rows if r["bits"] == bits and tuple(r[e] for e in settings) == values]

@@ -1,0 +1,30 @@
+#include "host_sw/visibility/visibility_factory.h"
+
+#include <stdexcept>
+
+#include "host_sw/visibility/fast_visibility.h"
+#include "host_sw/visibility/fixed_visibility.h"
+#include "host_sw/visibility/float_pipeline_visibility.h"
+#include "host_sw/radiosity/float_visibility.h"
+#include "host_sw/visibility/needed_only_visibility.h"
+#include "host_sw/visibility/shooter_memo_visibility.h"
+
+namespace rc {
+
+std::unique_ptr<VisibilityBackend> make_software_visibility(const std::string& name, int bits, int threads) {
+  if (name == "float") return std::make_unique<FloatVisibility>();
+  if (name == "fixed") return std::make_unique<FixedPointVisibility>(bits);
+  if (name == "fast") return std::make_unique<FastFixedVisibility>(bits, threads);
+  if (pipeline::names_float_format(name)) {
+    return std::make_unique<FloatPipelineVisibility>(pipeline::parse_float_format(name));
+  }
+  throw std::invalid_argument("unknown visibility backend '" + name +
+                              "' (expected float, fixed, fast or float:E,M)");
+}
+
+std::unique_ptr<VisibilityBackend> make_functional_answer(const std::string& name, int bits, int threads) {
+  return std::make_unique<ShooterMemoVisibility>(
+      std::make_unique<NeededOnlyVisibility>(make_software_visibility(name, bits, threads)));
+}
+
+}  // namespace rc

@@ -67,7 +67,7 @@ TEST(StudyFile, ClassicAxesTakeListsRangesAndTheCommandLineSpelling) {
   const Study s = parse(R"(
 name = "spelled"
 [[scenes]]
-file = "../../../scenes/examples/two-rooms.scene"
+file = "../../../../scenes/examples/two-rooms.scene"
 patch_levels = 1
 [solver]
 steps = 12

@@ -13,6 +13,7 @@
 #include "apps/report.h"
 #include "host_sw/radiosity/png_writer.h"
 #include "host_sw/studies/adaptive_study.h"
+#include "host_sw/visibility/visibility_factory.h"
 
 namespace rc {
 
@@ -149,7 +150,7 @@ void add_adaptive_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   add_form_factor_option(*cmd, o->form_factor_name, "Every run: ");
   cmd->add_option("--visibility", o->visibility, "Bit-exact backend of the runs: fixed or fast")
-      ->check(CLI::IsMember({"fixed", "fast"}))->capture_default_str();
+      ->check(CLI::IsMember(choice_names<BitExactVisibility>()))->capture_default_str();
   cmd->add_option("--device", o->board.device, "Board whose time is simulated")->capture_default_str();
   cmd->add_option("--lanes", o->lanes, "Lanes of that board")->check(CLI::Range(1, 255))->capture_default_str();
   cmd->add_option("--host", o->board.host, "Host profile")->capture_default_str();

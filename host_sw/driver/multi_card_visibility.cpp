@@ -14,14 +14,6 @@ namespace rc {
 
 using sc_core::sc_time;
 
-const char* to_string(CardSplit split) { return split == CardSplit::rays ? "rays" : "faces"; }
-
-CardSplit card_split_from_string(const std::string& name) {
-  if (name == "rays") return CardSplit::rays;
-  if (name == "faces") return CardSplit::faces;
-  throw std::invalid_argument("card split '" + name + "' is not one of: rays, faces");
-}
-
 CardShare card_share(std::size_t total, unsigned cards, unsigned card) {
   if (cards == 0 || card >= cards) throw std::invalid_argument("card_share: card out of range");
   const std::size_t first = total * card / cards;

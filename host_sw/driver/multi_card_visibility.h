@@ -41,6 +41,7 @@
 
 #include <systemc>
 
+#include "io/choice.h"
 #include "host_sw/driver/board_visibility.h"
 #include "host_sw/driver/host_cpu_model.h"
 #include "host_sw/driver/timing_replay_target.h"
@@ -50,9 +51,19 @@ namespace rc {
 
 class TraceWriter;
 
+// rays: each card a share of a step's segments, every face; faces: each card a share of the faces,
+// every segment. Named by ChoiceNames<CardSplit> (below), printed and parsed by io/choice.h.
 enum class CardSplit { rays, faces };
-const char* to_string(CardSplit split);             // "rays", "faces"
-CardSplit card_split_from_string(const std::string& name);  // std::invalid_argument naming the choices
+
+}  // namespace rc
+
+template <>
+struct rc::ChoiceNames<rc::CardSplit> {
+  static constexpr std::string_view what = "card split";
+  static constexpr std::array<std::string_view, 2> names = {"rays", "faces"};
+};
+
+namespace rc {
 
 // Card `card` of `cards` gets [first, first + count) of `total` items: contiguous and balanced.
 struct CardShare {

@@ -233,8 +233,8 @@ void add(BoardDriverStats& into, const BoardDriverStats& d) {
 CardsReport BoardSystem::cards_report(double total) const {
   CardsReport c;
   c.count = cards();
-  c.split = to_string(m_setup.card_split);
-  c.bus = to_string(m_setup.card_bus);
+  c.split = choice_name(m_setup.card_split);
+  c.bus = choice_name(m_setup.card_bus);
   for (unsigned k = 0; k < cards(); ++k) {
     const BoardDriverStats& d = card_driver(k).stats();
     const tlmx::PciBusReport pci = card(k).pci.report();

@@ -39,12 +39,10 @@ class CardCount {
 // separate: each card behind its own bridge, on its own bus segment (no contention).
 enum class CardBus { shared, separate };
 
-inline const char* to_string(CardBus bus) { return bus == CardBus::shared ? "shared" : "separate"; }
-
-inline CardBus card_bus_from_string(const std::string& name) {
-  if (name == "shared") return CardBus::shared;
-  if (name == "separate") return CardBus::separate;
-  throw std::invalid_argument("card bus '" + name + "' is not one of: shared, separate");
-}
-
 }  // namespace rc
+
+template <>
+struct rc::ChoiceNames<rc::CardBus> {
+  static constexpr std::string_view what = "card bus";
+  static constexpr std::array<std::string_view, 2> names = {"shared", "separate"};
+};

@@ -5,25 +5,11 @@
 
 namespace rc {
 
-const std::array<std::string, 3>& form_factor_names() {
-  static const std::array<std::string, 3> names = {"point", "disc", "analytic"};
-  return names;
-}
+std::vector<std::string> form_factor_names() { return choice_names<FormFactorKind>(); }
 
-std::string form_factor_name_list() {
-  const auto& n = form_factor_names();
-  return n[0] + ", " + n[1] + " or " + n[2];
-}
+FormFactorKind parse_form_factor_kind(const std::string& name) { return parse_choice<FormFactorKind>(name); }
 
-FormFactorKind parse_form_factor_kind(const std::string& name) {
-  const auto& names = form_factor_names();
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    if (name == names[i]) return static_cast<FormFactorKind>(i);
-  }
-  throw std::invalid_argument("unknown form factor '" + name + "' (expected " + form_factor_name_list() + ")");
-}
-
-std::string to_string(FormFactorKind kind) { return form_factor_names().at(static_cast<std::size_t>(kind)); }
+std::string to_string(FormFactorKind kind) { return choice_name(kind); }
 
 namespace {
 

@@ -5,10 +5,13 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include <glm/glm.hpp>
 #include <glm/gtc/constants.hpp>
 
+#include "io/choice.h"
 #include "scenes/geometry.h"
 
 namespace rc {
@@ -19,14 +22,22 @@ enum class FormFactorKind {
   Analytic,      // exact from the receiver's centre to the shooter's triangle (contour integral); <= 1
 };
 
-// The command-line and study names of the kinds, in enum order: "point", "disc", "analytic". The one
-// list every option and study key checks against.
-const std::array<std::string, 3>& form_factor_names();
+}  // namespace rc
+
+// The command-line and study names of the kinds, in enum order: the one list every option, study
+// key and axis checks against (io/choice.h).
+template <>
+struct rc::ChoiceNames<rc::FormFactorKind> {
+  static constexpr std::string_view what = "form factor";
+  static constexpr std::array<std::string_view, 3> names = {"point", "disc", "analytic"};
+};
+
+namespace rc {
+
+std::vector<std::string> form_factor_names();  // choice_names<FormFactorKind>()
 // One of form_factor_names(); throws std::invalid_argument naming the value and the list.
 FormFactorKind parse_form_factor_kind(const std::string& name);
 std::string to_string(FormFactorKind kind);
-// "point, disc or analytic", for messages.
-std::string form_factor_name_list();
 
 // The geometry of one shooter-receiver pair. Receivers behind the shooter or facing away from it
 // (either cosine not positive) exchange no energy and get no visibility segment.

@@ -88,6 +88,15 @@ std::vector<bool> parse_concurrency(const std::string& text) {
   throw std::invalid_argument("--concurrent: expected on, off or both, got '" + text + "'");
 }
 
+std::string to_string(const StepsChoice& steps) {
+  switch (steps.kind) {
+    case StepsChoice::Kind::paper: return "paper";
+    case StepsChoice::Kind::converge: return "converge";
+    case StepsChoice::Kind::fixed: return std::to_string(steps.steps);
+  }
+  throw std::logic_error("to_string: not a StepsChoice");
+}
+
 StepsChoice parse_steps(const std::string& text) {
   StepsChoice c;
   if (text == "paper") return c;
@@ -109,7 +118,7 @@ StepsChoice parse_steps(const std::string& text) {
 std::string SweepConfig::label() const {
   std::string text = device + " " + std::to_string(bits) + "-bit " + (concurrent ? "concurrent " : "serial ") +
                      std::to_string(lanes) + (lanes == 1 ? " lane " : " lanes ") + std::to_string(banks) + " banks";
-  if (cards > 1) text += " " + std::to_string(cards) + " cards (" + card_split + ", " + card_bus + " bus)";
+  if (cards > 1) text += " " + std::to_string(cards) + " cards (" + choice_name(card_split) + ", " + choice_name(card_bus) + " bus)";
   for (const ProfileSetting& s : settings) text += " " + s.text();
   return text;
 }
@@ -246,8 +255,8 @@ ConfigCheck ConfigChecker::check(const SweepConfig& c) const {
     out.options.host_profile = h;
     out.options.device_profile = d;
     out.options.cards = c.cards;
-    out.options.card_split = card_split_from_string(c.card_split);
-    out.options.card_bus = card_bus_from_string(c.card_bus);
+    out.options.card_split = c.card_split;
+    out.options.card_bus = c.card_bus;
     (void)make_board_setup(out.options);
   } catch (const std::invalid_argument& e) {
     out.validity = Validity::other;
@@ -401,8 +410,8 @@ void fill_speedups(std::vector<SweepRow>& rows, const std::map<std::string, doub
   // The same configuration but its lane count (the settings' texts stand for their values).
   auto base_key = [](const SweepConfig& c) {
     std::string key = c.device + "|" + std::to_string(c.bits) + "|" + (c.concurrent ? "1" : "0") + "|" +
-                      std::to_string(c.banks) + "|" + c.host + "|" + std::to_string(c.cards) + "|" + c.card_split +
-                      "|" + c.card_bus;
+                      std::to_string(c.banks) + "|" + c.host + "|" + std::to_string(c.cards) + "|" + choice_name(c.card_split) +
+                      "|" + choice_name(c.card_bus);
     for (const ProfileSetting& s : c.settings) key += "|" + s.text();
     return key;
   };
@@ -526,8 +535,8 @@ std::vector<std::string> columns(const std::vector<std::string>& extra) {
 nlohmann::ordered_json extra_value(const SweepConfig& c, const std::string& column) {
   if (column == "host") return c.host;
   if (column == "cards") return c.cards;
-  if (column == "card_split") return c.cards > 1 ? nlohmann::ordered_json(c.card_split) : nlohmann::ordered_json();
-  if (column == "card_bus") return c.cards > 1 ? nlohmann::ordered_json(c.card_bus) : nlohmann::ordered_json();
+  if (column == "card_split") return c.cards > 1 ? nlohmann::ordered_json(choice_name(c.card_split)) : nlohmann::ordered_json();
+  if (column == "card_bus") return c.cards > 1 ? nlohmann::ordered_json(choice_name(c.card_bus)) : nlohmann::ordered_json();
   for (const ProfileSetting& s : c.settings)
     if (s.field.path == column) return s.value;
   throw std::logic_error("sweep column '" + column + "' has no value in " + c.label());

@@ -35,6 +35,16 @@ std::vector<int> parse_int_list(const std::string& text, const std::string& opti
 
 // "a,b,c": the names in the order given, repeats dropped. Throws for an empty list or name.
 std::vector<std::string> parse_name_list(const std::string& text, const std::string& option);
+// "rays,faces" -> the choices (io/choice.h); an unknown name is an error naming `option`.
+template <class E>
+std::vector<E> parse_choice_list(const std::string& text, const std::string& option) {
+  try {
+    return parse_choices<E>(parse_name_list(text, option));
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    throw std::invalid_argument(what.rfind(option, 0) == 0 ? what : option + ": " + what);
+  }
+}
 
 // "off" (serial driver), "on" (concurrent driver, paper sec 4.3) or "both" (serial first).
 std::vector<bool> parse_concurrency(const std::string& text);
@@ -49,8 +59,10 @@ struct StepsChoice {
   Kind kind = Kind::paper;
   int steps = 0;
 };
-// "paper", "converge" or a positive step count.
+// "paper", "converge" or a positive step count: the one parser of a steps policy (the command line,
+// study files and the resolved study's JSON all read it here); to_string gives the text back.
 StepsChoice parse_steps(const std::string& text);
+std::string to_string(const StepsChoice& steps);
 
 // ---- configurations ---------------------------------------------------------------------------------
 
@@ -66,10 +78,10 @@ struct SweepAxes {
   std::vector<bool> concurrent;
   std::vector<std::string> hosts = {"athlon-mp-2600-calibrated"};  // host profiles, in the order given
   // Several cards (docs/board.md, "Several cards"): card counts 1..16, and for more than one card how a
-  // step is split and how they sit on PCI (names of to_string(CardSplit), to_string(CardBus)).
+  // step is split and how they sit on PCI (ChoiceNames<CardSplit>, ChoiceNames<CardBus>).
   std::vector<int> cards = {1};
-  std::vector<std::string> card_splits = {"rays"};
-  std::vector<std::string> card_buses = {"shared"};
+  std::vector<CardSplit> card_splits = {CardSplit::rays};
+  std::vector<CardBus> card_buses = {CardBus::shared};
   std::vector<ProfileAxis> profile;  // profile fields, in the order given (the first varies slowest)
   std::vector<int> lanes;
   std::vector<int> banks;
@@ -83,8 +95,8 @@ struct SweepConfig {
   unsigned banks = 6;
   std::string host;                      // empty: the checker's first host
   unsigned cards = 1;
-  std::string card_split = "rays";       // with one card: the axis's first (it does not apply)
-  std::string card_bus = "shared";
+  CardSplit card_split = CardSplit::rays;  // with one card: the axis's first (it does not apply)
+  CardBus card_bus = CardBus::shared;
   std::vector<ProfileSetting> settings;  // this configuration's value of each profile axis, in axis order
   // "xc2v6000 15-bit concurrent 2 lanes 6 banks", then each setting ("banks.clock_mhz=133").
   std::string label() const;

@@ -10,6 +10,7 @@
 #include "io/parse_number.h"
 #include "rc_version.h"
 #include "host_sw/studies/paper_workload.h"
+#include "host_sw/visibility/visibility_factory.h"
 
 namespace rc {
 
@@ -166,12 +167,10 @@ void check_study(const Study& s) {
     }
   }
   try {
-    (void)parse_steps(s.steps);
+    (void)parse_choice<BitExactVisibility>(s.visibility);
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(where(s) + ": solver.steps: " + e.what());
+    throw std::invalid_argument(where(s) + ": solver.visibility: " + e.what());
   }
-  if (s.visibility != "fixed" && s.visibility != "fast")
-    throw std::invalid_argument(where(s) + ": solver.visibility: expected fixed or fast, got '" + s.visibility + "'");
   if (!(s.convergence > 0 && s.convergence < 1))
     throw std::invalid_argument(where(s) + ": solver.convergence: must lie strictly between 0 and 1");
   try {
@@ -192,11 +191,9 @@ void check_study(const Study& s) {
       throw std::invalid_argument(where(s) + ": axes.cards: " + std::to_string(c) + " is outside 1.." +
                                   std::to_string(CardCount::kMax));
   }
-  for (const std::string& split : s.axes.card_splits) (void)card_split_from_string(split);
-  for (const std::string& bus : s.axes.card_buses) (void)card_bus_from_string(bus);
   const bool several_cards = std::any_of(s.axes.cards.begin(), s.axes.cards.end(), [](int c) { return c > 1; });
-  if (!several_cards && (s.axes.card_splits != std::vector<std::string>{"rays"} ||
-                         s.axes.card_buses != std::vector<std::string>{"shared"})) {
+  if (!several_cards && (s.axes.card_splits != std::vector<CardSplit>{CardSplit::rays} ||
+                         s.axes.card_buses != std::vector<CardBus>{CardBus::shared})) {
     throw std::invalid_argument(where(s) + ": axes.card_split and axes.card_bus apply only with more than one card "
                                            "(axes.cards)");
   }
@@ -214,7 +211,7 @@ nlohmann::ordered_json study_json(const Study& s) {
   nlohmann::ordered_json scenes = nlohmann::ordered_json::array();
   for (const StudyScene& scene : s.scenes) scenes.push_back(scene_json(scene));
   j["scenes"] = scenes;
-  j["solver"] = {{"steps", s.steps},
+  j["solver"] = {{"steps", to_string(s.steps)},
                  {"convergence", s.convergence},
                  {"paper_faithful", s.paper_faithful},
                  {"visibility", s.visibility},
@@ -227,8 +224,8 @@ nlohmann::ordered_json study_json(const Study& s) {
   for (bool c : s.axes.concurrent) concurrent.push_back(c);
   j["axes"] = {{"devices", s.axes.devices},         {"bits", s.axes.bits},
                {"concurrent", concurrent},            {"hosts", s.axes.hosts},
-               {"cards", s.axes.cards},               {"card_split", s.axes.card_splits},
-               {"card_bus", s.axes.card_buses},       {"profile", profile},
+               {"cards", s.axes.cards},               {"card_split", choice_name_vector(s.axes.card_splits)},
+               {"card_bus", choice_name_vector(s.axes.card_buses)},       {"profile", profile},
                {"lanes", s.axes.lanes},               {"banks", s.axes.banks}};
   nlohmann::ordered_json fixed = nlohmann::ordered_json::array();
   for (const ProfileSetting& f : s.fixed) fixed.push_back(setting_json(f));
@@ -246,7 +243,7 @@ Study study_from_json(const nlohmann::ordered_json& j) {
     s.file = j.at("file").get<std::string>();
     for (const auto& scene : j.at("scenes")) s.scenes.push_back(scene_from_json(scene));
     const auto& solver = j.at("solver");
-    s.steps = solver.at("steps").get<std::string>();
+    s.steps = parse_steps(solver.at("steps").get<std::string>());
     s.convergence = solver.at("convergence").get<double>();
     s.paper_faithful = solver.at("paper_faithful").get<bool>();
     s.visibility = solver.at("visibility").get<std::string>();
@@ -258,8 +255,8 @@ Study study_from_json(const nlohmann::ordered_json& j) {
     s.axes.concurrent = axes.at("concurrent").get<std::vector<bool>>();
     s.axes.hosts = axes.at("hosts").get<std::vector<std::string>>();
     s.axes.cards = axes.at("cards").get<std::vector<int>>();
-    s.axes.card_splits = axes.at("card_split").get<std::vector<std::string>>();
-    s.axes.card_buses = axes.at("card_bus").get<std::vector<std::string>>();
+    s.axes.card_splits = parse_choices<CardSplit>(axes.at("card_split").get<std::vector<std::string>>());
+    s.axes.card_buses = parse_choices<CardBus>(axes.at("card_bus").get<std::vector<std::string>>());
     s.axes.lanes = axes.at("lanes").get<std::vector<int>>();
     s.axes.banks = axes.at("banks").get<std::vector<int>>();
     for (const auto& a : axes.at("profile")) {

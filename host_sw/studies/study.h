@@ -29,7 +29,7 @@ struct Study {
   std::string description;
   std::string file;  // the study file as given; empty for a command line (recorded by its name only)
   std::vector<StudyScene> scenes;
-  std::string steps = "paper";  // parse_steps: "paper", "converge" or a count
+  StepsChoice steps;  // the paper's, to convergence or a count (parse_steps reads its text)
   double convergence = SolverOptions{}.convergence;
   bool paper_faithful = true;
   std::string visibility = "fast";  // the bit-exact backend that answers visibility once per width

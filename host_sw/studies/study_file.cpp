@@ -12,6 +12,7 @@
 #include "io/toml_text.h"
 
 #include "host_sw/studies/paper_workload.h"
+#include "host_sw/visibility/visibility_factory.h"
 
 namespace rc {
 
@@ -165,6 +166,17 @@ std::vector<std::string> name_axis(const Reader& r, const toml::node& node, cons
   return names;
 }
 
+// A list of names of one choice (io/choice.h): an unknown name is an error at its line.
+template <class E>
+std::vector<E> choice_axis(const Reader& r, const toml::node& node, const std::string& key) {
+  const std::vector<std::string> names = name_axis(r, node, key);
+  try {
+    return parse_choices<E>(names);
+  } catch (const std::invalid_argument& e) {
+    r.fail(node, key, e.what());
+  }
+}
+
 std::vector<bool> concurrency_axis(const Reader& r, const toml::node& node) {
   if (node.is_boolean()) return {*node.value<bool>()};
   const std::string text = r.text(node, "axes.concurrent");
@@ -229,9 +241,10 @@ void read_scenes(const Reader& r, const toml::node& node, Study& s) {
 void read_solver(const Reader& r, const toml::table& t, Study& s) {
   r.only(t, "solver.", {"steps", "convergence", "paper_faithful", "visibility", "full_banks", "form_factor"});
   if (const toml::node* n = t.get("steps")) {
-    s.steps = n->is_integer() ? std::to_string(r.integer(*n, "solver.steps", 1, 10000000)) : r.text(*n, "solver.steps");
+    const std::string text =
+        n->is_integer() ? std::to_string(r.integer(*n, "solver.steps", 1, 10000000)) : r.text(*n, "solver.steps");
     try {
-      (void)parse_steps(s.steps);
+      s.steps = parse_steps(text);
     } catch (const std::invalid_argument& e) {
       r.fail(*n, "solver.steps", e.what());
     }
@@ -243,7 +256,11 @@ void read_solver(const Reader& r, const toml::table& t, Study& s) {
   if (const toml::node* n = t.get("paper_faithful")) s.paper_faithful = r.boolean(*n, "solver.paper_faithful");
   if (const toml::node* n = t.get("visibility")) {
     s.visibility = r.text(*n, "solver.visibility");
-    if (s.visibility != "fixed" && s.visibility != "fast") r.fail(*n, "solver.visibility", "expected fixed or fast");
+    try {
+      (void)parse_choice<BitExactVisibility>(s.visibility);
+    } catch (const std::invalid_argument& e) {
+      r.fail(*n, "solver.visibility", e.what());
+    }
   }
   if (const toml::node* n = t.get("full_banks")) s.full_banks = r.boolean(*n, "solver.full_banks");
   if (const toml::node* n = t.get("form_factor")) {
@@ -316,9 +333,9 @@ void read_axes(const Reader& r, const toml::table& t, Study& s) {
     } else if (name == "cards") {
       s.axes.cards = int_axis(r, node, k, 1, static_cast<int>(CardCount::kMax));
     } else if (name == "card_split") {
-      s.axes.card_splits = name_axis(r, node, k);
+      s.axes.card_splits = choice_axis<CardSplit>(r, node, k);
     } else if (name == "card_bus") {
-      s.axes.card_buses = name_axis(r, node, k);
+      s.axes.card_buses = choice_axis<CardBus>(r, node, k);
     } else {
       profile_paths.push_back({name, &node});
     }

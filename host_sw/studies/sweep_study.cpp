@@ -40,7 +40,7 @@ SolverOptions base_solver(const Study& s) {
 
 // The steps every configuration of a scene replays: fixed, the paper's, or 0 (to convergence).
 int fixed_steps(const Study& s, const StudyScene& study_scene, const Scene& scene) {
-  const StepsChoice steps = parse_steps(s.steps);
+  const StepsChoice steps = s.steps;
   if (steps.kind == StepsChoice::Kind::fixed) return steps.steps;
   if (steps.kind == StepsChoice::Kind::converge) return 0;
   const int paper = paper_steps(study_scene.options, scene);

@@ -11,15 +11,24 @@
 
 namespace rc {
 
+std::unique_ptr<VisibilityBackend> make_software_visibility(SoftwareVisibility kind, int bits, int threads) {
+  switch (kind) {
+    case SoftwareVisibility::float_double: return std::make_unique<FloatVisibility>();
+    case SoftwareVisibility::fixed: return std::make_unique<FixedPointVisibility>(bits);
+    case SoftwareVisibility::fast: return std::make_unique<FastFixedVisibility>(bits, threads);
+  }
+  throw std::logic_error("make_software_visibility: not a SoftwareVisibility");
+}
+
 std::unique_ptr<VisibilityBackend> make_software_visibility(const std::string& name, int bits, int threads) {
-  if (name == "float") return std::make_unique<FloatVisibility>();
-  if (name == "fixed") return std::make_unique<FixedPointVisibility>(bits);
-  if (name == "fast") return std::make_unique<FastFixedVisibility>(bits, threads);
   if (pipeline::names_float_format(name)) {
     return std::make_unique<FloatPipelineVisibility>(pipeline::parse_float_format(name));
   }
-  throw std::invalid_argument("unknown visibility backend '" + name +
-                              "' (expected float, fixed, fast or float:E,M)");
+  try {
+    return make_software_visibility(parse_choice<SoftwareVisibility>(name), bits, threads);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string(e.what()) + " or float:E,M");
+  }
 }
 
 std::unique_ptr<VisibilityBackend> make_functional_answer(const std::string& name, int bits, int threads) {

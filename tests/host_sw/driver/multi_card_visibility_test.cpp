@@ -28,10 +28,10 @@ TEST(CardShare, ContiguousAndBalanced) {
 }
 
 TEST(CardSplit, NamedChoices) {
-  EXPECT_EQ(card_split_from_string("rays"), CardSplit::rays);
-  EXPECT_EQ(card_split_from_string("faces"), CardSplit::faces);
-  EXPECT_STREQ(to_string(CardSplit::faces), "faces");
-  EXPECT_THROW(card_split_from_string("segments"), std::invalid_argument);
+  EXPECT_EQ(parse_choice<CardSplit>("rays"), CardSplit::rays);
+  EXPECT_EQ(parse_choice<CardSplit>("faces"), CardSplit::faces);
+  EXPECT_EQ(choice_name(CardSplit::faces), "faces");
+  EXPECT_THROW(parse_choice<CardSplit>("segments"), std::invalid_argument);
 }
 
 }  // namespace

@@ -345,8 +345,8 @@ TEST(CardCount, IsValidByConstruction) {
   EXPECT_THROW(CardCount(0), std::invalid_argument);
   EXPECT_THROW(CardCount(17), std::invalid_argument);
   EXPECT_THROW(CardCount(-1), std::invalid_argument);
-  EXPECT_EQ(card_bus_from_string("separate"), CardBus::separate);
-  EXPECT_THROW(card_bus_from_string("both"), std::invalid_argument);
+  EXPECT_EQ(parse_choice<CardBus>("separate"), CardBus::separate);
+  EXPECT_THROW(parse_choice<CardBus>("both"), std::invalid_argument);
 }
 
 }  // namespace

@@ -181,7 +181,7 @@ TEST(AnalyticFormFactor, TheSolverKindsAreOneNameListParsedInOnePlace) {
     parse_form_factor_kind("exact");
     FAIL() << "no error";
   } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(), "unknown form factor 'exact' (expected point, disc or analytic)");
+    EXPECT_STREQ(e.what(), "form factor 'exact' is not one of: point, disc, analytic");
   }
   // The kinds' entry point: the analytic kind takes the polygon, the others only the centres.
   const PairGeometry g = pair_geometry({0.5, 0.5, 1}, {0, 0, -1}, {0.5, 0.5, 0}, {0, 0, 1});

@@ -14,10 +14,10 @@
 #include "apps/plot.h"
 #include "apps/progress.h"
 #include "pipeline/float_format.h"
-#include "radiosity/comparing_visibility.h"
-#include "radiosity/float_visibility.h"
-#include "studies/solution_error.h"
-#include "radiosity/visibility_factory.h"
+#include "host_sw/visibility/comparing_visibility.h"
+#include "host_sw/radiosity/float_visibility.h"
+#include "host_sw/studies/solution_error.h"
+#include "host_sw/visibility/visibility_factory.h"
 
 namespace rc {
 

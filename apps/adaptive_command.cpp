@@ -1,5 +1,5 @@
 // `rc2000sim adaptive` (issue 14, paper sec 6): adaptive patches against uniform patches at equal
-// patch count, in error and in simulated hardware time (studies/adaptive_study.h). Writes
+// patch count, in error and in simulated hardware time (host_sw/studies/adaptive_study.h). Writes
 // adaptive.csv, the images of every run and of the reference, and pareto.png; with --docs DIR also
 // DIR/adaptive-patches.md. docs/results/adaptive-patches.md.
 #include <cstdio>
@@ -11,8 +11,9 @@
 #include "apps/plot.h"
 #include "apps/progress.h"
 #include "apps/report.h"
-#include "radiosity/png_writer.h"
-#include "studies/adaptive_study.h"
+#include "host_sw/radiosity/png_writer.h"
+#include "host_sw/studies/adaptive_study.h"
+#include "host_sw/visibility/visibility_factory.h"
 
 namespace rc {
 
@@ -149,7 +150,7 @@ void add_adaptive_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   add_form_factor_option(*cmd, o->form_factor_name, "Every run: ");
   cmd->add_option("--visibility", o->visibility, "Bit-exact backend of the runs: fixed or fast")
-      ->check(CLI::IsMember({"fixed", "fast"}))->capture_default_str();
+      ->check(CLI::IsMember(choice_names<BitExactVisibility>()))->capture_default_str();
   cmd->add_option("--device", o->board.device, "Board whose time is simulated")->capture_default_str();
   cmd->add_option("--lanes", o->lanes, "Lanes of that board")->check(CLI::Range(1, 255))->capture_default_str();
   cmd->add_option("--host", o->board.host, "Host profile")->capture_default_str();

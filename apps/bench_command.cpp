@@ -16,11 +16,12 @@
 #include "apps/plot.h"
 #include "pipeline/float_format.h"
 #include "apps/progress.h"
-#include "studies/bench_study.h"
-#include "radiosity/float_visibility.h"
-#include "radiosity/render.h"
-#include "studies/solution_error.h"
-#include "studies/timing_study.h"
+#include "host_sw/studies/bench_study.h"
+#include "host_sw/radiosity/float_visibility.h"
+#include "host_sw/radiosity/render.h"
+#include "host_sw/studies/solution_error.h"
+#include "host_sw/studies/timing_study.h"
+#include "host_sw/visibility/visibility_factory.h"
 
 namespace rc {
 
@@ -147,7 +148,7 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--sweep-patch-levels", o->patch_levels, "Patch levels to sweep")->check(CLI::Range(0, 6))
       ->delimiter(',')->capture_default_str();
   cmd->add_option("--visibility", o->visibility, "Bit-exact backend for the points: fixed or fast")
-      ->check(CLI::IsMember({"fixed", "fast"}))->capture_default_str();
+      ->check(CLI::IsMember(choice_names<BitExactVisibility>()))->capture_default_str();
   cmd->add_option("--device", o->board.device, "Board whose time is predicted")->capture_default_str();
   cmd->add_option("--lanes", o->lanes, "Lanes of that board")->check(CLI::Range(1, 64))->capture_default_str();
   cmd->add_option("--host", o->board.host, "Host profile")->capture_default_str();

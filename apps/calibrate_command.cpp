@@ -7,11 +7,12 @@
 #include "apps/cli_options.h"
 #include "apps/outputs.h"
 #include "apps/report.h"
-#include "studies/paper_workload.h"
+#include "host_sw/studies/paper_workload.h"
 #include "apps/progress.h"
-#include "studies/calibration.h"
-#include "studies/calibration_variants.h"
-#include "studies/paper_calibration.h"
+#include "host_sw/studies/calibration.h"
+#include "host_sw/studies/calibration_variants.h"
+#include "host_sw/studies/paper_calibration.h"
+#include "host_sw/visibility/visibility_factory.h"
 
 namespace rc {
 
@@ -103,7 +104,7 @@ void add_calibrate_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("--name", o->name, "Name of the calibrated profile")->capture_default_str();
   cmd->add_option("--visibility", o->visibility, "Bit-exact backend that answers visibility once per scene: fixed or fast")
-      ->check(CLI::IsMember({"fixed", "fast"}))->capture_default_str();
+      ->check(CLI::IsMember(choice_names<BitExactVisibility>()))->capture_default_str();
   cmd->add_flag("--quiet", o->quiet, "No progress output");
   cmd->callback([o, &exit_code] {
     if (o->name.empty()) refuse_option("--name", "must not be empty (it names the calibrated profile)");

@@ -8,7 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "radiosity/radiosity.h"
+#include "host_sw/radiosity/radiosity.h"
+#include "io/choice.h"
 #include "scenes/prepare.h"
 
 namespace rc {
@@ -25,7 +26,15 @@ struct SolverCli {
 void add_scene_options(CLI::App& cmd, SceneOptions& scene);
 void add_solver_options(CLI::App& cmd, SolverCli& solver);
 void add_bits_option(CLI::App& cmd, int& bits);
-// --form-factor NAME, one of form_factor_names() (radiosity/form_factor.h), its default shown; `what`
+// `flag` NAME sets `value` to the choice of that name (io/choice.h): the option accepts exactly the
+// choice's name list and shows its default by name.
+template <class E>
+CLI::Option* add_choice_option(CLI::App& cmd, const std::string& flag, E& value, const std::string& help) {
+  return cmd.add_option_function<std::string>(flag, [&value](const std::string& name) { value = parse_choice<E>(name); }, help)
+      ->check(CLI::IsMember(choice_names<E>()))
+      ->default_str(choice_name(value));
+}
+// --form-factor NAME, one of form_factor_names() (host_sw/radiosity/form_factor.h), its default shown; `what`
 // prefixes the help ("Base point: " for bench). Resolve with parse_form_factor_kind.
 CLI::Option* add_form_factor_option(CLI::App& cmd, std::string& name, const std::string& what = "");
 

@@ -13,13 +13,14 @@
 #include "apps/outputs.h"
 #include "apps/paper_document.h"
 #include "board/throughput_estimates.h"
-#include "studies/paper_workload.h"
+#include "host_sw/studies/paper_workload.h"
 #include "apps/plot.h"
 #include "apps/progress.h"
 #include "apps/report.h"
-#include "platform/run_report.h"
-#include "studies/calibration_variants.h"
-#include "studies/paper_prediction.h"
+#include "host_sw/platform/run_report.h"
+#include "host_sw/studies/calibration_variants.h"
+#include "host_sw/studies/paper_prediction.h"
+#include "host_sw/visibility/visibility_factory.h"
 
 namespace rc {
 
@@ -300,7 +301,7 @@ void add_paper_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--docs", o->docs_dir, "Also write paper.md and its plots here (e.g. docs/results)")
       ->check(output_path());
   cmd->add_option("--visibility", o->visibility, "Bit-exact backend that answers visibility once per scene: fixed or fast")
-      ->check(CLI::IsMember({"fixed", "fast"}))->capture_default_str();
+      ->check(CLI::IsMember(choice_names<BitExactVisibility>()))->capture_default_str();
   cmd->add_flag("--quiet", o->quiet, "No progress output");
   cmd->callback([o, &exit_code] {
     const std::string where = o->out_dir + "/" + (o->docs_dir.empty() ? "" : " and " + o->docs_dir + "/");

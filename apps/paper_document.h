@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "energy/full_rate_energy.h"
-#include "studies/paper_prediction.h"
+#include "host_sw/energy/full_rate_energy.h"
+#include "host_sw/studies/paper_prediction.h"
 
 namespace rc {
 
@@ -16,7 +16,7 @@ struct PaperDocument {
   std::vector<board::PaperEstimate> paper_rule, model;  // sec 5.6, pairwise
   std::vector<BankVariantRow> bank_variants;
   // Sec 5.6 in joules: each model estimate with lanes, and the XC2V6000's own lanes that fit, priced
-  // per intersection at full rate (energy/full_rate_energy.h).
+  // per intersection at full rate (host_sw/energy/full_rate_energy.h).
   std::vector<energy::FullRateEnergy> energy;
   PaperSummary summary;
   std::string host_profile;  // as given to --host

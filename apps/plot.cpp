@@ -8,7 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "studies/child_guard.h"
+#include "host_sw/studies/child_guard.h"
 
 namespace rc {
 

@@ -1,7 +1,7 @@
 #include "apps/report.h"
 
-#include "host/host_cpu_model.h"
-#include "studies/paper_workload.h"
+#include "host_sw/driver/host_cpu_model.h"
+#include "host_sw/studies/paper_workload.h"
 
 #include <cstdio>
 #include <iomanip>

@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "board/throughput_estimates.h"
-#include "host/host_cpu_model.h"
+#include "host_sw/driver/host_cpu_model.h"
 #include "pipeline/float_format.h"
-#include "radiosity/radiosity.h"
+#include "host_sw/radiosity/radiosity.h"
 #include "scenes/scene.h"
 
 namespace rc {

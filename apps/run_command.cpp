@@ -12,10 +12,10 @@
 #include "apps/progress.h"
 #include "apps/report.h"
 #include "io/parse_number.h"
-#include "radiosity/png_writer.h"
+#include "host_sw/radiosity/png_writer.h"
 #include "pipeline/float_format.h"
-#include "radiosity/fixed_visibility.h"
-#include "radiosity/visibility_factory.h"
+#include "host_sw/visibility/fixed_visibility.h"
+#include "host_sw/visibility/visibility_factory.h"
 
 namespace rc {
 
@@ -35,7 +35,7 @@ struct RunOutcome {
 bool float_arith(const RunOptions& o) { return pipeline::names_float_format(o.arith); }
 // Whether the run's visibility has a fractional width (--bits): the board's fixed lanes and the
 // bit-exact software backends do; float formats and double precision do not.
-bool uses_fixed_width(const RunOptions& o) { return !float_arith(o) && (o.impl == "board" || o.visibility != "float"); }
+bool uses_fixed_width(const RunOptions& o) { return !float_arith(o) && (o.impl == Impl::board || o.visibility != SoftwareVisibility::float_double); }
 
 // A warning when faces have no area on the width's grid (a silent wrong answer otherwise: they
 // block nothing); nothing for a scene whose faces all survive quantisation.
@@ -53,7 +53,7 @@ std::optional<std::string> faces_lost_at_width(const Scene& scene, int bits) {
 
 RunOutcome run_software(const RunOptions& o, const Scene& scene, ProgressLine& progress) {
   // A float pipeline (--arith float:E,M) answers as the backend of that name (pipeline/float_mt.h).
-  auto visibility = make_software_visibility(float_arith(o) ? o.arith : o.visibility, o.bits);
+  auto visibility = make_software_visibility(float_arith(o) ? o.arith : choice_name(o.visibility), o.bits);
   HostWorkCounter work;
   ProgressiveRadiosity solver(scene, *visibility, o.solver, &work);
   solver.on_progress([&](const StepProgress& p) {
@@ -62,7 +62,7 @@ RunOutcome run_software(const RunOptions& o, const Scene& scene, ProgressLine& p
   RunOutcome out;
   out.solver = solver.run();
   out.visibility_name =
-      visibility->name() + (o.visibility != "float" && !float_arith(o) ? " " + std::to_string(o.bits) + "-bit" : "");
+      visibility->name() + (o.visibility != SoftwareVisibility::float_double && !float_arith(o) ? " " + std::to_string(o.bits) + "-bit" : "");
   out.visibility_tests = visibility->tests_performed();
   for (int k = 0; k < kHostWorkKinds; ++k) out.work_counts[k] = work.count(HostWork(k));
   return out;
@@ -92,8 +92,8 @@ BoardRunOptions board_options(const RunOptions& o) {
   if (float_arith(o)) board.float_format = pipeline::parse_float_format(o.arith);  // float lanes
   board.lanes = o.lanes;
   board.cards = o.cards;
-  board.card_split = card_split_from_string(o.card_split);
-  board.card_bus = card_bus_from_string(o.card_bus);
+  board.card_split = o.card_split;
+  board.card_bus = o.card_bus;
   return board;
 }
 
@@ -116,8 +116,8 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   out.solver = std::move(r.solver);
   out.visibility_name = "board " + board.device + ", " + std::to_string(board.lanes.value()) + " lane(s), " +
                         (float_arith(o) ? o.arith : std::to_string(o.bits) + "-bit") + (board.concurrent ? ", concurrent" : ", serial") +
-                        (o.cards > 1 ? ", " + std::to_string(o.cards) + " cards (split " + o.card_split + ", " +
-                                           o.card_bus + " bus)"
+                        (o.cards > 1 ? ", " + std::to_string(o.cards) + " cards (split " + choice_name(o.card_split) + ", " +
+                                           choice_name(o.card_bus) + " bus)"
                                      : "");
   out.visibility_tests = r.report.intersections.tests;
   out.board = std::move(r.report);
@@ -203,16 +203,16 @@ nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& pre
   report["steps"] = out.solver.steps;
   if (out.board) report["simulated_seconds"] = out.board->simulated_seconds;
   report["scene"] = scene_json(scene, o.scene.file.empty() ? "embedded:cornell-box" : o.scene.file, prepared.warnings);
-  report["settings"] = {{"impl", o.impl},
+  report["settings"] = {{"impl", choice_name(o.impl)},
                         {"convergence", o.solver.convergence},
                         {"fixed_steps", o.solver.fixed_steps},
                         {"form_factor", to_string(o.solver.form_factor)},
-                        {"visibility", o.impl == "board" ? "board" : float_arith(o) ? o.arith : o.visibility},
+                        {"visibility", o.impl == Impl::board ? "board" : float_arith(o) ? o.arith : choice_name(o.visibility)},
                         {"arith", o.arith},
-                        {"cards", o.impl == "board" ? nlohmann::ordered_json(o.cards) : nlohmann::ordered_json()},
-                        {"card_split", o.impl == "board" && o.cards > 1 ? nlohmann::ordered_json(o.card_split)
+                        {"cards", o.impl == Impl::board ? nlohmann::ordered_json(o.cards) : nlohmann::ordered_json()},
+                        {"card_split", o.impl == Impl::board && o.cards > 1 ? nlohmann::ordered_json(choice_name(o.card_split))
                                                                         : nlohmann::ordered_json()},
-                        {"card_bus", o.impl == "board" && o.cards > 1 ? nlohmann::ordered_json(o.card_bus)
+                        {"card_bus", o.impl == Impl::board && o.cards > 1 ? nlohmann::ordered_json(choice_name(o.card_bus))
                                                                       : nlohmann::ordered_json()},
                         {"bits", uses_fixed_width(o) ? nlohmann::ordered_json(o.bits) : nlohmann::ordered_json()},
                         {"face_target", o.scene.face_target},
@@ -250,7 +250,7 @@ std::vector<std::string> output_paths(const RunOptions& o) {
 }  // namespace
 
 void check_run_options(const CLI::App& cmd, const RunOptions& o) {
-  if (o.impl != "board") {
+  if (o.impl != Impl::board) {
     refuse_given(cmd, {"--device", "--lanes", "--banks", "--concurrent", "--cards", "--card-split", "--card-bus",
                        "--lanes-compute", "--host", "--trace", "--trace-steps", "--vcd"},
                  "applies to --impl board only (the simulated RC2000); this run answers visibility in software");
@@ -268,7 +268,7 @@ void check_run_options(const CLI::App& cmd, const RunOptions& o) {
     refuse_given(cmd, {"--bits", "--visibility"},
                  "does not apply with --arith " + o.arith +
                      " (the float pipeline has no fractional width and is its own backend)");
-  } else if (o.impl != "board" && o.visibility == "float") {
+  } else if (o.impl != Impl::board && o.visibility == SoftwareVisibility::float_double) {
     refuse_given(cmd, {"--bits"}, "does not apply with --visibility float (double precision has no fractional width); "
                                   "--visibility fixed or fast, or --impl board, use it");
   }
@@ -284,7 +284,7 @@ int run_simulation(const RunOptions& o) {
   Outputs outputs;
   for (const std::string& path : output_paths(o)) outputs.expect(path);  // before any work
   // The profiles and the board they make (lanes, banks, layout), before the scene is prepared.
-  if (o.impl == "board") (void)make_board_setup(board_options(o));
+  if (o.impl == Impl::board) (void)make_board_setup(board_options(o));
   ProgressLine progress(!o.quiet);
   PreparedScene prepared = prepare_scene(o.scene, [&](const std::string& what) { progress.update("%-60s", what.c_str()); });
   if (uses_fixed_width(o)) {
@@ -296,7 +296,7 @@ int run_simulation(const RunOptions& o) {
   std::optional<TemporaryFile> vcd;  // SystemC writes it while simulating; moved into place at the end
   if (!o.board.vcd_path.empty()) vcd.emplace(".vcd");
   const RunOutcome out =
-      o.impl == "board" ? run_board(o, scene, progress, vcd ? vcd->path() : std::string()) : run_software(o, scene, progress);
+      o.impl == Impl::board ? run_board(o, scene, progress, vcd ? vcd->path() : std::string()) : run_software(o, scene, progress);
   const RgbImage image = tone_map(render_radiosity(scene, out.solver.radiosity, o.render), o.render.key);
   progress.finish();
   // Point and disc: steps that created energy, said once (docs/radiosity.md, Form-factor sums).
@@ -323,11 +323,9 @@ void add_run_command(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand("run", "Solve radiosity for one scene; write report.json, patches.csv, image.png");
   add_scene_options(*cmd, options->scene);
   add_solver_options(*cmd, *solver);
-  cmd->add_option("--impl", options->impl, "Who answers visibility: software or board (the SystemC RC2000 model)")
-      ->check(CLI::IsMember({"software", "board"}))->capture_default_str();
-  cmd->add_option("--visibility", options->visibility,
-                  "Software backend: float, fixed (bit-exact, brute force) or fast (bit-exact, culled, all cores)")
-      ->check(CLI::IsMember({"float", "fixed", "fast"}))->capture_default_str();
+  add_choice_option(*cmd, "--impl", options->impl, "Who answers visibility: software or board (the SystemC RC2000 model)");
+  add_choice_option(*cmd, "--visibility", options->visibility,
+                    "Software backend: float, fixed (bit-exact, brute force) or fast (bit-exact, culled, all cores)");
   add_bits_option(*cmd, options->bits);
   cmd->add_option("--arith", options->arith,
                   "The pipeline's arithmetic: fixed (fractional bits: --bits) or float:E,M (exponent and fraction bits, "
@@ -345,13 +343,11 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--cards", options->cards,
                   "Board: identical RC2000 cards working on the scene at once (paper sec 6; docs/board.md, Several cards)")
       ->check(CLI::Range(1u, CardCount::kMax))->capture_default_str();
-  cmd->add_option("--card-split", options->card_split,
-                  "Board, several cards: rays (each card a share of a step's segments, every face) or faces (each "
-                  "card a share of the faces, every segment)")
-      ->check(CLI::IsMember({"rays", "faces"}))->capture_default_str();
-  cmd->add_option("--card-bus", options->card_bus,
-                  "Board, several cards: shared (one PCI bus, transfers contend) or separate (each card on its own bus)")
-      ->check(CLI::IsMember({"shared", "separate"}))->capture_default_str();
+  add_choice_option(*cmd, "--card-split", options->card_split,
+                    "Board, several cards: rays (each card a share of a step's segments, every face) or faces (each "
+                    "card a share of the faces, every segment)");
+  add_choice_option(*cmd, "--card-bus", options->card_bus,
+                    "Board, several cards: shared (one PCI bus, transfers contend) or separate (each card on its own bus)");
   cmd->add_flag("--lanes-compute", options->lanes_compute,
                 "Board: the lanes test every ray against every face (slow) instead of copying the bit-identical "
                 "culled answer; timing and results are the same");

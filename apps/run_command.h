@@ -6,25 +6,40 @@
 
 #include <CLI/CLI.hpp>
 
-#include "platform/board_run.h"
-#include "radiosity/radiosity.h"
-#include "radiosity/render.h"
+#include "host_sw/platform/board_run.h"
+#include "host_sw/radiosity/radiosity.h"
+#include "host_sw/radiosity/render.h"
+#include "host_sw/visibility/visibility_factory.h"
+#include "io/choice.h"
 #include "scenes/prepare.h"
+
+namespace rc {
+
+// Who answers visibility: a software backend or the simulated RC2000.
+enum class Impl { software, board };
+
+}  // namespace rc
+
+template <>
+struct rc::ChoiceNames<rc::Impl> {
+  static constexpr std::string_view what = "implementation";
+  static constexpr std::array<std::string_view, 2> names = {"software", "board"};
+};
 
 namespace rc {
 
 struct RunOptions {
   SceneOptions scene;
   SolverOptions solver;              // resolved from SolverCli
-  std::string impl = "software";     // software | board
-  std::string visibility = "float";  // software backend: float | fixed | fast
+  Impl impl = Impl::software;
+  SoftwareVisibility visibility = SoftwareVisibility::float_double;  // software runs' backend
   std::string arith = "fixed";       // the pipeline's arithmetic: fixed (--bits) or float:E,M (software only)
   bool lanes_compute = false;        // board: the lanes test every ray against every face themselves
   int bits = 15;                     // fractional bits of the fixed-point pipeline
   unsigned lanes = 1;                // board: pipeline lanes (--lanes; BoardRunOptions::lanes checks it)
   unsigned cards = 1;                // board: identical cards (--cards; BoardRunOptions::cards checks it)
-  std::string card_split = "rays";   // board, several cards: rays | faces
-  std::string card_bus = "shared";   // board, several cards: shared | separate
+  CardSplit card_split = CardSplit::rays;  // board, several cards
+  CardBus card_bus = CardBus::shared;      // board, several cards
   BoardRunOptions board;             // --impl board (board.vcd_path: --vcd, where the VCD ends up)
   std::string trace_path;            // --trace: the trace.json to write (board runs)
   std::string trace_steps = "1:3";   // A:B, steps written to the trace

@@ -22,8 +22,9 @@
 #include "apps/progress.h"
 #include "apps/report.h"
 #include "board/profile_reader.h"
-#include "studies/study_file.h"
-#include "studies/sweep_study.h"
+#include "host_sw/studies/study_file.h"
+#include "host_sw/studies/sweep_study.h"
+#include "host_sw/visibility/visibility_factory.h"
 
 namespace rc {
 
@@ -58,7 +59,7 @@ struct SweepOptions {
     bits = ranges(d.axes.bits);
     devices = names(d.axes.devices);
     hosts = names(d.axes.hosts);
-    steps = d.steps;
+    steps = to_string(d.steps);
     convergence = d.convergence;
   }
   std::string study_file, shard;
@@ -93,7 +94,7 @@ Study study_from_options(const SweepOptions& o) {
   Study s = default_study();
   s.name = "command-line";
   s.scenes = {{default_scene_name(o.scene), o.scene, o.scene.file}};
-  s.steps = o.steps;
+  s.steps = parse_steps(o.steps);
   s.convergence = o.convergence;
   s.paper_faithful = o.paper_faithful;
   s.visibility = o.visibility;
@@ -106,8 +107,8 @@ Study study_from_options(const SweepOptions& o) {
   s.axes.lanes = parse_int_list(o.lanes, "--lanes", 1, 255);  // the CONFIG register holds 8 bits of each
   s.axes.banks = parse_int_list(o.banks, "--banks", 1, 255);
   s.axes.cards = parse_int_list(o.cards, "--cards", 1, static_cast<int>(CardCount::kMax));
-  s.axes.card_splits = parse_name_list(o.card_split, "--card-split");
-  s.axes.card_buses = parse_name_list(o.card_bus, "--card-bus");
+  s.axes.card_splits = parse_choice_list<CardSplit>(o.card_split, "--card-split");
+  s.axes.card_buses = parse_choice_list<CardBus>(o.card_bus, "--card-bus");
   check_study(s);
   return s;
 }
@@ -136,7 +137,7 @@ std::string block_title(const SweepConfig& c, bool show_host) {
   std::string title = c.device + ", " + std::to_string(c.bits) + "-bit, " + (c.concurrent ? "concurrent" : "serial") +
                       " driver";
   if (show_host) title += ", host " + c.host;
-  if (c.cards > 1) title += ", " + std::to_string(c.cards) + " cards (" + c.card_split + ", " + c.card_bus + " bus)";
+  if (c.cards > 1) title += ", " + std::to_string(c.cards) + " cards (" + choice_name(c.card_split) + ", " + choice_name(c.card_bus) + " bus)";
   for (const ProfileSetting& s : c.settings) title += ", " + s.text();
   return title;
 }
@@ -231,7 +232,7 @@ nlohmann::ordered_json sweep_json(const Study& s, const SceneSweep& r, const std
   nlohmann::ordered_json j;
   j["schema"] = "rc2000sim.sweep/1";
   j["scene"] = {{"name", r.scene.name}, {"source", r.scene.source}, {"faces", r.scene.faces}, {"patches", r.scene.patches}};
-  j["solver"] = {{"paper_faithful", s.paper_faithful}, {"steps_policy", s.steps}, {"convergence", s.convergence},
+  j["solver"] = {{"paper_faithful", s.paper_faithful}, {"steps_policy", to_string(s.steps)}, {"convergence", s.convergence},
                  {"visibility", s.visibility}};
   if (s.form_factor != Study{}.form_factor) j["solver"]["form_factor"] = s.form_factor;  // point: as before it existed
   j["host_profile"] = s.axes.hosts.size() == 1 ? nlohmann::ordered_json(s.axes.hosts.front())
@@ -518,7 +519,7 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--host", o->hosts, "Host profiles (configs/hosts/NAME.json or paths), comma-separated")
       ->capture_default_str();
   cmd->add_option("--visibility", o->visibility, "Bit-exact backend that answers visibility once per width: fixed or fast")
-      ->check(CLI::IsMember({"fixed", "fast"}))->capture_default_str();
+      ->check(CLI::IsMember(choice_names<BitExactVisibility>()))->capture_default_str();
   add_form_factor_option(*cmd, o->form_factor, "Every solve (default: the paper's point rule): ");
   cmd->add_option("--out", o->out_dir, "Output folder for sweep.csv, sweep.json, study.json and the plots (with "
                                        "--shard: for the shard file)")->check(output_path())

@@ -19,9 +19,9 @@
 #include <string>
 #include <vector>
 
-#include "radiosity/fast_visibility.h"
-#include "radiosity/fixed_visibility.h"
-#include "radiosity/radiosity.h"
+#include "host_sw/visibility/fast_visibility.h"
+#include "host_sw/visibility/fixed_visibility.h"
+#include "host_sw/radiosity/radiosity.h"
 #include "scenes/prepare.h"
 
 namespace {

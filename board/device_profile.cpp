@@ -105,7 +105,7 @@ DeviceProfile device_profile_from_json(const nlohmann::ordered_json& json, const
   p.pass_finish_cycles = static_cast<unsigned>(r.integer("wrapper.pass_finish_cycles", 0, 1u << 20));
   p.register_access_cycles = static_cast<unsigned>(r.integer("wrapper.register_access_cycles", 1, 1u << 20));
   p.results = static_cast<ResultStore>(r.choice("wrapper.results", result_store_names()));
-  // "energy" is the energy table's, read and checked whole by energy/energy_table.h.
+  // "energy" is the energy table's, read and checked whole by host_sw/energy/energy_table.h.
   r.refuse_unknown_keys({"description", "energy"});
   return p;
 }

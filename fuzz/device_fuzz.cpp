@@ -1,13 +1,13 @@
 // Device profiles (board/device_profile.h) on any bytes, read from a file as rc2000sim reads them:
 // a profile, or std::invalid_argument naming the file and the field; then its energy table
-// (energy/energy_table.h) as a board run loads it: a table, MissingEnergyTable, or the same error.
+// (host_sw/energy/energy_table.h) as a board run loads it: a table, MissingEnergyTable, or the same error.
 // Every other outcome is a finding.
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
 
 #include "board/device_profile.h"
-#include "energy/energy_table.h"
+#include "host_sw/energy/energy_table.h"
 #include "fuzz/fuzz_support.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

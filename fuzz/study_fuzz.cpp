@@ -1,4 +1,4 @@
-// Study files (studies/study_file.h) on any bytes: a study, or std::invalid_argument naming the
+// Study files (host_sw/studies/study_file.h) on any bytes: a study, or std::invalid_argument naming the
 // file, the line and the key. Parsing resolves device and host names and profile paths against
 // configs/, as `rc2000sim sweep --study` does. Every other outcome is a finding.
 #include <cstddef>
@@ -7,7 +7,7 @@
 #include <string>
 
 #include "fuzz/fuzz_support.h"
-#include "studies/study_file.h"
+#include "host_sw/studies/study_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

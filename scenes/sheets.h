@@ -38,7 +38,7 @@ class FaceSheets {
   std::size_t shared_sheets() const;
   const std::vector<int>& first_of_face() const { return first_; }
   // The sheets of faces [first, first + count) alone, renumbered from 0: a sheet that reaches past
-  // the range keeps the part inside it (a card that holds a share of the faces, host/multi_card).
+  // the range keeps the part inside it (a card that holds a share of the faces, host_sw/driver/multi_card_visibility).
   FaceSheets restricted(int first, int count) const;
 
   friend bool operator==(const FaceSheets& a, const FaceSheets& b) { return a.first_ == b.first_; }

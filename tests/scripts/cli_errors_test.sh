@@ -103,10 +103,10 @@ refused "$work/o" "--patch-levels does not apply to bench" bench --patch-levels 
 refused "$work/o" "--patch-size does not apply to adaptive" adaptive --patch-size 0.1 --quiet --out "$work/o"
 refused "$work/o" "--out does not apply with --list-fields" sweep --list-fields --out "$work/o"
 refused "$work/o" "--lanes does not apply to sweep merge" sweep --lanes 2 merge "$work" --out "$work/o"
-refused "$work/o" "--shard: expected I/N" sweep --study "$root/tests/studies/data/small.toml" --shard 1x/3 --out "$work/o"
+refused "$work/o" "--shard: expected I/N" sweep --study "$root/tests/host_sw/studies/data/small.toml" --shard 1x/3 --out "$work/o"
 refused "$work/o" "--study is empty: name a study file" sweep --study "" --out "$work/o"
-refused "$work/o" "--shard is empty: expected I/N" sweep --study "$root/tests/studies/data/small.toml" --shard "" --out "$work/o"
-refused "$work/o" "--lanes does not apply with --study" sweep --study "$root/tests/studies/data/small.toml" --lanes 2 --out "$work/o"
+refused "$work/o" "--shard is empty: expected I/N" sweep --study "$root/tests/host_sw/studies/data/small.toml" --shard "" --out "$work/o"
+refused "$work/o" "--lanes does not apply with --study" sweep --study "$root/tests/host_sw/studies/data/small.toml" --lanes 2 --out "$work/o"
 
 echo "3. outputs that cannot be written: refused before any work, nothing written, no 'wrote'"
 refused "$work/nothing" "/dev/full: exists and is not a regular file; not replaced" \

@@ -17,9 +17,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "radiosity/float_visibility.h"
-#include "radiosity/form_factor.h"
-#include "radiosity/radiosity.h"
+#include "host_sw/radiosity/float_visibility.h"
+#include "host_sw/radiosity/form_factor.h"
+#include "host_sw/radiosity/radiosity.h"
 #include "scenes/prepare.h"
 
 namespace {

@@ -1,0 +1,94 @@
+// `rc2000sim paper` as a study: the paper's four implementations of every Table 2 scene, sec 4.1's
+// bank variants on the largest scene, and the withheld columns again under every driver-model
+// variant whose cross-validated error is within kVariantTolerance of the best (the spread), all
+// replayed in one timing study; and sec 5.6 under the paper's rule and the model's. The command
+// (apps/paper_command.cpp) turns the result into paper.json, paper.csv, plots and paper.md.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "board/throughput_estimates.h"
+#include "host_sw/driver/host_cpu_model.h"
+#include "host_sw/studies/calibration_variants.h"
+#include "host_sw/studies/paper_workload.h"
+#include "host_sw/studies/timing_study.h"
+
+namespace rc {
+
+// One spread case: a withheld column of one scene under one variant.
+struct SpreadCase {
+  std::size_t scene = 0;
+  int implementation = 0;
+  std::string driver_model;
+  std::size_t outcome_index = 0;             // in the study's outcomes
+  std::size_t main_index = ~std::size_t{0};  // or the main column's outcome it equals (not simulated twice)
+  std::size_t index() const { return main_index != ~std::size_t{0} ? main_index : outcome_index; }
+};
+
+// Sec 4.1's six- and seven-bank variants against five banks, on the largest scene: at 15 bits a
+// word holds two coordinates, so five banks feed two full-rate lanes, and one or two more banks
+// feed two more lanes at 1/3 or 2/3 rate.
+struct BankVariant {
+  unsigned banks, lanes;
+};
+inline constexpr BankVariant kBankVariants[] = {{5, 2}, {6, 4}, {7, 4}};
+
+struct PaperPrediction {
+  const std::vector<PaperScene>* scenes = nullptr;
+  std::vector<TimingOutcome> outcomes;  // kPaperImplementations per scene, the bank variants, the spread
+  std::vector<SpreadCase> spread;
+  std::vector<board::PaperEstimate> paper_rule, model;  // sec 5.6, pairwise
+
+  // (driver model, seconds) of every spread case of (scene, implementation).
+  std::vector<std::pair<std::string, double>> spread_of(std::size_t scene, int impl) const;
+  const TimingOutcome& at(std::size_t scene, int impl) const { return outcomes[scene * kPaperImplementations + impl]; }
+  const TimingOutcome& bank_variant(std::size_t v) const { return outcomes[scenes->size() * kPaperImplementations + v]; }
+};
+
+// One cell of Table 2: a scene under one implementation, with what the paper measured (given
+// columns) or the spread of the variants (withheld columns).
+struct PaperTableRow {
+  PaperRow scene;  // faces, patches, steps, the paper's given seconds
+  PaperImplementation implementation = PaperImplementation::Software;
+  double seconds = 0;
+  bool calibration = false;  // software and single pipeline: the columns the model was fitted to
+  double fpga_busy_seconds = 0, speedup_vs_software = 0, steps_per_second = 0;
+  int convergence_steps_ours = 0;
+  std::vector<std::pair<std::string, double>> spread;  // (driver model, seconds); empty for calibration cells
+  double spread_min_seconds = 0, spread_max_seconds = 0;
+
+  double paper_seconds() const;      // calibration cells only
+  double relative_residual() const;  // calibration cells only
+};
+
+struct BankVariantRow {
+  BankVariant variant;
+  double seconds = 0, fpga_busy_seconds = 0, fpga_speedup_over_five_banks = 0, run_speedup_over_five_banks = 0;
+};
+
+struct PaperSummary {
+  double average_overall_speedup = 0;            // software / concurrent, over the scenes
+  double largest_scene_overall_speedup = 0;
+  double average_steps_per_second_concurrent = 0;
+};
+
+// The scene with the most work per step (patches x faces, then steps): the one the summary's
+// "largest scene" and the sec 4.1 bank variants are about, wherever it is in the table.
+std::size_t largest_scene_index(const std::vector<PaperScene>& scenes);
+
+// Rows in scene order, kPaperImplementations per scene.
+std::vector<PaperTableRow> table_rows(const PaperPrediction& prediction);
+std::vector<BankVariantRow> bank_variant_rows(const PaperPrediction& prediction);
+PaperSummary summarize(const PaperPrediction& prediction);
+
+// `host`: the profile of the main columns (by name, as `rc2000sim paper --host` gives it, and
+// loaded); `variants`: the calibrated variants (load_calibrated_variants). Runs the timing study
+// (once per process).
+PaperPrediction predict_paper(const std::vector<PaperScene>& scenes, const std::vector<PaperRow>& rows,
+                              const std::string& host_name, const HostProfile& host,
+                              const std::vector<CalibratedVariant>& variants);
+
+}  // namespace rc

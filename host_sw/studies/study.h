@@ -1,0 +1,64 @@
+// A design-space study as data (docs/studies.md): the scenes, the steps policy and solver settings,
+// the axes (the classic five, hosts, and any profile field by its path) and fixed profile
+// settings. It comes from a study file (study_file.h) or from `rc2000sim sweep`'s options, and is
+// recorded, resolved (every default filled in), in every output folder and shard as
+// study_json(); study_from_json() reads that record back (`sweep merge` plans from it).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "host_sw/radiosity/radiosity.h"
+#include "scenes/prepare.h"
+#include "host_sw/studies/config_sweep.h"
+
+namespace rc {
+
+struct StudyScene {
+  std::string name;      // the scene's output folder when the study has several scenes
+  SceneOptions options;  // how it is made (prepare_scene); options.file is resolved for this machine
+  // The scene file as the study wrote it (relative to the study file) or the command line gave it;
+  // empty for the embedded box. Outputs record this, so they do not depend on where a shard ran.
+  std::string source;
+};
+
+struct Study {
+  std::string name = "command-line";
+  std::string description;
+  std::string file;  // the study file as given; empty for a command line (recorded by its name only)
+  std::vector<StudyScene> scenes;
+  StepsChoice steps;  // the paper's, to convergence or a count (parse_steps reads its text)
+  double convergence = SolverOptions{}.convergence;
+  bool paper_faithful = true;
+  std::string visibility = "fast";  // the bit-exact backend that answers visibility once per width
+  // The solver's form factor (form_factor_names()). The paper's point rule by default: a sweep
+  // replicates the paper's workload (Table 2's steps, every segment sent) on other boards.
+  std::string form_factor = "point";
+  bool full_banks = false;          // false: banks as small as change no pass (compact_bank_capacity)
+  SweepAxes axes;
+  std::vector<ProfileSetting> fixed;  // applied to every configuration's profiles
+};
+
+// Checks what can be checked without solving: a steps policy, the visibility backend, scene names
+// unique, every profile known, every profile path a field of every device (or host) swept and every
+// value accepted by the profile's loader, and the size of the sweep. Errors name the study.
+void check_study(const Study& study);
+
+// The resolved study as recorded (schema rc2000sim.study/1) and back. study_from_json resolves the
+// profile paths again and runs check_study.
+nlohmann::ordered_json study_json(const Study& study);
+Study study_from_json(const nlohmann::ordered_json& json);
+
+// Resolves a profile path against the study's first device and first host (profile_setting.h).
+ProfileField resolve_study_field(const std::string& path, const std::vector<std::string>& devices,
+                                 const std::vector<std::string>& hosts);
+
+// "paper-280-1120" for the paper's scenes, the file's stem, or "cornell-box".
+std::string default_scene_name(const SceneOptions& options);
+
+// The tool that ran a study, recorded beside it: "rc2000sim <version> (<git commit>)".
+std::string tool_version();
+
+}  // namespace rc

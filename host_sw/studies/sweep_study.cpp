@@ -1,0 +1,486 @@
+#include "host_sw/studies/sweep_study.h"
+
+#include <algorithm>
+#include <optional>
+#include <cstdio>
+#include <set>
+#include <stdexcept>
+
+#include "io/parse_number.h"
+#include "host_sw/studies/paper_workload.h"
+#include "host_sw/studies/timing_study.h"
+
+namespace rc {
+
+namespace {
+
+using Progress = std::function<void(const std::string&)>;
+
+// ---- the workload ---------------------------------------------------------------------------------
+
+// Table 2's step count when the scene is one of the paper's (our Cornell Box refined to 70 faces,
+// then split); 0 otherwise.
+int paper_steps(const SceneOptions& o, const Scene& scene) {
+  if (!o.file.empty() || o.face_target != 70) return 0;
+  for (const PaperRow& row : load_paper_table(default_paper_table_path())) {
+    if (static_cast<std::size_t>(row.faces) == scene.faces.size() &&
+        static_cast<std::size_t>(row.patches) == scene.patches.size())
+      return row.steps;
+  }
+  return 0;
+}
+
+SolverOptions base_solver(const Study& s) {
+  SolverOptions o;
+  o.cull_receivers = !s.paper_faithful;
+  o.convergence = s.convergence;
+  o.form_factor = parse_form_factor_kind(s.form_factor);
+  return o;
+}
+
+// The steps every configuration of a scene replays: fixed, the paper's, or 0 (to convergence).
+int fixed_steps(const Study& s, const StudyScene& study_scene, const Scene& scene) {
+  const StepsChoice steps = s.steps;
+  if (steps.kind == StepsChoice::Kind::fixed) return steps.steps;
+  if (steps.kind == StepsChoice::Kind::converge) return 0;
+  const int paper = paper_steps(study_scene.options, scene);
+  if (paper == 0) {
+    std::fprintf(stderr, "note: scene %s is not one of Table 2's; steps \"paper\" falls back to converge\n",
+                 study_scene.name.c_str());
+  }
+  return paper;
+}
+
+struct Solved {
+  RecordedRun functional;
+  WidthSummary summary;
+};
+
+Solved solve(const Study& s, const Scene& scene, int bits, int steps) {
+  SolverOptions solver = base_solver(s);
+  solver.fixed_steps = steps;
+  Solved w;
+  w.functional = record_functional_run(scene, solver, s.visibility, bits);
+  w.summary.steps = w.functional.result.steps;
+  w.summary.convergence_step = w.functional.convergence_step;
+  for (int i = 0; i < w.summary.steps; ++i) {
+    w.summary.max_segments =
+        std::max<std::uint64_t>(w.summary.max_segments, w.functional.recording.segments(static_cast<std::size_t>(i)));
+  }
+  return w;
+}
+
+// ---- the plan -------------------------------------------------------------------------------------
+
+struct Planned {
+  SweepConfig config;
+  ConfigCheck check;
+};
+
+std::vector<Planned> plan_configs(const SweepAxes& axes, const ConfigChecker& checker) {
+  std::vector<Planned> plan;
+  for (const SweepConfig& c : enumerate_configs(axes)) plan.push_back({c, checker.check(c)});
+  return plan;
+}
+
+struct Group {
+  std::size_t scene = 0;
+  int bits = 0;
+};
+
+std::vector<Group> all_groups(const Study& s) {
+  std::vector<Group> groups;
+  for (std::size_t i = 0; i < s.scenes.size(); ++i)
+    for (int bits : s.axes.bits) groups.push_back({i, bits});
+  return groups;
+}
+
+// A solve and its replays both scale with the segments tested (patches x faces per step, with the
+// same step count); every replay, software or board, walks the step's segments once (patches).
+double group_cost(const Scene& scene, std::size_t replays) {
+  const double patches = static_cast<double>(scene.patches.size());
+  return patches * (static_cast<double>(scene.faces.size()) + static_cast<double>(replays));
+}
+
+// The software-only time each speedup is taken against: one case per software key at a width.
+std::map<std::string, HostProfile> software_hosts(const std::vector<Planned>& plan, const ConfigChecker& checker,
+                                                  int bits) {
+  std::map<std::string, HostProfile> hosts;
+  for (const Planned& p : plan) {
+    if (p.config.bits != bits) continue;
+    const std::string key = software_key(p.config);
+    if (hosts.count(key) == 0) hosts.emplace(key, checker.host(p.config));
+  }
+  return hosts;
+}
+
+std::size_t valid_at(const std::vector<Planned>& plan, int bits) {
+  return static_cast<std::size_t>(std::count_if(plan.begin(), plan.end(), [&](const Planned& p) {
+    return p.config.bits == bits && p.check.validity == Validity::ok;
+  }));
+}
+
+// ---- the timing cases -----------------------------------------------------------------------------
+
+// One group being run: its solve, its cases' indices and its modelled bank sizes.
+struct Running {
+  Group group;
+  const Scene* scene = nullptr;
+  Solved solved;
+  std::map<std::string, std::size_t> software_case;   // by software key
+  std::map<std::size_t, std::size_t> board_case;      // plan index -> case index
+  std::map<std::size_t, std::uint64_t> bank_capacity; // plan index -> bytes (0: the profile's)
+};
+
+TimingCase base_case(const Study& s, const Running& g) {
+  TimingCase c;
+  c.scene = g.scene;
+  c.solver = base_solver(s);
+  c.solver.fixed_steps = g.solved.summary.steps;
+  c.recording = &g.solved.functional.recording;
+  return c;
+}
+
+void add_cases(const Study& s, const std::vector<Planned>& plan, const ConfigChecker& checker, Running& g,
+               std::vector<TimingCase>& cases) {
+  for (const auto& [key, host] : software_hosts(plan, checker, g.group.bits)) {
+    TimingCase c = base_case(s, g);
+    c.label = "software " + key;
+    c.software = true;
+    c.host = host.name;
+    c.host_profile = host;
+    g.software_case[key] = cases.size();
+    cases.push_back(c);
+  }
+  for (std::size_t i = 0; i < plan.size(); ++i) {
+    const Planned& p = plan[i];
+    if (p.config.bits != g.group.bits || p.check.validity != Validity::ok) continue;
+    const std::uint64_t bytes =
+        s.full_banks ? 0
+                     : ConfigChecker::compact_bank_capacity(*p.check.options.device_profile, g.solved.summary.max_segments,
+                                                            g.scene->faces.size());
+    TimingCase c = base_case(s, g);
+    c.label = p.config.label();
+    c.board = p.check.options;
+    c.board.bank_capacity_bytes = bytes;
+    g.bank_capacity[i] = bytes;
+    g.board_case[i] = cases.size();
+    cases.push_back(c);
+  }
+}
+
+// Compact banks promise identical passes; a batched or split step would break that promise.
+void check_compact_banks(const SweepConfig& config, std::uint64_t bank_capacity, const TimingOutcome& out) {
+  if (bank_capacity == 0) return;
+  const BatchingReport& b = out.report.board.batching;
+  if (b.max_batches_per_step > 1 || b.face_sets > config.cards) {  // face sets are summed over the cards
+    throw std::logic_error("compact banks batched " + config.label() + "; rerun with full_banks");
+  }
+}
+
+GroupResult collect(const std::vector<Planned>& plan, const ConfigChecker& checker, const Running& g,
+                    const std::vector<TimingOutcome>& outcomes) {
+  GroupResult r;
+  r.scene = g.group.scene;
+  r.bits = g.group.bits;
+  r.width = g.solved.summary;
+  for (const auto& [key, index] : g.software_case) r.software_seconds[key] = outcomes[index].simulated_seconds;
+  for (std::size_t i = 0; i < plan.size(); ++i) {
+    const Planned& p = plan[i];
+    if (p.config.bits != g.group.bits) continue;
+    SweepRow row;
+    if (p.check.validity == Validity::ok) {
+      const TimingOutcome& out = outcomes[g.board_case.at(i)];
+      check_compact_banks(p.config, g.bank_capacity.at(i), out);
+      row = row_from_report(p.config, out.report, r.width.steps);
+      std::uint64_t& bytes = r.bank_capacities[checker.device(p.config.device).name];
+      bytes = std::max(bytes, g.bank_capacity.at(i));
+    } else {
+      row = invalid_row(p.config, p.check, r.width.steps);
+    }
+    row.config.device = checker.device(p.config.device).name;  // a profile given by path shows its name
+    r.rows.emplace(i, row);
+  }
+  return r;
+}
+
+SceneSummary summary(const StudyScene& s, const Scene& scene) {
+  return {scene.name, s.source.empty() ? "embedded:cornell-box" : s.source, scene.faces.size(), scene.patches.size()};
+}
+
+// The study's name, not its path: profile sources written by the settings reach outputs, and where the
+// study file lay must not change them.
+std::string study_name(const Study& s) { return s.name; }
+
+}  // namespace
+
+// ---- shards ---------------------------------------------------------------------------------------
+
+std::string Shard::text() const { return std::to_string(index) + "/" + std::to_string(count); }
+
+Shard parse_shard(const std::string& text) {
+  // The whole of each side must be the number ("1x/3" or "1/3 " is no shard).
+  const std::size_t slash = text.find('/');
+  const std::optional<std::uint64_t> index = slash == std::string::npos ? std::nullopt : io::parse_unsigned(text.substr(0, slash));
+  const std::optional<std::uint64_t> count = slash == std::string::npos ? std::nullopt : io::parse_unsigned(text.substr(slash + 1));
+  if (!index || !count) throw std::invalid_argument("--shard: expected I/N (shard I of N, counted from 0), got '" + text + "'");
+  if (*count < 1 || *count > kMaxShards)
+    throw std::invalid_argument("--shard " + text + ": N must be 1.." + std::to_string(kMaxShards));
+  if (*index >= *count)
+    throw std::invalid_argument("--shard " + text + ": I counts from 0 and must be below N (0.." +
+                                std::to_string(*count - 1) + ")");
+  return {static_cast<unsigned>(*index), static_cast<unsigned>(*count)};
+}
+
+std::vector<unsigned> deal_groups(const std::vector<double>& costs, unsigned shards) {
+  std::vector<std::size_t> order(costs.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return costs[a] > costs[b]; });
+  std::vector<double> load(shards, 0.0);
+  std::vector<unsigned> owner(costs.size(), 0);
+  for (std::size_t g : order) {
+    const unsigned least = static_cast<unsigned>(std::min_element(load.begin(), load.end()) - load.begin());
+    owner[g] = least;
+    load[least] += costs[g];
+  }
+  return owner;
+}
+
+ShardResult run_study_shard(const Study& study, const Shard& shard, const Progress& progress) {
+  check_study(study);
+  const ConfigChecker checker(study.axes.devices, study.axes.hosts, study.fixed, study_name(study));
+  const std::vector<Planned> plan = plan_configs(study.axes, checker);
+  ShardResult result;
+  result.study = study;
+  result.tool = tool_version();
+  result.shard = shard;
+  // Every shard prepares every scene: the deal needs their sizes (loading is not solving).
+  std::vector<Scene> scenes;
+  for (const StudyScene& s : study.scenes) scenes.push_back(prepare_scene(s.options, progress).scene);
+  const std::vector<Group> groups = all_groups(study);
+  result.groups_in_study = groups.size();
+  std::vector<double> costs;
+  for (const Group& g : groups) {
+    costs.push_back(group_cost(scenes[g.scene], valid_at(plan, g.bits) + software_hosts(plan, checker, g.bits).size()));
+  }
+  const std::vector<unsigned> owner = deal_groups(costs, shard.count);
+
+  std::vector<Running> running;
+  for (std::size_t i = 0; i < groups.size(); ++i) {
+    if (owner[i] != shard.index) continue;
+    const Group& g = groups[i];
+    const StudyScene& s = study.scenes[g.scene];
+    const Scene& scene = scenes[g.scene];
+    progress("solving " + s.name + " (" + std::to_string(scene.patches.size()) + " patches) at " +
+             std::to_string(g.bits) + " bits");
+    running.push_back({g, &scene, solve(study, scene, g.bits, fixed_steps(study, s, scene)), {}, {}, {}});
+    result.scenes[g.scene] = summary(s, scene);
+  }
+  std::vector<TimingCase> cases;
+  for (Running& g : running) add_cases(study, plan, checker, g, cases);
+  progress("simulating " + std::to_string(cases.size()) + " configurations of " + std::to_string(running.size()) +
+           " solve(s)");
+  std::vector<TimingOutcome> outcomes;
+  if (!cases.empty()) outcomes = run_timing_study(cases);
+  for (const Running& g : running) result.groups.push_back(collect(plan, checker, g, outcomes));
+  return result;
+}
+
+// ---- the shard record -----------------------------------------------------------------------------
+
+namespace {
+
+nlohmann::ordered_json group_json(const GroupResult& g, const std::vector<std::string>& extra) {
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  for (const auto& [index, row] : g.rows) {
+    nlohmann::ordered_json r = sweep_row_json(row, extra);
+    r["plan_index"] = index;
+    rows.push_back(r);
+  }
+  return {{"scene", g.scene},
+          {"bits", g.bits},
+          {"steps", g.width.steps},
+          {"convergence_step", g.width.convergence_step},
+          {"max_segments_per_step", g.width.max_segments},
+          {"software_seconds", g.software_seconds},
+          {"bank_capacities", g.bank_capacities},
+          {"rows", rows}};
+}
+
+GroupResult group_from_json(const nlohmann::ordered_json& j, const std::vector<SweepConfig>& plan) {
+  GroupResult g;
+  g.scene = j.at("scene").get<std::size_t>();
+  g.bits = j.at("bits").get<int>();
+  g.width.steps = j.at("steps").get<int>();
+  g.width.convergence_step = j.at("convergence_step").get<int>();
+  g.width.max_segments = j.at("max_segments_per_step").get<std::uint64_t>();
+  g.software_seconds = j.at("software_seconds").get<std::map<std::string, double>>();
+  g.bank_capacities = j.at("bank_capacities").get<std::map<std::string, std::uint64_t>>();
+  for (const auto& r : j.at("rows")) {
+    const std::size_t index = r.at("plan_index").get<std::size_t>();
+    if (index >= plan.size()) throw std::invalid_argument("row plan_index " + std::to_string(index) + " is beyond the plan");
+    if (plan[index].bits != g.bits) throw std::invalid_argument("row " + std::to_string(index) + " is not at the group's width");
+    g.rows.emplace(index, sweep_row_from_json(r, plan[index]));
+  }
+  return g;
+}
+
+}  // namespace
+
+nlohmann::ordered_json shard_json(const ShardResult& s) {
+  nlohmann::ordered_json j;
+  j["schema"] = "rc2000sim.shard/1";
+  j["tool"] = s.tool;
+  j["shard"] = {{"index", s.shard.index}, {"count", s.shard.count}};
+  j["groups_in_study"] = s.groups_in_study;
+  j["study"] = study_json(s.study);
+  nlohmann::ordered_json scenes = nlohmann::ordered_json::array();
+  for (const auto& [index, scene] : s.scenes) {
+    scenes.push_back({{"index", index},
+                      {"name", scene.name},
+                      {"source", scene.source},
+                      {"faces", scene.faces},
+                      {"patches", scene.patches}});
+  }
+  j["scenes"] = scenes;
+  const std::vector<std::string> extra = extra_columns(s.study.axes);
+  nlohmann::ordered_json groups = nlohmann::ordered_json::array();
+  for (const GroupResult& g : s.groups) groups.push_back(group_json(g, extra));
+  j["groups"] = groups;
+  return j;
+}
+
+ShardResult shard_from_json(const nlohmann::ordered_json& j, const std::string& origin) {
+  if (j.value("schema", "") != "rc2000sim.shard/1")
+    throw std::invalid_argument(origin + ": not a shard file (schema rc2000sim.shard/1)");
+  try {
+    ShardResult s;
+    s.tool = j.at("tool").get<std::string>();
+    s.shard.index = j.at("shard").at("index").get<unsigned>();
+    s.shard.count = j.at("shard").at("count").get<unsigned>();
+    s.groups_in_study = j.at("groups_in_study").get<std::size_t>();
+    s.study = study_from_json(j.at("study"));
+    for (const auto& scene : j.at("scenes")) {
+      s.scenes[scene.at("index").get<std::size_t>()] = {scene.at("name").get<std::string>(),
+                                                         scene.at("source").get<std::string>(),
+                                                         scene.at("faces").get<std::uint64_t>(),
+                                                         scene.at("patches").get<std::uint64_t>()};
+    }
+    const std::vector<SweepConfig> plan = enumerate_configs(s.study.axes);
+    for (const auto& g : j.at("groups")) s.groups.push_back(group_from_json(g, plan));
+    return s;
+  } catch (const nlohmann::json::exception& e) {
+    throw std::invalid_argument(origin + ": " + e.what());
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(origin + ": " + e.what());
+  }
+}
+
+// ---- merging --------------------------------------------------------------------------------------
+
+namespace {
+
+void check_same_run(const std::vector<ShardResult>& shards, const std::vector<std::string>& origins) {
+  const std::string study = study_json(shards.front().study).dump();
+  for (std::size_t i = 1; i < shards.size(); ++i) {
+    if (study_json(shards[i].study).dump() != study)
+      throw std::invalid_argument(origins[i] + " belongs to another study than " + origins[0]);
+    if (shards[i].tool != shards[0].tool) {
+      throw std::invalid_argument(origins[i] + " was made by " + shards[i].tool + ", " + origins[0] + " by " +
+                                  shards[0].tool + "; re-run the shards with one build");
+    }
+    if (shards[i].shard.count != shards[0].shard.count) {
+      throw std::invalid_argument(origins[i] + " is shard " + shards[i].shard.text() + ", " + origins[0] + " is shard " +
+                                  shards[0].shard.text() + ": one study split two ways");
+    }
+  }
+}
+
+void check_complete(const std::vector<ShardResult>& shards, const std::vector<std::string>& origins) {
+  const unsigned count = shards.front().shard.count;
+  std::map<unsigned, std::size_t> seen;
+  for (std::size_t i = 0; i < shards.size(); ++i) {
+    const auto [it, fresh] = seen.emplace(shards[i].shard.index, i);
+    if (!fresh) {
+      throw std::invalid_argument("shard " + shards[i].shard.text() + " is given twice: " + origins[it->second] +
+                                  " and " + origins[i]);
+    }
+  }
+  std::vector<unsigned> missing;
+  for (unsigned i = 0; i < count; ++i)
+    if (seen.count(i) == 0) missing.push_back(i);
+  if (missing.empty()) return;
+  std::string list;
+  for (unsigned m : missing) list += (list.empty() ? "" : ", ") + std::to_string(m);
+  const Study& s = shards.front().study;
+  throw std::invalid_argument(std::to_string(missing.size()) + " of " + std::to_string(count) +
+                              " shards are missing: " + list + " (re-run each with: rc2000sim sweep --study " +
+                              (s.file.empty() ? std::string("<the study>") : s.file) + " --shard " +
+                              std::to_string(missing.front()) + "/" + std::to_string(count) +
+                              " --out <the shards' folder>, then merge again)");
+}
+
+SceneSweep assemble_scene(const Study& study, const SceneSummary& scene,
+                          const std::vector<const GroupResult*>& groups, const std::vector<SweepConfig>& plan) {
+  SceneSweep out;
+  out.scene = scene;
+  std::map<int, const GroupResult*> by_bits;
+  for (const GroupResult* g : groups) {
+    if (!by_bits.emplace(g->bits, g).second)
+      throw std::invalid_argument("scene " + scene.name + " at " + std::to_string(g->bits) + " bits was solved twice");
+  }
+  for (int bits : study.axes.bits) {
+    const auto it = by_bits.find(bits);
+    if (it == by_bits.end())
+      throw std::invalid_argument("scene " + scene.name + " at " + std::to_string(bits) + " bits is in no shard");
+    const GroupResult& g = *it->second;
+    out.widths[bits] = g.width;
+    out.software_seconds.insert(g.software_seconds.begin(), g.software_seconds.end());
+    for (const auto& [device, bytes] : g.bank_capacities) {
+      std::uint64_t& most = out.bank_capacities[device];
+      most = std::max(most, bytes);
+    }
+  }
+  for (std::size_t i = 0; i < plan.size(); ++i) {
+    const GroupResult& g = *by_bits.at(plan[i].bits);
+    const auto row = g.rows.find(i);
+    if (row == g.rows.end()) throw std::invalid_argument("configuration " + plan[i].label() + " has no row");
+    out.rows.push_back(row->second);
+    if (row->second.validity == Validity::ok) ++out.valid;
+  }
+  fill_speedups(out.rows, out.software_seconds);
+  mark_pareto_time_energy(out.rows);
+  return out;
+}
+
+}  // namespace
+
+StudyResult merge_shards(const std::vector<ShardResult>& shards, const std::vector<std::string>& origins) {
+  if (shards.empty()) throw std::invalid_argument("no shards to merge");
+  check_same_run(shards, origins);
+  check_complete(shards, origins);
+  StudyResult result;
+  result.study = shards.front().study;
+  result.tool = shards.front().tool;
+  const std::vector<SweepConfig> plan = enumerate_configs(result.study.axes);
+  for (std::size_t s = 0; s < result.study.scenes.size(); ++s) {
+    std::vector<const GroupResult*> groups;
+    const SceneSummary* scene = nullptr;
+    for (const ShardResult& shard : shards) {
+      for (const GroupResult& g : shard.groups)
+        if (g.scene == s) groups.push_back(&g);
+      if (shard.scenes.count(s)) scene = &shard.scenes.at(s);
+    }
+    if (scene == nullptr) throw std::invalid_argument("scene " + result.study.scenes[s].name + " is in no shard");
+    result.scenes.push_back(assemble_scene(result.study, *scene, groups, plan));
+  }
+  return result;
+}
+
+StudyResult run_study(const Study& study, const Progress& progress) {
+  const ShardResult whole = run_study_shard(study, Shard{}, progress);
+  // Through the shard record, as merging shards does, so one machine and N shards share every step.
+  return merge_shards({shard_from_json(shard_json(whole), "this run")}, {"this run"});
+}
+
+}  // namespace rc

@@ -1,0 +1,228 @@
+#include "host_sw/studies/timing_study.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+#include <thread>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "host_sw/platform/software_system.h"
+#include "host_sw/studies/child_guard.h"
+#include "host_sw/visibility/visibility_factory.h"
+
+namespace rc {
+
+RecordedRun record_functional_run(const Scene& scene, const SolverOptions& solver, const std::string& backend, int bits,
+                                  int threads) {
+  RecordedRun run;
+  auto answer = make_functional_answer(backend, bits, threads);
+  RecordingVisibility recorder(*answer, run.recording);
+  ProgressiveRadiosity radiosity(scene, recorder, solver);
+  radiosity.on_progress([&](const StepProgress& p) {
+    if (run.convergence_step == 0 && p.convergence_reached >= solver.convergence) run.convergence_step = p.step;
+  });
+  run.result = radiosity.run();
+  return run;
+}
+
+namespace {
+
+// One case's system; every case replays its recording's work (work_replay.h).
+struct CaseSystem {
+  std::unique_ptr<SoftwareSystem> software;
+  std::unique_ptr<BoardSystem> board;
+
+  bool finished() const { return software ? software->finished() : board->finished(); }
+};
+
+bool elaborate_check(const TimingCase& c) {
+  if (c.scene == nullptr || c.recording == nullptr) throw std::invalid_argument("timing case '" + c.label + "' has no scene or recording");
+  if (c.solver.fixed_steps <= 0) throw std::invalid_argument("timing case '" + c.label + "' needs a fixed step count");
+  return true;
+}
+
+CaseSystem elaborate(const TimingCase& c, std::size_t index) {
+  elaborate_check(c);
+  CaseSystem s;
+  const std::string name = "case" + std::to_string(index);
+  if (c.software) {
+    s.software = std::make_unique<SoftwareSystem>(name.c_str(), *c.scene, c.solver, *c.recording,
+                                                  c.host_profile ? *c.host_profile : find_host_profile(c.host));
+  } else {
+    BoardSetup setup = make_board_setup(c.board);
+    setup.stop_when_done = false;
+    setup.replay = c.recording;
+    s.board = std::make_unique<BoardSystem>(name.c_str(), *c.scene, c.solver, setup);
+  }
+  return s;
+}
+
+}  // namespace
+
+namespace {
+
+// Elaborates `cases` (indices into all) side by side and runs them to their end in this process.
+std::vector<TimingOutcome> run_here(const std::vector<TimingCase>& all, const std::vector<std::size_t>& cases) {
+  static bool used = false;
+  if (used) throw std::logic_error("run_timing_study may be called once per process (SystemC elaborates once)");
+  used = true;
+  std::vector<CaseSystem> systems;
+  systems.reserve(cases.size());
+  for (std::size_t i : cases) systems.push_back(elaborate(all[i], i));
+  sc_core::sc_start();  // every host thread runs to its end; nothing else keeps time going
+  std::vector<TimingOutcome> out;
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    CaseSystem& s = systems[k];
+    const TimingCase& c = all[cases[k]];
+    TimingOutcome o;
+    o.label = c.label;
+    if (s.software) {
+      s.software->rethrow_if_failed();
+      o.report = s.software->report();
+      o.steps = s.software->result().steps;
+    } else {
+      s.board->rethrow_if_failed();
+      o.report = s.board->report();
+      o.steps = s.board->result().steps;
+    }
+    if (!s.finished()) throw std::logic_error("timing case '" + c.label + "' did not finish");
+    o.simulated_seconds = o.report.simulated_seconds;
+    out.push_back(std::move(o));
+  }
+  return out;
+}
+
+// Cases dealt to `shards` processes, largest first onto the least loaded (a case's cost is about
+// its simulated steps), each shard in case order.
+std::vector<std::vector<std::size_t>> deal(const std::vector<TimingCase>& cases, unsigned shards) {
+  std::vector<std::size_t> order(cases.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return cases[a].solver.fixed_steps > cases[b].solver.fixed_steps; });
+  std::vector<std::vector<std::size_t>> out(shards);
+  std::vector<double> load(shards, 0);
+  for (std::size_t i : order) {
+    const std::size_t s = static_cast<std::size_t>(std::min_element(load.begin(), load.end()) - load.begin());
+    out[s].push_back(i);
+    load[s] += cases[i].solver.fixed_steps;
+  }
+  for (auto& shard : out) std::sort(shard.begin(), shard.end());
+  return out;
+}
+
+// Between the study's processes (run_report.h's codec for the report).
+nlohmann::json to_message(const TimingOutcome& o) {
+  return {{"label", o.label}, {"steps", o.steps}, {"report", encode(o.report)}};
+}
+
+TimingOutcome from_message(const nlohmann::json& j) {
+  TimingOutcome o;
+  o.label = j.at("label").get<std::string>();
+  o.steps = j.at("steps").get<int>();
+  o.report = decode(j.at("report").get<std::string>());
+  o.simulated_seconds = o.report.simulated_seconds;
+  return o;
+}
+
+// A child process: runs its shard and writes one JSON document (outcomes or an error) to `fd`.
+[[noreturn]] void run_child(const std::vector<TimingCase>& cases, const std::vector<std::size_t>& shard, int fd) {
+  nlohmann::json answer;
+  try {
+    nlohmann::json list = nlohmann::json::array();
+    for (const TimingOutcome& o : run_here(cases, shard)) list.push_back(to_message(o));
+    answer["outcomes"] = std::move(list);
+  } catch (const std::exception& e) {
+    answer["error"] = e.what();
+  }
+  const std::string text = answer.dump();
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n <= 0) _exit(3);
+    done += static_cast<std::size_t>(n);
+  }
+  ::close(fd);
+  _exit(0);  // no atexit handlers, no stdio flush: the parent owns those
+}
+
+std::string read_all(int fd) {
+  std::string text;
+  char buffer[65536];
+  for (ssize_t n; (n = ::read(fd, buffer, sizeof buffer)) != 0;) {
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      throw std::runtime_error(std::string("timing study: reading a worker's results failed: ") + std::strerror(errno));
+    }
+    text.append(buffer, static_cast<std::size_t>(n));
+  }
+  return text;
+}
+
+}  // namespace
+
+unsigned default_study_processes() { return std::max(1u, std::min(std::thread::hardware_concurrency(), 8u)); }
+
+std::vector<TimingOutcome> run_timing_study(const std::vector<TimingCase>& cases, unsigned processes) {
+  for (std::size_t i = 0; i < cases.size(); ++i) {  // bad cases fail here, before any process starts
+    if (cases[i].scene == nullptr || cases[i].recording == nullptr || cases[i].solver.fixed_steps <= 0)
+      (void)elaborate_check(cases[i]);
+  }
+  const unsigned shards = static_cast<unsigned>(std::max<std::size_t>(1, std::min<std::size_t>(processes, cases.size())));
+  const std::vector<std::vector<std::size_t>> dealt = deal(cases, shards);
+  std::vector<pid_t> children;
+  std::vector<int> pipes;
+  std::fflush(nullptr);  // nothing buffered may be written twice
+  const pid_t parent = ::getpid();
+  for (unsigned s = 1; s < shards; ++s) {
+    int fds[2];
+    if (::pipe(fds) != 0) throw std::runtime_error(std::string("timing study: pipe: ") + std::strerror(errno));
+    const pid_t pid = ::fork();
+    if (pid < 0) throw std::runtime_error(std::string("timing study: fork: ") + std::strerror(errno));
+    if (pid == 0) {
+      die_with_parent(parent, SIGKILL);  // a worker has nothing to clean up; it must not outlive the study
+      ::close(fds[0]);
+      for (int fd : pipes) ::close(fd);
+      run_child(cases, dealt[s], fds[1]);
+    }
+    ::close(fds[1]);
+    register_child(pid);  // ended with this process if it is interrupted
+    children.push_back(pid);
+    pipes.push_back(fds[0]);
+  }
+  std::vector<TimingOutcome> out(cases.size());
+  std::exception_ptr error;
+  try {
+    std::vector<TimingOutcome> mine = run_here(cases, dealt[0]);
+    for (std::size_t k = 0; k < mine.size(); ++k) out[dealt[0][k]] = std::move(mine[k]);
+  } catch (...) {
+    error = std::current_exception();
+  }
+  std::string child_error;
+  for (std::size_t c = 0; c < children.size(); ++c) {
+    const std::string text = read_all(pipes[c]);
+    ::close(pipes[c]);
+    int status = 0;
+    ::waitpid(children[c], &status, 0);
+    unregister_child(children[c]);
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || text.empty()) {
+      child_error = "timing study: worker process " + std::to_string(c + 1) + " died (status " + std::to_string(status) + ")";
+      continue;
+    }
+    const nlohmann::json answer = nlohmann::json::parse(text);
+    if (answer.contains("error")) {
+      child_error = answer["error"].get<std::string>();
+      continue;
+    }
+    const auto& list = answer.at("outcomes");
+    for (std::size_t k = 0; k < list.size(); ++k) out[dealt[c + 1][k]] = from_message(list[k]);
+  }
+  if (error) std::rethrow_exception(error);
+  if (!child_error.empty()) throw std::runtime_error(child_error);
+  return out;
+}
+
+}  // namespace rc

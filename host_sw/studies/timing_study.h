@@ -1,0 +1,66 @@
+// Many timing configurations of one functional answer, in one simulation. Visibility is computed
+// once per scene and width (a recording); every configuration (software, lanes, banks, device,
+// concurrency, host profile) replays it through its own SystemC system. SystemC elaborates once per
+// process, so all systems are elaborated side by side and run by a single sc_start; they share
+// nothing, so each one's simulated time is what it would be alone.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "host_sw/platform/board_run.h"
+#include "host_sw/radiosity/radiosity.h"
+#include "host_sw/visibility/visibility_recording.h"
+#include "scenes/scene.h"
+
+namespace rc {
+
+// A functional run whose answers are kept for replay.
+struct RecordedRun {
+  SolverResult result;
+  VisibilityRecording recording;
+  int convergence_step = 0;  // first step at which the convergence target was met (0: not within the run)
+};
+
+// Solves with a software backend ("fixed", "fast", ...) at `bits`, recording every step.
+// `threads`: the backend's own threads (fast only; 0 = every core).
+RecordedRun record_functional_run(const Scene& scene, const SolverOptions& solver, const std::string& backend, int bits,
+                                  int threads = 0);
+
+struct TimingCase {
+  std::string label;
+  const Scene* scene = nullptr;
+  SolverOptions solver;
+  const VisibilityRecording* recording = nullptr;
+  bool software = false;                // the software-only implementation (host CPU tests every segment)
+  BoardRunOptions board;                // the board implementation (its oracle is the replay)
+  std::string host = "athlon-mp-2600";  // host profile of a software case (board cases: board.host)
+  std::optional<HostProfile> host_profile;  // when set, a software case's profile instead of `host`
+};
+
+unsigned default_study_processes();  // the machine's cores, at most 8
+
+struct TimingOutcome {
+  std::string label;
+  double simulated_seconds = 0;
+  int steps = 0;
+  RunReport report;  // the system's report (to_json: rc2000sim.board/1 or rc2000sim.software/1)
+};
+
+// Throws std::invalid_argument for a bad case (before elaboration) and rethrows a system's error.
+// May be called once per process, before anything else elaborates SystemC.
+//
+// With processes > 1 the cases are dealt to that many processes (this one and forked children,
+// each elaborating its own share; a SystemC kernel is single-threaded and elaborates once per
+// process). Cases share nothing, so every outcome is what it would be in one process: the
+// children send their reports back as JSON, which keeps every number exactly, and the result is
+// in case order whatever the deal (test TimingStudy.ProcessesChangeNoOutcome).
+std::vector<TimingOutcome> run_timing_study(const std::vector<TimingCase>& cases,
+                                            unsigned processes = default_study_processes());
+
+}  // namespace rc

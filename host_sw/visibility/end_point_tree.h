@@ -1,0 +1,94 @@
+// The end points of an EndPointCatalogue in an eight-wide bounding-volume tree, so that a face's
+// hit region (pipeline/hit_region.h) visits only the end points near its shadow frustum.
+//
+// Built top-down with the surface area heuristic (binned) when the catalogue gains points (in a
+// radiosity run: during the first few steps only); each node splits its points until it has
+// eight parts, tested at once by HitRegion::may_hit_boxes. The tree only ever discards boxes the
+// region proves cannot hold a hit, so it changes which tests run, never an answer.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "host_sw/visibility/end_point_catalogue.h"
+#include "pipeline/hit_region.h"
+
+namespace rc {
+
+class EndPointTree {
+ public:
+  // Indexes every point of the catalogue.
+  void build(const EndPointCatalogue& points);
+
+  // Notes, per node, which children hold segments of the current batch and the one face all
+  // those segments end on, if there is one (end_faces: the batch's, by segment). O(nodes); call
+  // after every EndPointCatalogue::assign and build.
+  void mark_batch(const EndPointCatalogue& points, const int* end_faces);
+
+  // Calls point(id) for every catalogue point with segments in the current batch whose box the
+  // region may hit (a superset of such points inside the region), skipping subtrees whose
+  // segments all end on `face` (they never ask about their own face), until point() returns
+  // false. Visits nothing if the region is empty.
+  template <class Point>
+  void query(const pipeline::HitRegion& region, int face, Point&& point) const;
+
+ private:
+  // kWidth children tested at once (HitRegion::may_hit_boxes); a child is an inner node or a
+  // single point, whose box is the point itself rounded outwards to float.
+  static constexpr int kWidth = pipeline::HitRegion::kBoxes;
+  struct alignas(64) Node {
+    float bound[2][3][kWidth];    // [lower, upper][axis][child]
+    std::uint32_t child[kWidth];  // kPoint | point id, or node index
+    unsigned used;                // bit j: child j exists
+    // The current batch (mark_batch): bit j of `active` is set if child j has segments in it;
+    // `face` is the face all of those segments end on, kMixedFaces if several, kNoFace if none.
+    unsigned active;
+    int face;
+  };
+  static constexpr std::uint32_t kPoint = 0x80000000u;
+  // Below this many levels nodes split by the surface area heuristic, deeper ones at the middle
+  // (at most half the points per child), so the depth stays below 32 + 32 for any point set
+  // (fewer than 2^31 points).
+  static constexpr int kSahDepth = 32;
+  static constexpr int kStackSize = (kWidth - 1) * (kSahDepth + 32) + 1;
+  static constexpr int kNoFace = -2, kMixedFaces = -1;
+  struct Box {
+    float lo[3], hi[3];
+  };
+
+  Box build_node(const EndPointCatalogue& points, std::uint32_t begin, std::uint32_t end,
+                 std::uint32_t index, int depth);
+  std::uint32_t split(const EndPointCatalogue& points, std::uint32_t begin, std::uint32_t end);
+
+  std::vector<std::uint32_t> order_;  // point ids, grouped by subtree during the build
+  std::vector<Node> nodes_;
+};
+
+// Always inlined, so that a caller compiled for a wider instruction set (target_clones) runs the
+// box tests on its wider registers.
+template <class Point>
+[[gnu::always_inline]] inline void EndPointTree::query(const pipeline::HitRegion& region, int face,
+                                                       Point&& point) const {
+  if (nodes_.empty() || region.empty()) return;
+  // A node pops one entry and pushes at most kWidth: depth d needs (kWidth - 1) d + 1 entries.
+  std::uint32_t stack[kStackSize];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    if (node.active == 0 || node.face == face) continue;  // nothing in the batch asks about face
+    unsigned hits = region.may_hit_boxes(node.bound) & node.active;
+    while (hits) {
+      const int j = __builtin_ctz(hits);
+      hits &= hits - 1;
+      const std::uint32_t c = node.child[j];
+      if (c & kPoint) {
+        if (!point(c & ~kPoint)) return;
+      } else {
+        stack[top++] = c;
+      }
+    }
+  }
+}
+
+}  // namespace rc

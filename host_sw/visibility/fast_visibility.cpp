@@ -1,0 +1,180 @@
+#include "host_sw/visibility/fast_visibility.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "pipeline/fixed_mt.h"
+#include "pipeline/hit_region.h"
+#include "pipeline/mt_core.h"
+
+namespace rc {
+
+namespace {
+
+// Faces a worker claims at a time: enough to amortise the atomic, few enough to balance a step
+// whose faces cost very different amounts.
+constexpr std::size_t kFacesPerClaim = 8;
+
+// A face whose hit region holds more than 1/kDenseShare of the batch's segments runs the
+// streaming kernel (16 or 8 lanes) over all of them: cheaper than one scalar test per candidate.
+constexpr std::size_t kDenseShare = 8;
+
+}  // namespace
+
+// test_face is compiled for AVX-512 and AVX2 as well as the baseline, and the best the CPU runs
+// is picked when the program loads: the end-point tree's eight-box test (always inlined into it)
+// then runs on one vector register. Integer and rounding-safe code only, so every variant gives
+// the same answers (docs/fast-visibility.md, "Floating point").
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define RC_FAST_TARGETS __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#else
+#define RC_FAST_TARGETS
+#endif
+
+FastFixedVisibility::FastFixedVisibility(pipeline::FracBits frac_bits, int threads)
+    : bits_(frac_bits), pool_(threads) {
+  outputs_.resize(static_cast<std::size_t>(pool_.size()));
+}
+
+FastFixedVisibility::~FastFixedVisibility() { pool_.finish(); }
+
+void FastFixedVisibility::load_triangles(const std::vector<Triangle>& faces) {
+  finish_batch();
+  points_.clear();
+  faces_.clear();
+  faces_.reserve(faces.size());
+  for (const Triangle& t : faces) faces_.push_back(pipeline::make_face_record(t, bits_));
+}
+
+// FixedPointVisibility's count: for every face outside the source's sheet, every segment not ending
+// on its sheet.
+std::uint64_t FastFixedVisibility::count_brute_force_tests(const SegmentBatch& batch) const {
+  const FaceSheets& sheets = this->sheets();
+  const int faces = static_cast<int>(faces_.size());
+  // Faces of sheet [first, end) inside [0, faces).
+  const auto faces_of = [&](int f) -> std::uint64_t {
+    const int first = std::max(sheets.first(f), 0), end = std::min(sheets.end(f), faces);
+    return end > first ? static_cast<std::uint64_t>(end - first) : 0;
+  };
+  std::uint64_t ending_on_tested_faces = 0;
+  for (int f : batch.end_faces) ending_on_tested_faces += sheets.same(f, batch.source_face) ? 0 : faces_of(f);
+  const std::uint64_t tested_faces = faces_.size() - faces_of(batch.source_face);
+  return tested_faces * batch.size() - ending_on_tested_faces;
+}
+
+void FastFixedVisibility::submit(const SegmentBatch& batch) {
+  finish_batch();
+  const std::size_t n = batch.size();
+  batch.check();
+  start_ = pipeline::quantize_point(batch.start, bits_);
+  if (points_.assign(batch, bits_)) tree_.build(points_);
+  // Segments are matched with faces by sheet (the own-surface rule): the end point tree notes each
+  // node's one end sheet, named by its first face, exactly as it would note one end face.
+  end_sheets_.resize(n);
+  for (std::size_t s = 0; s < n; ++s) end_sheets_[s] = sheets().first(batch.end_faces[s]);
+  tree_.mark_batch(points_, end_sheets_.data());
+  source_sheet_ = sheets().first(batch.source_face);
+  segments_ = n;
+  end_x_.resize(n);
+  end_y_.resize(n);
+  end_z_.resize(n);
+  for (std::size_t s = 0; s < n; ++s) {
+    const pipeline::FixedVec3& e = points_.position(points_.point_of(static_cast<std::uint32_t>(s)));
+    end_x_[s] = e.x;
+    end_y_[s] = e.y;
+    end_z_[s] = e.z;
+  }
+  brute_force_tests_ += count_brute_force_tests(batch);
+  for (WorkerOutput& out : outputs_) {
+    out.blocked.assign(n, 0);
+    out.tests = out.dense_faces = 0;
+  }
+  next_face_.value.store(0, std::memory_order_relaxed);
+  pending_ = true;
+  pool_.start([this](int worker) { run_worker(worker); });
+}
+
+void FastFixedVisibility::collect(std::vector<std::uint8_t>& blocked) {
+  finish_batch();
+  blocked = blocked_;
+}
+
+// Waits for the workers and ORs their flags together.
+void FastFixedVisibility::finish_batch() {
+  if (!pending_) return;
+  pool_.finish();
+  pending_ = false;
+  blocked_.assign(segments_, 0);
+  for (const WorkerOutput& out : outputs_) {
+    for (std::size_t s = 0; s < segments_; ++s) blocked_[s] |= out.blocked[s];
+    tests_ += out.tests;
+    dense_faces_ += out.dense_faces;
+  }
+}
+
+void FastFixedVisibility::run_worker(int worker) {
+  WorkerOutput& out = outputs_[static_cast<std::size_t>(worker)];
+  for (;;) {
+    const std::size_t first = next_face_.value.fetch_add(kFacesPerClaim, std::memory_order_relaxed);
+    if (first >= faces_.size()) return;
+    const std::size_t last = std::min(first + kFacesPerClaim, faces_.size());
+    std::uint64_t tests = 0;
+    for (std::size_t f = first; f < last; ++f) tests += test_face(static_cast<int>(f), out);
+    out.tests += tests;
+  }
+}
+
+// One face against the end points its hit region may contain, in the pipeline's arithmetic.
+// Returns the number of tests run.
+RC_FAST_TARGETS std::uint64_t FastFixedVisibility::test_face(int face, WorkerOutput& out) const {
+  const int sheet = sheets().first(face);
+  if (sheet == source_sheet_) return 0;  // every segment's own surface
+  const pipeline::FaceRecord& record = faces_[static_cast<std::size_t>(face)];
+  const pipeline::HitRegion region(record, start_, bits_);
+  // Candidates: end points inside the region with a segment that does not end on this face's sheet.
+  std::vector<std::uint32_t>& candidates = out.candidates;
+  candidates.clear();
+  const std::size_t dense = segments_ / kDenseShare;
+  bool too_many = false;
+  tree_.query(region, sheet, [&](std::uint32_t point) {
+    std::uint32_t s = points_.first_segment(point);
+    while (s != EndPointCatalogue::kNone && end_sheets_[s] == sheet) s = points_.next_segment(s);
+    if (s == EndPointCatalogue::kNone) return true;
+    const double* p = points_.coords(point);
+    if (!region.may_hit(p[0], p[1], p[2])) return true;
+    candidates.push_back(point);
+    too_many = candidates.size() > dense;
+    return !too_many;
+  });
+  if (too_many) return test_every_segment(face, out);
+  for (const std::uint32_t point : candidates) {
+    if (!pipeline::pipeline_hits(record.v0, record.edge1, record.edge2, start_,
+                                 points_.position(point), bits_)) {
+      continue;
+    }
+    for (std::uint32_t s = points_.first_segment(point); s != EndPointCatalogue::kNone;
+         s = points_.next_segment(s)) {
+      if (end_sheets_[s] != sheet) out.blocked[s] = 1;
+    }
+  }
+  return candidates.size();
+}
+
+// The brute force's way for one face: the streaming kernel over every segment of the batch,
+// those ending on the face's sheet masked.
+std::uint64_t FastFixedVisibility::test_every_segment(int face, WorkerOutput& out) const {
+  ++out.dense_faces;
+  out.skip.resize(segments_);
+  std::size_t own = 0;
+  const int sheet = sheets().first(face);
+  for (std::size_t s = 0; s < segments_; ++s) {
+    out.skip[s] = end_sheets_[s] == sheet;
+    own += out.skip[s];
+  }
+  pipeline::occlude_face(faces_[static_cast<std::size_t>(face)], start_, end_x_.data(), end_y_.data(),
+                         end_z_.data(), segments_, bits_, out.blocked.data(), own ? out.skip.data() : nullptr);
+  return segments_ - own;
+}
+
+}  // namespace rc

@@ -1,0 +1,103 @@
+// Visibility on the CPU with the hardware's bit-exact fixed-point arithmetic, answering exactly
+// what FixedPointVisibility (every face against every segment) answers, bit for bit, at every
+// width 7..31, while running only the tests that could come out as a hit.
+//
+// Per batch (one shooting step), face by face as the hardware streams them:
+//   * the source face is skipped (every segment's own face), and so is every face whose t is 0
+//     for this start: the pipeline cannot report a hit on it for any end point;
+//   * for the other faces, pipeline::HitRegion gives four half-spaces that contain every end
+//     point the pipeline could report as a hit (the face's shadow frustum widened by the proven
+//     truncation error); a bounding-volume tree (EndPointTree) over every distinct end point seen
+//     so far (EndPointCatalogue: built during a run's first steps, not per step) is queried with
+//     it, and only the end points inside run the pipeline's own kernel, once per end point, for
+//     every segment of the batch ending there;
+//   * a face whose region holds more than an eighth of the batch (narrow widths, where the
+//     truncation error is a large part of the scene, or a face close to the start) runs the
+//     vectorised streaming kernel over every segment instead, exactly as the brute force does.
+// Nothing a region excludes can be a hit, so the blocked flags are those of the brute force
+// (docs/fast-visibility.md has the proof; tests/fast checks it on random, adversarial and
+// Cornell scenes).
+//
+// Faces are shared among a pool of threads created once; every thread ORs its hits into its own
+// flags, merged at collect(). OR is order-free and the set of tests run does not depend on who
+// runs them, so flags and counters are identical for every thread count. submit() starts the
+// helper threads and returns, so they work while the solver computes form factors; collect()
+// joins in and waits.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <vector>
+
+#include "host_sw/visibility/end_point_catalogue.h"
+#include "host_sw/visibility/end_point_tree.h"
+#include "host_sw/radiosity/visibility.h"
+#include "host_sw/radiosity/worker_pool.h"
+#include "pipeline/fixed_format.h"
+
+namespace rc {
+
+class FastFixedVisibility : public VisibilityBackend {
+ public:
+  // Throws std::invalid_argument unless 7 <= frac_bits <= 31 and threads >= 0.
+  // threads = 0: one per hardware thread. The threads are created here, once.
+  explicit FastFixedVisibility(pipeline::FracBits frac_bits, int threads = 0);
+  ~FastFixedVisibility() override;
+
+  std::string name() const override { return "fast"; }
+  void load_triangles(const std::vector<Triangle>& faces) override;
+  // Throws as FixedPointVisibility::submit does: std::invalid_argument if batch.end_faces does
+  // not match batch.ends, std::out_of_range if a point lies outside [0, 1)^3.
+  void submit(const SegmentBatch& batch) override;
+  void collect(std::vector<std::uint8_t>& blocked) override;
+
+  // Segment-face tests actually run through the pipeline's kernel so far (one per end point and
+  // face: segments of one batch sharing an end point share the test).
+  std::uint64_t tests_performed() const override { return tests_; }
+  // What FixedPointVisibility would have run on the same batches: every segment-face pair
+  // except own surfaces. tests_performed() / brute_force_tests() is the share culling left.
+  std::uint64_t brute_force_tests() const { return brute_force_tests_; }
+  // Face-batch pairs that ran the streaming kernel over every segment (dense hit regions).
+  std::uint64_t dense_faces() const { return dense_faces_; }
+
+  int frac_bits() const { return bits_; }
+  int threads() const { return pool_.size(); }
+
+ private:
+  // One cache line each, so that workers never write to a line another one uses.
+  struct alignas(64) WorkerOutput {
+    std::vector<std::uint8_t> blocked;  // indexed by batch segment
+    std::uint64_t tests = 0, dense_faces = 0;
+    // Scratch for one face: its candidate end points, and the own-face mask of a dense face.
+    std::vector<std::uint32_t> candidates;
+    std::vector<std::uint8_t> skip;
+  };
+
+  void run_worker(int worker);
+  std::uint64_t test_face(int face, WorkerOutput& out) const;
+  std::uint64_t test_every_segment(int face, WorkerOutput& out) const;
+  void finish_batch();
+  std::uint64_t count_brute_force_tests(const SegmentBatch& batch) const;
+
+  int bits_;
+  std::vector<pipeline::FaceRecord> faces_;
+  // The current batch.
+  pipeline::FixedVec3 start_{};
+  int source_sheet_ = -1;           // the source face's sheet (its first face)
+  std::size_t segments_ = 0;
+  std::vector<int> end_sheets_;      // per segment: its end face's sheet (first face)
+  std::vector<std::int64_t> end_x_, end_y_, end_z_;  // quantised, in batch order (dense faces)
+  EndPointCatalogue points_;
+  EndPointTree tree_;
+  struct alignas(64) FaceCounter {  // a cache line of its own: every worker writes it
+    std::atomic<std::size_t> value{0};
+  };
+  FaceCounter next_face_;
+  std::vector<WorkerOutput> outputs_;  // one per worker
+  std::vector<std::uint8_t> blocked_;
+  bool pending_ = false;               // submitted, not yet collected
+  std::uint64_t tests_ = 0, brute_force_tests_ = 0, dense_faces_ = 0;
+  WorkerPool pool_;                    // last: its threads stop before the members above go
+};
+
+}  // namespace rc

@@ -1,0 +1,39 @@
+#include "host_sw/visibility/visibility_factory.h"
+
+#include <stdexcept>
+
+#include "host_sw/visibility/fast_visibility.h"
+#include "host_sw/visibility/fixed_visibility.h"
+#include "host_sw/visibility/float_pipeline_visibility.h"
+#include "host_sw/radiosity/float_visibility.h"
+#include "host_sw/visibility/needed_only_visibility.h"
+#include "host_sw/visibility/shooter_memo_visibility.h"
+
+namespace rc {
+
+std::unique_ptr<VisibilityBackend> make_software_visibility(SoftwareVisibility kind, int bits, int threads) {
+  switch (kind) {
+    case SoftwareVisibility::float_double: return std::make_unique<FloatVisibility>();
+    case SoftwareVisibility::fixed: return std::make_unique<FixedPointVisibility>(bits);
+    case SoftwareVisibility::fast: return std::make_unique<FastFixedVisibility>(bits, threads);
+  }
+  throw std::logic_error("make_software_visibility: not a SoftwareVisibility");
+}
+
+std::unique_ptr<VisibilityBackend> make_software_visibility(const std::string& name, int bits, int threads) {
+  if (pipeline::names_float_format(name)) {
+    return std::make_unique<FloatPipelineVisibility>(pipeline::parse_float_format(name));
+  }
+  try {
+    return make_software_visibility(parse_choice<SoftwareVisibility>(name), bits, threads);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string(e.what()) + " or float:E,M");
+  }
+}
+
+std::unique_ptr<VisibilityBackend> make_functional_answer(const std::string& name, int bits, int threads) {
+  return std::make_unique<ShooterMemoVisibility>(
+      std::make_unique<NeededOnlyVisibility>(make_software_visibility(name, bits, threads)));
+}
+
+}  // namespace rc

@@ -1,0 +1,82 @@
+#include "host_sw/visibility/visibility_recording.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace rc {
+
+std::uint64_t brute_force_tests(const SegmentBatch& batch, std::size_t faces, const FaceSheets& sheets) {
+  std::uint64_t tests = 0;
+  for (std::size_t s = 0; s < batch.size(); ++s) {
+    const std::size_t own = own_surface_faces(sheets, batch.source_face, batch.end_faces[s]);
+    tests += faces > own ? faces - own : 0;
+  }
+  return tests;
+}
+
+void VisibilityRecording::add_step(const std::vector<std::uint8_t>& blocked, const std::vector<std::uint8_t>& needed,
+                                   int source_face, std::uint64_t brute_force_tests) {
+  if (!needed.empty() && needed.size() != blocked.size()) {
+    throw std::invalid_argument("a step has " + std::to_string(blocked.size()) + " answers but " +
+                                std::to_string(needed.size()) + " needed flags");
+  }
+  offsets_.push_back(total_);
+  sizes_.push_back(static_cast<std::uint32_t>(blocked.size()));
+  bits_.resize((total_ + blocked.size() + 7) / 8, 0);
+  std::uint32_t needed_count = 0, blocked_count = 0;
+  for (std::size_t i = 0; i < blocked.size(); ++i) {
+    if (!needed.empty() && !needed[i]) continue;
+    ++needed_count;
+    if (!blocked[i]) continue;
+    ++blocked_count;
+    bits_[(total_ + i) / 8] |= std::uint8_t(1u << ((total_ + i) % 8));
+  }
+  needed_.push_back(needed_count);
+  blocked_.push_back(blocked_count);
+  source_faces_.push_back(source_face);
+  tests_.push_back(brute_force_tests);
+  total_ += blocked.size();
+}
+
+void VisibilityRecording::step_flags(std::size_t step, std::vector<std::uint8_t>& blocked) const {
+  const std::uint64_t first = offsets_.at(step);
+  blocked.resize(sizes_[step]);
+  for (std::size_t i = 0; i < blocked.size(); ++i) blocked[i] = (bits_[(first + i) / 8] >> ((first + i) % 8)) & 1u;
+}
+
+void RecordingVisibility::load_triangles(const std::vector<Triangle>& faces) {
+  faces_ = faces.size();
+  answer_.load_faces(faces, sheets());
+}
+
+void RecordingVisibility::submit(const SegmentBatch& batch) {
+  source_face_ = batch.source_face;
+  needed_ = batch.needed;
+  tests_ = brute_force_tests(batch, faces_, sheets());
+  answer_.submit(batch);
+}
+
+void RecordingVisibility::collect(std::vector<std::uint8_t>& blocked) {
+  answer_.collect(blocked);
+  recording_.add_step(blocked, needed_, source_face_, tests_);
+}
+
+void ReplayVisibility::load_triangles(const std::vector<Triangle>& faces) {
+  faces_ = faces.size();
+  next_step_ = 0;
+}
+
+void ReplayVisibility::submit(const SegmentBatch& batch) {
+  if (next_step_ >= recording_.steps() || recording_.segments(next_step_) != batch.size()) {
+    throw std::logic_error("replay diverged at step " + std::to_string(next_step_ + 1) + ": the batch has " +
+                           std::to_string(batch.size()) + " segments, the recording " +
+                           (next_step_ < recording_.steps() ? std::to_string(recording_.segments(next_step_))
+                                                            : std::string("has no such step")));
+  }
+  recording_.step_flags(next_step_++, blocked_);
+  tests_ += brute_force_tests(batch, faces_, sheets());
+}
+
+void ReplayVisibility::collect(std::vector<std::uint8_t>& blocked) { blocked = blocked_; }
+
+}  // namespace rc

@@ -1,0 +1,71 @@
+// A choice named in text (a visibility backend, a card split, a form factor, ...) is an enum inside
+// the program; its names live in one list, beside the enum, and are parsed and printed here only, so
+// adding a choice is one edit to that list (and the switch the compiler then asks for).
+//
+// Beside each choice enum E, in enum order:
+//   template <> struct ChoiceNames<E> {
+//     static constexpr std::string_view what = "card split";                  // for error messages
+//     static constexpr std::array<std::string_view, 2> names = {"rays", "faces"};
+//   };
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rc {
+
+template <class E>
+struct ChoiceNames;
+
+// The name of `value` (its enum order in ChoiceNames<E>::names).
+template <class E>
+std::string choice_name(E value) {
+  return std::string(ChoiceNames<E>::names.at(static_cast<std::size_t>(value)));
+}
+
+// Every name, in enum order: what a command-line option accepts.
+template <class E>
+std::vector<std::string> choice_names() {
+  return {ChoiceNames<E>::names.begin(), ChoiceNames<E>::names.end()};
+}
+
+// "a, b, c": the names, for messages and help texts.
+template <class E>
+std::string choice_name_list() {
+  std::string list;
+  for (std::string_view name : ChoiceNames<E>::names) list += (list.empty() ? "" : ", ") + std::string(name);
+  return list;
+}
+
+// The choice named `text`; std::invalid_argument naming the text and every name otherwise.
+template <class E>
+E parse_choice(std::string_view text) {
+  const auto& names = ChoiceNames<E>::names;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (names[i] == text) return static_cast<E>(i);
+  }
+  throw std::invalid_argument(std::string(ChoiceNames<E>::what) + " '" + std::string(text) +
+                              "' is not one of: " + choice_name_list<E>());
+}
+
+// Each of `texts` parsed (parse_choice), in order.
+template <class E>
+std::vector<E> parse_choices(const std::vector<std::string>& texts) {
+  std::vector<E> values;
+  for (const std::string& text : texts) values.push_back(parse_choice<E>(text));
+  return values;
+}
+
+// The names of `values`, in order.
+template <class E>
+std::vector<std::string> choice_name_vector(const std::vector<E>& values) {
+  std::vector<std::string> names;
+  for (E value : values) names.push_back(choice_name(value));
+  return names;
+}
+
+}  // namespace rc

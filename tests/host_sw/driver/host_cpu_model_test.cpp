@@ -1,0 +1,53 @@
+// HostCpuModel and host profiles: the driver model is read strictly (a bad choice names the field
+// and the allowed values), charges become exactly count x cost, and the second processor's form
+// factors run beside the first.
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+
+#include "host_sw/driver/host_cpu_model.h"
+
+namespace rc {
+namespace {
+
+std::string error_of(const nlohmann::ordered_json& profile) {
+  try {
+    host_profile_from_json(profile, "test.json");
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(HostProfile, DriverModelChoicesAreReadStrictly) {
+  const HostProfile base = find_host_profile("athlon-mp-2600");
+  EXPECT_EQ(base.driver_model.name(), "per_segment/dma/once/form_factors");
+  nlohmann::ordered_json bad = base.json;
+  bad["driver_model"]["transfer"]["value"] = "pcie";
+  EXPECT_EQ(error_of(bad), "test.json: driver_model.transfer.value: 'pcie' is not one of dma, pio");
+  bad = base.json;
+  bad["driver_model"]["face_upload"]["source"] = "";
+  EXPECT_NE(error_of(bad).find("driver_model.face_upload.source"), std::string::npos);
+  bad = base.json;
+  bad["driver_model"].erase("overlap");
+  EXPECT_EQ(error_of(bad), "test.json: driver_model.overlap.value: missing");
+  bad = base.json;
+  bad["driver_seconds"].erase("word_store");
+  EXPECT_NE(error_of(bad).find("driver_seconds.word_store"), std::string::npos);
+}
+
+TEST(HostProfile, WithDriverModelRoundTrips) {
+  const HostProfile base = find_host_profile("athlon-mp-2600");
+  DriverModel m = base.driver_model;
+  m.cost_unit = DriverModel::CostUnit::PerWord;
+  m.transfer = DriverModel::Transfer::Pio;
+  m.face_upload = DriverModel::FaceUpload::EveryPass;
+  m.overlap = DriverModel::Overlap::DualCpu;
+  const HostProfile back = host_profile_from_json(with_driver_model(base.json, m, "test"), "test.json");
+  EXPECT_TRUE(back.driver_model == m);
+  EXPECT_EQ(back.driver_model.name(), "per_word/pio/every_pass/dual_cpu");
+}
+
+}  // namespace
+}  // namespace rc

@@ -1,0 +1,93 @@
+// EndPointCatalogue keeps end points and their segments straight across batches, and
+// EndPointTree::query visits every end point a hit region may contain.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "tests/host_sw/visibility/fast_test_support.h"
+#include "host_sw/visibility/end_point_catalogue.h"
+#include "host_sw/visibility/end_point_tree.h"
+#include "pipeline/hit_region.h"
+
+namespace rc {
+namespace {
+
+SegmentBatch batch_of(const std::vector<Vec3>& ends, const std::vector<int>& faces) {
+  SegmentBatch b;
+  b.start = {0.5, 0.5, 0.5};
+  b.ends = ends;
+  b.end_faces = faces;
+  return b;
+}
+
+std::vector<std::uint32_t> segments_at(const EndPointCatalogue& c, std::uint32_t id) {
+  std::vector<std::uint32_t> s;
+  for (std::uint32_t k = c.first_segment(id); k != EndPointCatalogue::kNone; k = c.next_segment(k)) s.push_back(k);
+  return s;
+}
+
+TEST(EndPointCatalogue, KeepsIdsAndLinksSegmentsToTheirPoints) {
+  const Vec3 a{0.1, 0.2, 0.3}, b{0.4, 0.5, 0.6}, c{0.7, 0.8, 0.9};
+  EndPointCatalogue cat;
+  EXPECT_TRUE(cat.assign(batch_of({a, b, a}, {1, 2, 3}), 15));  // new points
+  ASSERT_EQ(cat.size(), 2u);
+  EXPECT_EQ(segments_at(cat, 0), (std::vector<std::uint32_t>{0, 2}));
+  EXPECT_EQ(segments_at(cat, 1), (std::vector<std::uint32_t>{1}));
+  EXPECT_EQ(cat.position(1), pipeline::quantize_point(b, 15));
+  EXPECT_FALSE(cat.assign(batch_of({b}, {2}), 15));  // nothing new: a keeps its id, no segments
+  EXPECT_TRUE(segments_at(cat, 0).empty());
+  EXPECT_EQ(segments_at(cat, 1), (std::vector<std::uint32_t>{0}));
+  EXPECT_TRUE(cat.assign(batch_of({c, a}, {5, 6}), 15));
+  ASSERT_EQ(cat.size(), 3u);
+  EXPECT_EQ(segments_at(cat, 2), (std::vector<std::uint32_t>{0}));
+  EXPECT_EQ(segments_at(cat, 0), (std::vector<std::uint32_t>{1}));
+}
+
+TEST(EndPointCatalogue, StartsAfreshWhenMostPointsAreStale) {
+  test::Rng rng(1);
+  std::vector<Vec3> many;
+  for (int i = 0; i < 20000; ++i) many.push_back(rng.point());
+  EndPointCatalogue cat;
+  cat.assign(batch_of(many, std::vector<int>(many.size(), 0)), 20);
+  EXPECT_EQ(cat.size(), many.size());
+  cat.assign(batch_of({many[7]}, {0}), 20);  // 20000 points for a batch of 1: forget them
+  EXPECT_EQ(cat.size(), 1u);
+  EXPECT_EQ(segments_at(cat, 0), (std::vector<std::uint32_t>{0}));
+}
+
+// Every end point inside a random face's exact hit conditions is visited, unless all of its
+// segments end on that very face.
+TEST(EndPointTree, QueryVisitsEveryPointTheRegionMayHold) {
+  for (int bits : {7, 15, 31}) {
+    const test::Workload w = test::random_workload(80, 4, 3000, 0.5, 21 + bits);
+    EndPointCatalogue cat;
+    EndPointTree tree;
+    for (const SegmentBatch& batch : w.batches) {
+      if (cat.assign(batch, bits)) tree.build(cat);
+      tree.mark_batch(cat, batch.end_faces.data());
+      const pipeline::FixedVec3 start = pipeline::quantize_point(batch.start, bits);
+      std::size_t inside = 0;
+      for (int f = 0; f < static_cast<int>(w.faces.size()); ++f) {
+        const pipeline::FaceRecord face = pipeline::make_face_record(w.faces[f], bits);
+        const pipeline::HitRegion region(face, start, bits);
+        const pipeline::ExactHitConditions exact = pipeline::exact_hit_conditions(face, start, bits);
+        std::set<std::uint32_t> visited;
+        tree.query(region, f, [&](std::uint32_t id) {
+          EXPECT_TRUE(visited.insert(id).second) << "twice";
+          return true;
+        });
+        for (std::uint32_t id = 0; id < cat.size(); ++id) {
+          bool asks = false;  // some segment of this batch ends here and not on face f
+          for (std::uint32_t s : segments_at(cat, id)) asks |= batch.end_faces[s] != f;
+          if (!asks || !exact.allows(cat.position(id) - start)) continue;
+          ++inside;
+          EXPECT_EQ(visited.count(id), 1u) << "point " << id << ", face " << f << ", " << bits << " bits";
+        }
+      }
+      EXPECT_GT(inside, 100u) << bits;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace rc

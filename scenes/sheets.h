@@ -7,7 +7,7 @@
 //
 // The faces of a sheet are contiguous (find_sheets orders them so), and a sheet is named by its
 // first face: the sheet of face f is the face range [first(f), end(f)). That is what lets the
-// board's wrapper mask a sheet's rays as one contiguous range (docs/board.md, "Own-surface table").
+// board's wrapper mask a sheet's rays as one contiguous range (docs/board.md, "Own-surface rule in hardware").
 #pragma once
 
 #include <cstddef>

@@ -209,7 +209,7 @@ refused "$work/cal" "one-row.json: variant per_segment/dma/once/form_factors: th
   calibrate --table "$work/one-row.json" --out "$work/cal/host.json" --variants-out "$work/cal/variants.json" --quiet
 grep -q "fit to all 2 runs" "$work/stdout.txt" || fail "calibrate does not print the table's run count"
 # Shards whose rows hold figures no run produces are refused by merge, naming the row and key.
-"$sim" sweep --study "$root/tests/studies/data/small.toml" --shard 0/1 --quiet --out "$work/shards" > /dev/null || fail "a shard failed"
+"$sim" sweep --study "$root/tests/host_sw/studies/data/small.toml" --shard 0/1 --quiet --out "$work/shards" > /dev/null || fail "a shard failed"
 for bad in -1 1e308; do
   python3 - "$work/shards/shard-0-of-1.json" "$work/bad/shard-0-of-1.json" "$bad" <<'PY'
 import json, os, sys

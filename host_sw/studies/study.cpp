@@ -128,12 +128,14 @@ void check_settings_apply(const Study& s) {
 }
 
 nlohmann::ordered_json scene_json(const StudyScene& s) {
-  return {{"name", s.name},
-          {"file", s.source},
-          {"faces", s.options.face_target},
-          {"face_levels", s.options.face_levels},
-          {"patch_levels", s.options.patch_levels},
-          {"patch_size", s.options.patch_size}};
+  nlohmann::ordered_json j = {{"name", s.name},
+                              {"file", s.source},
+                              {"faces", s.options.face_target},
+                              {"face_levels", s.options.face_levels},
+                              {"patch_levels", s.options.patch_levels},
+                              {"patch_size", s.options.patch_size}};
+  if (!s.form_factor.empty()) j["form_factor"] = s.form_factor;  // a form-factor axis only
+  return j;
 }
 
 StudyScene scene_from_json(const nlohmann::ordered_json& j) {
@@ -145,6 +147,8 @@ StudyScene scene_from_json(const nlohmann::ordered_json& j) {
   s.options.face_levels = j.at("face_levels").get<int>();
   s.options.patch_levels = j.at("patch_levels").get<int>();
   s.options.patch_size = j.at("patch_size").get<double>();
+  s.form_factor = j.value("form_factor", std::string());
+  if (!s.form_factor.empty()) (void)parse_form_factor_kind(s.form_factor);
   return s;
 }
 
@@ -220,6 +224,25 @@ void check_study(const Study& s) {
   (void)enumerate_configs(s.axes);  // empty axes and oversized sweeps
   check_profile_values(s);
   check_settings_apply(s);
+}
+
+void expand_form_factors(Study& s, const std::vector<std::string>& form_factors) {
+  for (std::size_t i = 0; i < form_factors.size(); ++i) {
+    (void)parse_form_factor_kind(form_factors[i]);
+    for (std::size_t k = 0; k < i; ++k) {
+      if (form_factors[k] == form_factors[i]) throw std::invalid_argument("form factor '" + form_factors[i] + "' given twice");
+    }
+  }
+  std::vector<StudyScene> expanded;
+  for (const StudyScene& scene : s.scenes) {
+    for (const std::string& ff : form_factors) {
+      StudyScene one = scene;
+      one.name = scene.name + "-" + ff;
+      one.form_factor = ff;
+      expanded.push_back(std::move(one));
+    }
+  }
+  s.scenes = std::move(expanded);
 }
 
 nlohmann::ordered_json study_json(const Study& s) {

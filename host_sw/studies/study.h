@@ -22,6 +22,9 @@ struct StudyScene {
   // The scene file as the study wrote it (relative to the study file) or the command line gave it;
   // empty for the embedded box. Outputs record this, so they do not depend on where a shard ran.
   std::string source;
+  // The form factor of this scene's solves; empty: the study's (Study::form_factor). Set by a
+  // form-factor axis (expand_form_factors), which makes each scene one workload per form factor.
+  std::string form_factor;
 };
 
 struct Study {
@@ -36,6 +39,10 @@ struct Study {
   // The solver's form factor (form_factor_names()). The paper's point rule by default: a sweep
   // replicates the paper's workload (Table 2's steps, every segment sent) on other boards.
   std::string form_factor = "point";
+  // The form factor of `scene`'s solves: its own (a form-factor axis) or the study's.
+  const std::string& form_factor_of(const StudyScene& scene) const {
+    return scene.form_factor.empty() ? form_factor : scene.form_factor;
+  }
   bool full_banks = false;          // false: banks as small as change no pass (compact_bank_capacity)
   SweepAxes axes;
   std::vector<ProfileSetting> fixed;  // applied to every configuration's profiles
@@ -54,6 +61,12 @@ Study study_from_json(const nlohmann::ordered_json& json);
 // Resolves a profile path against the study's first device and first host (profile_setting.h).
 ProfileField resolve_study_field(const std::string& path, const std::vector<std::string>& devices,
                                  const std::vector<std::string>& hosts);
+
+// A form-factor axis (docs/studies.md, "[axes] form_factors"): every scene becomes one scene per form
+// factor, named "<scene>-<form factor>" (a form factor changes the workload itself: the steps to
+// convergence, hence every configuration's time), in the order scenes x form factors. Throws
+// std::invalid_argument naming a form factor that is not one, or one given twice.
+void expand_form_factors(Study& s, const std::vector<std::string>& form_factors);
 
 // "paper-280-1120" for the paper's scenes, the file's stem, or "cornell-box".
 std::string default_scene_name(const SceneOptions& options);

@@ -320,7 +320,19 @@ ProfileField resolve(const Reader& r, const PathNode& p, const std::string& key,
   }
 }
 
-void read_axes(const Reader& r, const toml::table& t, Study& s) {
+// [axes] form_factors: every scene once per form factor (expand_form_factors). Excludes
+// [solver] form_factor, the same choice fixed.
+void read_form_factor_axis(const Reader& r, const toml::node& node, bool fixed_too, Study& s) {
+  if (fixed_too) r.fail(node, "axes.form_factors", "excludes solver.form_factor (one form factor: write that alone)");
+  const std::vector<std::string> names = name_axis(r, node, "axes.form_factors");
+  try {
+    expand_form_factors(s, names);
+  } catch (const std::invalid_argument& e) {
+    r.fail(node, "axes.form_factors", e.what());
+  }
+}
+
+void read_axes(const Reader& r, const toml::table& t, Study& s, bool form_factor_fixed) {
   std::vector<PathNode> profile_paths;
   for (auto&& [key, node] : t) {
     const std::string name(key.str());
@@ -346,6 +358,8 @@ void read_axes(const Reader& r, const toml::table& t, Study& s) {
       s.axes.card_splits = choice_axis<CardSplit>(r, node, k);
     } else if (name == "card_bus") {
       s.axes.card_buses = choice_axis<CardBus>(r, node, k);
+    } else if (name == "form_factors") {
+      read_form_factor_axis(r, node, form_factor_fixed, s);
     } else {
       profile_paths.push_back({name, &node});
     }
@@ -429,7 +443,10 @@ Study parse_study_text(const std::string& text, const std::string& path) {
   if (root.contains("scenes")) read_scenes(r, *root.get("scenes"), s);
   if (root.contains("solver")) read_solver(r, table_at(r, root, "solver"), s);
   // Axes before fixed settings: profile paths resolve against the devices and hosts swept.
-  if (root.contains("axes")) read_axes(r, table_at(r, root, "axes"), s);
+  if (root.contains("axes")) {
+    const bool form_factor_fixed = root.contains("solver") && table_at(r, root, "solver").contains("form_factor");
+    read_axes(r, table_at(r, root, "axes"), s, form_factor_fixed);
+  }
   if (root.contains("fixed")) read_fixed(r, table_at(r, root, "fixed"), s);
   check_study(s);
   return s;

@@ -30,11 +30,11 @@ int paper_steps(const SceneOptions& o, const Scene& scene) {
   return 0;
 }
 
-SolverOptions base_solver(const Study& s) {
+SolverOptions base_solver(const Study& s, const StudyScene& scene) {
   SolverOptions o;
   o.cull_receivers = !s.paper_faithful;
   o.convergence = s.convergence;
-  o.form_factor = parse_form_factor_kind(s.form_factor);
+  o.form_factor = parse_form_factor_kind(s.form_factor_of(scene));
   return o;
 }
 
@@ -56,8 +56,8 @@ struct Solved {
   WidthSummary summary;
 };
 
-Solved solve(const Study& s, const Scene& scene, int bits, int steps) {
-  SolverOptions solver = base_solver(s);
+Solved solve(const Study& s, const StudyScene& study_scene, const Scene& scene, int bits, int steps) {
+  SolverOptions solver = base_solver(s, study_scene);
   solver.fixed_steps = steps;
   Solved w;
   w.functional = record_functional_run(scene, solver, s.visibility, bits);
@@ -135,7 +135,7 @@ struct Running {
 TimingCase base_case(const Study& s, const Running& g) {
   TimingCase c;
   c.scene = g.scene;
-  c.solver = base_solver(s);
+  c.solver = base_solver(s, s.scenes[g.group.scene]);
   c.solver.fixed_steps = g.solved.summary.steps;
   c.recording = &g.solved.functional.recording;
   return c;
@@ -204,8 +204,10 @@ GroupResult collect(const std::vector<Planned>& plan, const ConfigChecker& check
   return r;
 }
 
+// A scene of a form-factor axis says its form factor beside its name (the rows of each are its own).
 SceneSummary summary(const StudyScene& s, const Scene& scene) {
-  return {scene.name, s.source.empty() ? "embedded:cornell-box" : s.source, scene.faces.size(), scene.patches.size()};
+  const std::string name = s.form_factor.empty() ? scene.name : scene.name + ", form factor " + s.form_factor;
+  return {name, s.source.empty() ? "embedded:cornell-box" : s.source, scene.faces.size(), scene.patches.size()};
 }
 
 // The study's name, not its path: profile sources written by the settings reach outputs, and where the
@@ -273,7 +275,7 @@ ShardResult run_study_shard(const Study& study, const Shard& shard, const Progre
     const Scene& scene = scenes[g.scene];
     progress("solving " + s.name + " (" + std::to_string(scene.patches.size()) + " patches) at " +
              std::to_string(g.bits) + " bits");
-    running.push_back({g, &scene, solve(study, scene, g.bits, fixed_steps(study, s, scene)), {}, {}, {}});
+    running.push_back({g, &scene, solve(study, s, scene, g.bits, fixed_steps(study, s, scene)), {}, {}, {}});
     result.scenes[g.scene] = summary(s, scene);
   }
   std::vector<TimingCase> cases;

@@ -235,5 +235,39 @@ TEST(StudyFile, TheFormFactorIsAFixedSolverSettingPointByDefault) {
             std::string::npos) << e;
 }
 
+// [axes] form_factors: each scene once per form factor, named for it, recorded per scene in the
+// resolved study (so shards and merges keep it); excludes [solver] form_factor.
+TEST(StudyFile, FormFactorsAreAnAxisOfScenes) {
+  const Study s = parse(R"([[scenes]]
+paper = { faces = 70, patches = 280 }
+[[scenes]]
+file = "../../../../scenes/examples/two-rooms.scene"
+patch_levels = 0
+[axes]
+form_factors = ["point", "analytic"]
+)");
+  ASSERT_EQ(s.scenes.size(), 4u);
+  EXPECT_EQ(s.scenes[0].name, "paper-70-280-point");
+  EXPECT_EQ(s.scenes[1].name, "paper-70-280-analytic");
+  EXPECT_EQ(s.scenes[3].name, "two-rooms-analytic");
+  EXPECT_EQ(s.form_factor_of(s.scenes[0]), "point");
+  EXPECT_EQ(s.form_factor_of(s.scenes[3]), "analytic");
+  const Study back = study_from_json(study_json(s));
+  ASSERT_EQ(back.scenes.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(back.scenes[i].form_factor, s.scenes[i].form_factor) << i;
+  EXPECT_EQ(study_json(back), study_json(s));
+  // One scene's record without the axis has no form_factor key (records read as before).
+  EXPECT_FALSE(study_json(parse("")).at("scenes").at(0).contains("form_factor"));
+
+  EXPECT_NE(error_of("[solver]\nform_factor = \"disc\"\n[axes]\nform_factors = [\"point\"]\n")
+                .find("inline.toml:4: axes.form_factors: excludes solver.form_factor"),
+            std::string::npos);
+  EXPECT_NE(error_of("[axes]\nform_factors = [\"point\", \"exact\"]\n")
+                .find("axes.form_factors: form factor 'exact' is not one of: point, disc, analytic"),
+            std::string::npos);
+  EXPECT_NE(error_of("[axes]\nform_factors = []\n").find("axes.form_factors: expected a non-empty list of names"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace rc

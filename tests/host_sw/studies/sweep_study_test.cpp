@@ -3,8 +3,10 @@
 #include <string>
 #include <vector>
 
+#include "host_sw/radiosity/radiosity.h"
 #include "host_sw/studies/study_file.h"
 #include "host_sw/studies/sweep_study.h"
+#include "host_sw/visibility/visibility_factory.h"
 
 namespace rc {
 namespace {
@@ -147,6 +149,46 @@ TEST(SweepStudy, MergeRefusesMissingDuplicatedAndForeignShards) {
   e = error_of({made_up_shard(s, 0, 2), made_up_shard(other, 1, 2)});
   EXPECT_NE(e.find("another study"), std::string::npos) << e;
   EXPECT_THROW(merge_shards({}, {}), std::invalid_argument);
+}
+
+// A form-factor axis (docs/studies.md): the one scene is solved once per form factor, each to its own
+// convergence, as a direct solve with that form factor converges, and every configuration replays
+// its own scene's steps.
+TEST(SweepStudy, AFormFactorAxisSolvesEachSceneOncePerFormFactor) {
+  const Study s = parse_study_text(R"(
+[[scenes]]
+paper = { faces = 70, patches = 280 }
+[solver]
+steps = "converge"
+[axes]
+devices = ["xc2v6000"]
+lanes = [2]
+banks = [6]
+form_factors = ["point", "analytic"]
+)",
+                                   std::string(RC_SOURCE_DIR) + "/tests/host_sw/studies/data/inline.toml");
+  const StudyResult r = run_study(s, [](const std::string&) {});
+  ASSERT_EQ(r.scenes.size(), 2u);
+  const Scene scene = prepare_scene(s.scenes[0].options).scene;
+  std::vector<int> steps;
+  for (FormFactorKind kind : {FormFactorKind::PointToPoint, FormFactorKind::Analytic}) {
+    SolverOptions o;
+    o.cull_receivers = false;  // paper-faithful, the study's default
+    o.form_factor = kind;
+    auto answer = make_functional_answer("fast", 15);
+    steps.push_back(ProgressiveRadiosity(scene, *answer, o).run().steps);
+  }
+  EXPECT_NE(steps[0], steps[1]);
+  for (std::size_t i = 0; i < 2; ++i) {
+    SCOPED_TRACE(r.scenes[i].scene.name);
+    EXPECT_EQ(r.scenes[i].widths.at(15).steps, steps[i]);
+    ASSERT_GE(r.scenes[i].valid, 1u);
+    EXPECT_GT(r.scenes[i].rows.front().simulated_seconds, 0.0);
+  }
+  EXPECT_EQ(r.study.scenes[0].name, "paper-70-280-point");  // their folders
+  EXPECT_EQ(r.study.scenes[1].name, "paper-70-280-analytic");
+  EXPECT_EQ(r.scenes[0].scene.name, "cornell-box, form factor point");
+  EXPECT_EQ(r.scenes[1].scene.name, "cornell-box, form factor analytic");
 }
 
 }  // namespace

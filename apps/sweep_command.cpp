@@ -93,7 +93,7 @@ const char* const kStudyOptions[] = {"--scene", "--faces", "--face-levels", "--p
 Study study_from_options(const SweepOptions& o) {
   Study s = default_study();
   s.name = "command-line";
-  s.scenes = {{default_scene_name(o.scene), o.scene, o.scene.file}};
+  s.scenes = {{default_scene_name(o.scene), o.scene, o.scene.file, ""}};
   s.steps = parse_steps(o.steps);
   s.convergence = o.convergence;
   s.paper_faithful = o.paper_faithful;

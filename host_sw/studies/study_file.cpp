@@ -405,7 +405,7 @@ const toml::table& table_at(const Reader& r, const toml::table& root, const char
 Study default_study() {
   Study s;
   s.name = "default";
-  s.scenes = {{"", paper_scene_options(280, 1120), ""}};
+  s.scenes = {{"", paper_scene_options(280, 1120), "", ""}};
   s.scenes.front().name = default_scene_name(s.scenes.front().options);
   s.axes.devices = {"xc2v6000", "virtex4-sx55", "spartan3-5000"};
   s.axes.bits = {15};

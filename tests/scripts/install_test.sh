@@ -37,7 +37,8 @@ for d in io scenes pipeline tlm board host_sw/radiosity host_sw/visibility host_
 done
 
 # The example is built as this build's libraries were: the same compiler, and in the sanitizer build
-# (RC_SANITIZE, RC_FUZZ: scripts/test) the same instrumentation, whose run-times the program must link.
+# (RC_SANITIZE: scripts/test) the sanitizers, whose run-times the program must link (they also hold
+# the coverage callbacks of the libraries RC_FUZZ instruments, as for the project's own tests).
 cached() { sed -n "s/^$1:[A-Z]*=//p" "$build/CMakeCache.txt"; }
 example_args=(-DCMAKE_CXX_COMPILER="$(cached CMAKE_CXX_COMPILER)")
 flags="-Wall -Wextra -Wshadow -Werror"  # the example is held to the project's warnings
@@ -46,7 +47,6 @@ if [ "$(cached RC_SANITIZE)" = ON ]; then
   flags="$flags -fsanitize=address,undefined -fno-sanitize-recover=all"
   link_flags="-fsanitize=address,undefined -fno-sanitize-recover=all"
 fi
-if [ "$(cached RC_FUZZ)" = ON ]; then link_flags="$link_flags -fsanitize=fuzzer-no-link"; fi
 example_args+=(-DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="$link_flags")
 
 # build_and_run NAME CMAKE-ARGS...: configures, builds and runs the example in $work/NAME.

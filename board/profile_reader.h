@@ -16,7 +16,8 @@
 
 namespace rc::board {
 
-// configs/ of the source tree this library was built from.
+// Where profiles are found by name: io::config_dir() (RC2000SIM_CONFIGS, else this source tree's
+// configs/, else the installed share folder; io/config_dir.h).
 std::string default_config_dir();
 
 // A path (contains '/' or ends in ".json") is returned unchanged; a bare name becomes

@@ -7,15 +7,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/config_dir.h"
 #include "io/input_file.h"
 #include "io/json_text.h"
 #include "pipeline/bit_bounds.h"
 #include "pipeline/fixed_format.h"
 #include "pipeline/hardware_blocks.h"
-
-#ifndef RC_PIPELINE_RESOURCES_JSON
-#define RC_PIPELINE_RESOURCES_JSON "configs/pipeline_resources.json"
-#endif
 
 namespace rc::pipeline {
 
@@ -60,7 +57,7 @@ ResourceModel ResourceModel::load(const std::string& path) {
   }
 }
 
-std::string ResourceModel::default_path() { return RC_PIPELINE_RESOURCES_JSON; }
+std::string ResourceModel::default_path() { return io::config_dir() + "/pipeline_resources.json"; }
 
 ResourceModel ResourceModel::load_default() { return load(default_path()); }
 

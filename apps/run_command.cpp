@@ -90,10 +90,6 @@ BoardRunOptions board_options(const RunOptions& o) {
   board.trace = !o.trace_path.empty();
   board.bits = o.bits;
   if (float_arith(o)) board.float_format = pipeline::parse_float_format(o.arith);  // float lanes
-  board.lanes = o.lanes;
-  board.cards = o.cards;
-  board.card_split = o.card_split;
-  board.card_bus = o.card_bus;
   return board;
 }
 
@@ -116,8 +112,8 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   out.solver = std::move(r.solver);
   out.visibility_name = "board " + board.device + ", " + std::to_string(board.lanes.value()) + " lane(s), " +
                         (float_arith(o) ? o.arith : std::to_string(o.bits) + "-bit") + (board.concurrent ? ", concurrent" : ", serial") +
-                        (o.cards > 1 ? ", " + std::to_string(o.cards) + " cards (split " + choice_name(o.card_split) + ", " +
-                                           choice_name(o.card_bus) + " bus)"
+                        (o.board.cards > 1 ? ", " + std::to_string(o.board.cards) + " cards (split " + choice_name(o.board.card_split) + ", " +
+                                           choice_name(o.board.card_bus) + " bus)"
                                      : "");
   out.visibility_tests = r.report.intersections.tests;
   out.board = std::move(r.report);
@@ -209,10 +205,10 @@ nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& pre
                         {"form_factor", to_string(o.solver.form_factor)},
                         {"visibility", o.impl == Impl::board ? "board" : float_arith(o) ? o.arith : choice_name(o.visibility)},
                         {"arith", o.arith},
-                        {"cards", o.impl == Impl::board ? nlohmann::ordered_json(o.cards) : nlohmann::ordered_json()},
-                        {"card_split", o.impl == Impl::board && o.cards > 1 ? nlohmann::ordered_json(choice_name(o.card_split))
+                        {"cards", o.impl == Impl::board ? nlohmann::ordered_json(o.board.cards.value()) : nlohmann::ordered_json()},
+                        {"card_split", o.impl == Impl::board && o.board.cards > 1 ? nlohmann::ordered_json(choice_name(o.board.card_split))
                                                                         : nlohmann::ordered_json()},
-                        {"card_bus", o.impl == Impl::board && o.cards > 1 ? nlohmann::ordered_json(choice_name(o.card_bus))
+                        {"card_bus", o.impl == Impl::board && o.board.cards > 1 ? nlohmann::ordered_json(choice_name(o.board.card_bus))
                                                                       : nlohmann::ordered_json()},
                         {"bits", uses_fixed_width(o) ? nlohmann::ordered_json(o.bits) : nlohmann::ordered_json()},
                         {"face_target", o.scene.face_target},
@@ -258,7 +254,7 @@ void check_run_options(const CLI::App& cmd, const RunOptions& o) {
     refuse_given(cmd, {"--visibility"}, "applies to --impl software only: with --impl board the board's lanes answer "
                                         "visibility (bit-exact at --bits, or --arith float:E,M)");
   }
-  if (o.cards == 1) refuse_given(cmd, {"--card-split", "--card-bus"}, "applies only with more than one card (--cards)");
+  if (o.board.cards == 1) refuse_given(cmd, {"--card-split", "--card-bus"}, "applies only with more than one card (--cards)");
   if (o.arith != "fixed") {
     try {
       (void)pipeline::parse_float_format(o.arith);  // a bad format names the value and the limits
@@ -333,20 +329,18 @@ void add_run_command(CLI::App& app, int& exit_code) {
                   "docs/pipeline.md; with --impl board, float lanes: docs/board.md, Float lanes)")
       ->capture_default_str();
   BoardRunOptions& b = options->board;
-  b.host = "athlon-mp-2600-calibrated";  // the profile fitted to the paper's measurements (docs/calibration.md)
   cmd->add_option("--device", b.device, "Board: device profile, configs/devices/NAME.json or a path")->capture_default_str();
-  cmd->add_option("--lanes", options->lanes, "Board: pipeline lanes")->check(CLI::Range(1, 64))->capture_default_str();
+  add_count_option(*cmd, "--lanes", b.lanes, "Board: pipeline lanes");
   // 0 is the setup's "the profile's"; given, it would mean "not given": refused like any count below 1.
   cmd->add_option("--banks", b.banks, "Board: memory banks, 1..64 (default: the profile's)")->check(CLI::Range(1, 64))
       ->capture_default_str();
   cmd->add_flag("--concurrent", b.concurrent, "Board: form factors while the FPGA works (paper sec 4.3)");
-  cmd->add_option("--cards", options->cards,
-                  "Board: identical RC2000 cards working on the scene at once (paper sec 6; docs/board.md, Several cards)")
-      ->check(CLI::Range(1u, CardCount::kMax))->capture_default_str();
-  add_choice_option(*cmd, "--card-split", options->card_split,
+  add_count_option(*cmd, "--cards", b.cards,
+                   "Board: identical RC2000 cards working on the scene at once (paper sec 6; docs/board.md, Several cards)");
+  add_choice_option(*cmd, "--card-split", b.card_split,
                     "Board, several cards: rays (each card a share of a step's segments, every face) or faces (each "
                     "card a share of the faces, every segment)");
-  add_choice_option(*cmd, "--card-bus", options->card_bus,
+  add_choice_option(*cmd, "--card-bus", b.card_bus,
                     "Board, several cards: shared (one PCI bus, transfers contend) or separate (each card on its own bus)");
   cmd->add_flag("--lanes-compute", options->lanes_compute,
                 "Board: the lanes test every ray against every face (slow) instead of copying the bit-identical "

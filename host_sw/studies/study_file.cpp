@@ -335,13 +335,13 @@ void read_axes(const Reader& r, const toml::table& t, Study& s) {
     } else if (name == "bits") {
       s.axes.bits = int_axis(r, node, k, 7, 31);
     } else if (name == "lanes") {
-      s.axes.lanes = int_axis(r, node, k, 1, 255);  // the CONFIG register holds 8 bits of each
+      s.axes.lanes = int_axis(r, node, k, board::LaneCount::kMin, board::LaneCount::kMax);
     } else if (name == "banks") {
       s.axes.banks = int_axis(r, node, k, 1, 255);
     } else if (name == "concurrent") {
       s.axes.concurrent = concurrency_axis(r, node);
     } else if (name == "cards") {
-      s.axes.cards = int_axis(r, node, k, 1, static_cast<int>(CardCount::kMax));
+      s.axes.cards = int_axis(r, node, k, CardCount::kMin, CardCount::kMax);
     } else if (name == "card_split") {
       s.axes.card_splits = choice_axis<CardSplit>(r, node, k);
     } else if (name == "card_bus") {

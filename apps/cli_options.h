@@ -77,6 +77,10 @@ void refuse_given(const CLI::App& cmd, std::initializer_list<const char*> option
 // Each of `formats` must be a float:E,M the pipeline has; else refuses `option` with the reason.
 void check_float_formats(const std::string& option, const std::vector<std::string>& formats);
 
+// --configs DIR: where the config files are found, for this command and the processes it starts
+// (io/config_dir.h; docs/outputs.md, "Config files"). Every command has it.
+void add_configs_option(CLI::App& cmd);
+
 // Each command registers itself and, when chosen, stores its exit code in `exit_code`.
 void add_run_command(CLI::App& app, int& exit_code);
 void add_accuracy_command(CLI::App& app, int& exit_code);

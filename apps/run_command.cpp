@@ -118,11 +118,9 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   out.visibility_tests = r.report.intersections.tests;
   out.board = std::move(r.report);
   out.trace_json = std::move(r.trace_json);
-  out.lanes_that_fit =
-      float_arith(o)
-          ? lanes_that_fit(board::find_device_profile(board.device), find_host_profile(board.host),
-                           pipeline::parse_float_format(o.arith))
-          : lanes_that_fit(board.device, board.host, o.bits);
+  // The profiles the run used (loaded once, by run_simulation), not read again.
+  out.lanes_that_fit = float_arith(o) ? lanes_that_fit(*board.device_profile, *board.host_profile, pipeline::parse_float_format(o.arith))
+                                      : lanes_that_fit(*board.device_profile, *board.host_profile, o.bits);
   return out;
 }
 
@@ -276,11 +274,17 @@ void check_run_options(const CLI::App& cmd, const RunOptions& o) {
   }
 }
 
-int run_simulation(const RunOptions& o) {
+int run_simulation(const RunOptions& given) {
   Outputs outputs;
-  for (const std::string& path : output_paths(o)) outputs.expect(path);  // before any work
-  // The profiles and the board they make (lanes, banks, layout), before the scene is prepared.
-  if (o.impl == Impl::board) (void)make_board_setup(board_options(o));
+  for (const std::string& path : output_paths(given)) outputs.expect(path);  // before any work
+  // The profiles, each read once, here, and handed down; the board they make (lanes, banks,
+  // layout) checked before the scene is prepared.
+  RunOptions o = given;
+  if (o.impl == Impl::board) {
+    if (!o.board.device_profile) o.board.device_profile = board::find_device_profile(o.board.device);
+    if (!o.board.host_profile) o.board.host_profile = find_host_profile(o.board.host);
+    (void)make_board_setup(board_options(o));
+  }
   ProgressLine progress(!o.quiet);
   PreparedScene prepared = prepare_scene(o.scene, [&](const std::string& what) { progress.update("%-60s", what.c_str()); });
   if (uses_fixed_width(o)) {

@@ -52,7 +52,7 @@ std::string names(const std::vector<std::string>& items) {
 // The command line's study, its defaults those of a study file (default_study()).
 struct SweepOptions {
   SweepOptions() {
-    const Study d = default_study();
+    const Study d = default_study_settings();  // no file read before --configs is known
     scene = d.scenes.front().options;
     lanes = ranges(d.axes.lanes);
     banks = ranges(d.axes.banks);

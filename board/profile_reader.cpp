@@ -7,11 +7,12 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "io/config_dir.h"
 #include "io/json_text.h"
 
 namespace rc::board {
 
-std::string default_config_dir() { return RC_CONFIG_DIR; }
+std::string default_config_dir() { return io::config_dir(RC_CONFIG_DIR); }  // io/config_dir.h
 
 std::string resolve_profile_path(const std::string& name_or_path, const std::string& kind) {
   const bool is_path = name_or_path.find('/') != std::string::npos ||

@@ -16,7 +16,8 @@
 
 namespace rc::board {
 
-// configs/ of the source tree this library was built from.
+// The config folder: $RC2000SIM_CONFIGS (a command's --configs sets it), else configs/ of the source
+// tree this library was built from (io/config_dir.h).
 std::string default_config_dir();
 
 // A path (contains '/' or ends in ".json") is returned unchanged; a bare name becomes

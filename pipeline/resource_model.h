@@ -100,7 +100,7 @@ class ResourceModel {
   // Reads the JSON file; throws std::runtime_error naming the file and the problem.
   static ResourceModel load(const std::string& path);
   static ResourceModel from_json_text(const std::string& text, const std::string& origin = "<text>");
-  // configs/pipeline_resources.json of this source tree.
+  // configs/pipeline_resources.json of this source tree, read once per process.
   static ResourceModel load_default();
   static std::string default_path();
 

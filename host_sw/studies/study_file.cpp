@@ -389,10 +389,15 @@ const toml::table& table_at(const Reader& r, const toml::table& root, const char
 }  // namespace
 
 Study default_study() {
+  Study s = default_study_settings();
+  s.scenes.front().name = default_scene_name(s.scenes.front().options);
+  return s;
+}
+
+Study default_study_settings() {
   Study s;
   s.name = "default";
   s.scenes = {{"", paper_scene_options(280, 1120), ""}};
-  s.scenes.front().name = default_scene_name(s.scenes.front().options);
   s.axes.devices = {"xc2v6000", "virtex4-sx55", "spartan3-5000"};
   s.axes.bits = {15};
   s.axes.concurrent = {true};

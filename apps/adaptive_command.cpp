@@ -20,9 +20,8 @@ namespace rc {
 namespace {
 
 struct AdaptiveOptions : AdaptiveSpec {
-  AdaptiveOptions() : form_factor_name(to_string(form_factor)) {}  // the library's default (the base's)
-  std::string form_factor_name;
-  int lanes = 2;
+  std::string form_factor_name;  // the library's default (the base's)
+  AdaptiveOptions() : form_factor_name(to_string(form_factor)) { board.lanes = 2; }  // the command's default lanes
   std::string out_dir = "out/adaptive";
   std::string docs_dir;
   bool quiet = false;
@@ -63,7 +62,7 @@ std::string markdown(const AdaptiveOptions& o, const AdaptiveResult& a, const st
                 "1e-6, disc form factor, 4^%d patches per face; %.1f s wall), relative to its mean radiosity; the "
                 "image difference is the relative RMSE of the linear %d x %d image.\n\n",
                 a.reference_scene.faces.size(), o.bits, o.convergence, to_string(o.form_factor).c_str(),
-                o.board.device.c_str(), o.lanes, o.board.concurrent ? "concurrent" : "serial", o.board.host.c_str(),
+                o.board.device.c_str(), o.board.lanes.value(), o.board.concurrent ? "concurrent" : "serial", o.board.host.c_str(),
                 o.start_levels, o.rounds, a.reference_scene.patches.size(), o.reference_levels,
                 a.reference_wall_seconds, o.image_size, o.image_size);
   md << line;
@@ -152,7 +151,7 @@ void add_adaptive_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--visibility", o->visibility, "Bit-exact backend of the runs: fixed or fast")
       ->check(CLI::IsMember(choice_names<BitExactVisibility>()))->capture_default_str();
   cmd->add_option("--device", o->board.device, "Board whose time is simulated")->capture_default_str();
-  cmd->add_option("--lanes", o->lanes, "Lanes of that board")->check(CLI::Range(1, 255))->capture_default_str();
+  add_count_option(*cmd, "--lanes", o->board.lanes, "Lanes of that board");
   cmd->add_option("--host", o->board.host, "Host profile")->capture_default_str();
   cmd->add_option("--out", o->out_dir, "Output folder")->check(output_path())->capture_default_str();
   cmd->add_option("--docs", o->docs_dir, "Also write adaptive-patches.md and its pictures here (e.g. docs/results)")
@@ -162,7 +161,6 @@ void add_adaptive_command(CLI::App& app, int& exit_code) {
     refuse_given(*cmd, {"--patch-levels", "--patch-size"},
                  "does not apply to adaptive, which sets patches by --levels and --start-levels");
     o->form_factor = parse_form_factor_kind(o->form_factor_name);
-    o->board.lanes = o->lanes;
     const std::string where = o->out_dir + "/" + (o->docs_dir.empty() ? "" : " and " + o->docs_dir + "/");
     exit_code = run_guarded("adaptive", where, [&] {
       (void)make_board_setup(o->board);  // the device, host and lanes, before minutes of solving

@@ -28,7 +28,7 @@ namespace rc {
 namespace {
 
 struct BenchOptions : BenchSpec {
-  unsigned lanes = 2;  // --lanes, into board.lanes
+  BenchOptions() { board.lanes = 2; }  // the command's default lanes
   std::string out_dir = "out/bench";
   std::string docs_dir;
   bool quiet = false;
@@ -150,7 +150,7 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--visibility", o->visibility, "Bit-exact backend for the points: fixed or fast")
       ->check(CLI::IsMember(choice_names<BitExactVisibility>()))->capture_default_str();
   cmd->add_option("--device", o->board.device, "Board whose time is predicted")->capture_default_str();
-  cmd->add_option("--lanes", o->lanes, "Lanes of that board")->check(CLI::Range(1, 64))->capture_default_str();
+  add_count_option(*cmd, "--lanes", o->board.lanes, "Lanes of that board");
   cmd->add_option("--host", o->board.host, "Host profile")->capture_default_str();
   cmd->add_option("--out", o->out_dir, "Output folder")->check(output_path())->capture_default_str();
   cmd->add_option("--docs", o->docs_dir, "Also write speed-vs-error.md and its plot here (e.g. docs/results)")
@@ -162,7 +162,6 @@ void add_bench_command(CLI::App& app, int& exit_code) {
     o->base.form_factor = parse_form_factor_kind(*base_ff);
     if (o->formats == std::vector<std::string>{"none"}) o->formats.clear();
     check_float_formats("--formats", o->formats);  // before any work
-    o->board.lanes = o->lanes;
     const std::string where = o->out_dir + "/" + (o->docs_dir.empty() ? "" : " and " + o->docs_dir + "/");
     exit_code = run_guarded("bench", where, [&] {
       (void)make_board_setup(o->board);  // the device, host and lanes, before minutes of solving

@@ -7,6 +7,7 @@
 #include "apps/cli_options.h"
 #include "apps/outputs.h"
 #include "apps/report.h"
+#include "board/profile_reader.h"
 #include "host_sw/studies/paper_workload.h"
 #include "apps/progress.h"
 #include "host_sw/studies/calibration.h"
@@ -21,7 +22,7 @@ namespace {
 struct CalibrateOptions {
   std::string table = default_paper_table_path();
   std::string base = "athlon-mp-2600";
-  std::string out = std::string(RC_SOURCE_DIR) + "/configs/hosts/athlon-mp-2600-calibrated.json";
+  std::string out = board::default_config_dir() + "/hosts/athlon-mp-2600-calibrated.json";
   std::string variants_out = default_variants_path();
   std::string name = "athlon-mp-2600-calibrated";
   std::string visibility = "fast";
@@ -106,7 +107,11 @@ void add_calibrate_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--visibility", o->visibility, "Bit-exact backend that answers visibility once per scene: fixed or fast")
       ->check(CLI::IsMember(choice_names<BitExactVisibility>()))->capture_default_str();
   cmd->add_flag("--quiet", o->quiet, "No progress output");
-  cmd->callback([o, &exit_code] {
+  cmd->callback([o, cmd, &exit_code] {
+    // Defaults in the config folder chosen at run time (--configs, after these defaults were made).
+    if (!given(*cmd, "--table")) o->table = default_paper_table_path();
+    if (!given(*cmd, "--out")) o->out = board::default_config_dir() + "/hosts/athlon-mp-2600-calibrated.json";
+    if (!given(*cmd, "--variants-out")) o->variants_out = default_variants_path();
     if (o->name.empty()) refuse_option("--name", "must not be empty (it names the calibrated profile)");
     if (o->out == o->variants_out) refuse_option("--variants-out", "is the same file as --out");
     exit_code = run_guarded("calibrate", listed({o->out, o->variants_out}), [&] { return run_calibrate(*o); });

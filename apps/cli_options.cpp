@@ -3,10 +3,27 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "io/config_dir.h"
+#include "io/input_file.h"
 #include "io/parse_number.h"
 #include "pipeline/float_format.h"
 
 namespace rc {
+
+void add_configs_option(CLI::App& cmd) {
+  cmd.add_option_function<std::string>(
+         "--configs",
+         [](const std::string& dir) {
+           try {
+             io::use_config_dir(dir);
+           } catch (const io::InputFileError& e) {
+             refuse_option("--configs", e.what());
+           }
+         },
+         std::string("Folder of config files (devices/, hosts/, pipeline_resources.json, paper-table2.json, ...); "
+                     "default: $") + io::kConfigDirVariable + ", else the build's configs/, else the installed share/rc2000tlm/configs")
+      ->type_name("DIR");
+}
 
 CLI::Validator output_path() {
   return CLI::Validator(

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "board/checked_count.h"
 #include "host_sw/radiosity/radiosity.h"
 #include "io/choice.h"
 #include "scenes/prepare.h"
@@ -33,6 +34,15 @@ CLI::Option* add_choice_option(CLI::App& cmd, const std::string& flag, E& value,
   return cmd.add_option_function<std::string>(flag, [&value](const std::string& name) { value = parse_choice<E>(name); }, help)
       ->check(CLI::IsMember(choice_names<E>()))
       ->default_str(choice_name(value));
+}
+// `flag` N straight into a checked count (board/checked_count.h: lanes, cards): N outside the type's
+// bounds, the one place they live, is refused naming the option and the range; the help shows both.
+template <class Tag, unsigned Min, unsigned Max>
+CLI::Option* add_count_option(CLI::App& cmd, const std::string& flag, board::CheckedCount<Tag, Min, Max>& value,
+                              const std::string& help) {
+  return cmd.add_option<board::CheckedCount<Tag, Min, Max>, unsigned>(flag, value, help + ", " + std::to_string(Min) + ".." + std::to_string(Max))
+      ->check(CLI::Range(Min, Max))
+      ->default_str(std::to_string(value.value()));
 }
 // --form-factor NAME, one of form_factor_names() (host_sw/radiosity/form_factor.h), its default shown; `what`
 // prefixes the help ("Base point: " for bench). Resolve with parse_form_factor_kind.
@@ -66,6 +76,10 @@ void refuse_given(const CLI::App& cmd, std::initializer_list<const char*> option
 
 // Each of `formats` must be a float:E,M the pipeline has; else refuses `option` with the reason.
 void check_float_formats(const std::string& option, const std::vector<std::string>& formats);
+
+// --configs DIR: where the config files are found, for this command and the processes it starts
+// (io/config_dir.h; docs/outputs.md, "Config files"). Every command has it.
+void add_configs_option(CLI::App& cmd);
 
 // Each command registers itself and, when chosen, stores its exit code in `exit_code`.
 void add_run_command(CLI::App& app, int& exit_code);

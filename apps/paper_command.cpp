@@ -303,7 +303,10 @@ void add_paper_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--visibility", o->visibility, "Bit-exact backend that answers visibility once per scene: fixed or fast")
       ->check(CLI::IsMember(choice_names<BitExactVisibility>()))->capture_default_str();
   cmd->add_flag("--quiet", o->quiet, "No progress output");
-  cmd->callback([o, &exit_code] {
+  cmd->callback([o, cmd, &exit_code] {
+    // Defaults in the config folder chosen at run time (--configs, after these defaults were made).
+    if (!given(*cmd, "--table")) o->table = default_paper_table_path();
+    if (!given(*cmd, "--variants")) o->variants = default_variants_path();
     const std::string where = o->out_dir + "/" + (o->docs_dir.empty() ? "" : " and " + o->docs_dir + "/");
     exit_code = run_guarded("paper", where, [&] { return run_paper(*o); });
   });

@@ -90,10 +90,6 @@ BoardRunOptions board_options(const RunOptions& o) {
   board.trace = !o.trace_path.empty();
   board.bits = o.bits;
   if (float_arith(o)) board.float_format = pipeline::parse_float_format(o.arith);  // float lanes
-  board.lanes = o.lanes;
-  board.cards = o.cards;
-  board.card_split = o.card_split;
-  board.card_bus = o.card_bus;
   return board;
 }
 
@@ -116,17 +112,15 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   out.solver = std::move(r.solver);
   out.visibility_name = "board " + board.device + ", " + std::to_string(board.lanes.value()) + " lane(s), " +
                         (float_arith(o) ? o.arith : std::to_string(o.bits) + "-bit") + (board.concurrent ? ", concurrent" : ", serial") +
-                        (o.cards > 1 ? ", " + std::to_string(o.cards) + " cards (split " + choice_name(o.card_split) + ", " +
-                                           choice_name(o.card_bus) + " bus)"
+                        (o.board.cards > 1 ? ", " + std::to_string(o.board.cards) + " cards (split " + choice_name(o.board.card_split) + ", " +
+                                           choice_name(o.board.card_bus) + " bus)"
                                      : "");
   out.visibility_tests = r.report.intersections.tests;
   out.board = std::move(r.report);
   out.trace_json = std::move(r.trace_json);
-  out.lanes_that_fit =
-      float_arith(o)
-          ? lanes_that_fit(board::find_device_profile(board.device), find_host_profile(board.host),
-                           pipeline::parse_float_format(o.arith))
-          : lanes_that_fit(board.device, board.host, o.bits);
+  // The profiles the run used (loaded once, by run_simulation), not read again.
+  out.lanes_that_fit = float_arith(o) ? lanes_that_fit(*board.device_profile, *board.host_profile, pipeline::parse_float_format(o.arith))
+                                      : lanes_that_fit(*board.device_profile, *board.host_profile, o.bits);
   return out;
 }
 
@@ -209,10 +203,10 @@ nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& pre
                         {"form_factor", to_string(o.solver.form_factor)},
                         {"visibility", o.impl == Impl::board ? "board" : float_arith(o) ? o.arith : choice_name(o.visibility)},
                         {"arith", o.arith},
-                        {"cards", o.impl == Impl::board ? nlohmann::ordered_json(o.cards) : nlohmann::ordered_json()},
-                        {"card_split", o.impl == Impl::board && o.cards > 1 ? nlohmann::ordered_json(choice_name(o.card_split))
+                        {"cards", o.impl == Impl::board ? nlohmann::ordered_json(o.board.cards.value()) : nlohmann::ordered_json()},
+                        {"card_split", o.impl == Impl::board && o.board.cards > 1 ? nlohmann::ordered_json(choice_name(o.board.card_split))
                                                                         : nlohmann::ordered_json()},
-                        {"card_bus", o.impl == Impl::board && o.cards > 1 ? nlohmann::ordered_json(choice_name(o.card_bus))
+                        {"card_bus", o.impl == Impl::board && o.board.cards > 1 ? nlohmann::ordered_json(choice_name(o.board.card_bus))
                                                                       : nlohmann::ordered_json()},
                         {"bits", uses_fixed_width(o) ? nlohmann::ordered_json(o.bits) : nlohmann::ordered_json()},
                         {"face_target", o.scene.face_target},
@@ -258,7 +252,7 @@ void check_run_options(const CLI::App& cmd, const RunOptions& o) {
     refuse_given(cmd, {"--visibility"}, "applies to --impl software only: with --impl board the board's lanes answer "
                                         "visibility (bit-exact at --bits, or --arith float:E,M)");
   }
-  if (o.cards == 1) refuse_given(cmd, {"--card-split", "--card-bus"}, "applies only with more than one card (--cards)");
+  if (o.board.cards == 1) refuse_given(cmd, {"--card-split", "--card-bus"}, "applies only with more than one card (--cards)");
   if (o.arith != "fixed") {
     try {
       (void)pipeline::parse_float_format(o.arith);  // a bad format names the value and the limits
@@ -280,11 +274,17 @@ void check_run_options(const CLI::App& cmd, const RunOptions& o) {
   }
 }
 
-int run_simulation(const RunOptions& o) {
+int run_simulation(const RunOptions& given) {
   Outputs outputs;
-  for (const std::string& path : output_paths(o)) outputs.expect(path);  // before any work
-  // The profiles and the board they make (lanes, banks, layout), before the scene is prepared.
-  if (o.impl == Impl::board) (void)make_board_setup(board_options(o));
+  for (const std::string& path : output_paths(given)) outputs.expect(path);  // before any work
+  // The profiles, each read once, here, and handed down; the board they make (lanes, banks,
+  // layout) checked before the scene is prepared.
+  RunOptions o = given;
+  if (o.impl == Impl::board) {
+    if (!o.board.device_profile) o.board.device_profile = board::find_device_profile(o.board.device);
+    if (!o.board.host_profile) o.board.host_profile = find_host_profile(o.board.host);
+    (void)make_board_setup(board_options(o));
+  }
   ProgressLine progress(!o.quiet);
   PreparedScene prepared = prepare_scene(o.scene, [&](const std::string& what) { progress.update("%-60s", what.c_str()); });
   if (uses_fixed_width(o)) {
@@ -333,20 +333,18 @@ void add_run_command(CLI::App& app, int& exit_code) {
                   "docs/pipeline.md; with --impl board, float lanes: docs/board.md, Float lanes)")
       ->capture_default_str();
   BoardRunOptions& b = options->board;
-  b.host = "athlon-mp-2600-calibrated";  // the profile fitted to the paper's measurements (docs/calibration.md)
   cmd->add_option("--device", b.device, "Board: device profile, configs/devices/NAME.json or a path")->capture_default_str();
-  cmd->add_option("--lanes", options->lanes, "Board: pipeline lanes")->check(CLI::Range(1, 64))->capture_default_str();
+  add_count_option(*cmd, "--lanes", b.lanes, "Board: pipeline lanes");
   // 0 is the setup's "the profile's"; given, it would mean "not given": refused like any count below 1.
   cmd->add_option("--banks", b.banks, "Board: memory banks, 1..64 (default: the profile's)")->check(CLI::Range(1, 64))
       ->capture_default_str();
   cmd->add_flag("--concurrent", b.concurrent, "Board: form factors while the FPGA works (paper sec 4.3)");
-  cmd->add_option("--cards", options->cards,
-                  "Board: identical RC2000 cards working on the scene at once (paper sec 6; docs/board.md, Several cards)")
-      ->check(CLI::Range(1u, CardCount::kMax))->capture_default_str();
-  add_choice_option(*cmd, "--card-split", options->card_split,
+  add_count_option(*cmd, "--cards", b.cards,
+                   "Board: identical RC2000 cards working on the scene at once (paper sec 6; docs/board.md, Several cards)");
+  add_choice_option(*cmd, "--card-split", b.card_split,
                     "Board, several cards: rays (each card a share of a step's segments, every face) or faces (each "
                     "card a share of the faces, every segment)");
-  add_choice_option(*cmd, "--card-bus", options->card_bus,
+  add_choice_option(*cmd, "--card-bus", b.card_bus,
                     "Board, several cards: shared (one PCI bus, transfers contend) or separate (each card on its own bus)");
   cmd->add_flag("--lanes-compute", options->lanes_compute,
                 "Board: the lanes test every ray against every face (slow) instead of copying the bit-identical "

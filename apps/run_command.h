@@ -36,11 +36,9 @@ struct RunOptions {
   std::string arith = "fixed";       // the pipeline's arithmetic: fixed (--bits) or float:E,M (software only)
   bool lanes_compute = false;        // board: the lanes test every ray against every face themselves
   int bits = 15;                     // fractional bits of the fixed-point pipeline
-  unsigned lanes = 1;                // board: pipeline lanes (--lanes; BoardRunOptions::lanes checks it)
-  unsigned cards = 1;                // board: identical cards (--cards; BoardRunOptions::cards checks it)
-  CardSplit card_split = CardSplit::rays;  // board, several cards
-  CardBus card_bus = CardBus::shared;      // board, several cards
-  BoardRunOptions board;             // --impl board (board.vcd_path: --vcd, where the VCD ends up)
+  // --impl board: device, host, lanes, banks, cards and their split and bus, --vcd (board.vcd_path:
+  // where the VCD ends up), parsed straight into it.
+  BoardRunOptions board;
   std::string trace_path;            // --trace: the trace.json to write (board runs)
   std::string trace_steps = "1:3";   // A:B, steps written to the trace
   std::string out_dir = "out";

@@ -52,7 +52,7 @@ std::string names(const std::vector<std::string>& items) {
 // The command line's study, its defaults those of a study file (default_study()).
 struct SweepOptions {
   SweepOptions() {
-    const Study d = default_study();
+    const Study d = default_study_settings();  // no file read before --configs is known
     scene = d.scenes.front().options;
     lanes = ranges(d.axes.lanes);
     banks = ranges(d.axes.banks);
@@ -104,9 +104,9 @@ Study study_from_options(const SweepOptions& o) {
   s.axes.hosts = parse_name_list(o.hosts, "--host");
   s.axes.bits = parse_int_list(o.bits, "--bits", 7, 31);
   s.axes.concurrent = parse_concurrency(o.concurrent);
-  s.axes.lanes = parse_int_list(o.lanes, "--lanes", 1, 255);  // the CONFIG register holds 8 bits of each
+  s.axes.lanes = parse_int_list(o.lanes, "--lanes", board::LaneCount::kMin, board::LaneCount::kMax);
   s.axes.banks = parse_int_list(o.banks, "--banks", 1, 255);
-  s.axes.cards = parse_int_list(o.cards, "--cards", 1, static_cast<int>(CardCount::kMax));
+  s.axes.cards = parse_int_list(o.cards, "--cards", CardCount::kMin, CardCount::kMax);
   s.axes.card_splits = parse_choice_list<CardSplit>(o.card_split, "--card-split");
   s.axes.card_buses = parse_choice_list<CardBus>(o.card_bus, "--card-bus");
   check_study(s);

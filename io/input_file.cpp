@@ -1,6 +1,8 @@
 #include "io/input_file.h"
 
 #include <cerrno>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sys/stat.h>
@@ -9,6 +11,13 @@
 namespace rc::io {
 
 namespace {
+
+// RC2000SIM_LOG_READS set (to anything): each file read is named on stderr, "read <what>: <path>",
+// so a test counts how often a command reads each profile (tests/scripts/profile_reads_test.sh).
+void log_read(const std::string& what, const std::string& path) {
+  static const bool on = std::getenv("RC2000SIM_LOG_READS") != nullptr;
+  if (on) std::fprintf(stderr, "read %s: %s\n", what.c_str(), path.c_str());
+}
 
 std::string too_large(const std::string& path, std::uint64_t limit_bytes, const std::string& what) {
   return path + ": larger than the " + std::to_string(limit_bytes) + "-byte limit for " + what;
@@ -72,6 +81,7 @@ std::string read_file(const std::string& path, std::uint64_t limit_bytes, const 
     if (text.size() > limit_bytes) throw InputFileError(too_large(path, limit_bytes, what));
   }
   if (in.bad()) throw InputFileError(path + ": read failed");
+  log_read(what, path);
   return text;
 }
 

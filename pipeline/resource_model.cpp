@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -59,7 +61,17 @@ ResourceModel ResourceModel::load(const std::string& path) {
 
 std::string ResourceModel::default_path() { return io::config_dir() + "/pipeline_resources.json"; }
 
-ResourceModel ResourceModel::load_default() { return load(default_path()); }
+// Read once per process and path: nothing writes the file while a command runs, and the design fit,
+// the sec 5.6 estimates and the energy estimate each ask for it (tests/scripts/profile_reads_test.sh).
+ResourceModel ResourceModel::load_default() {
+  static std::mutex guard;
+  static std::map<std::string, ResourceModel> loaded;
+  const std::string path = default_path();
+  const std::lock_guard<std::mutex> lock(guard);
+  auto it = loaded.find(path);
+  if (it == loaded.end()) it = loaded.emplace(path, load(path)).first;
+  return it->second;
+}
 
 ResourceModel ResourceModel::from_json_text(const std::string& text, const std::string& origin) {
   json j;

@@ -39,6 +39,8 @@
 
 namespace rc {
 
+// Every default is `rc2000sim run --impl board`'s with no other option (apps/run_command.cpp;
+// tests/scripts/library_defaults_test.sh): same device, host, lanes, banks, width and driver.
 struct BoardRunOptions {
   std::string device = "xc2v6000";      // configs/devices/NAME.json, or a path to a profile
   std::optional<board::DeviceProfile> device_profile;  // when set, this profile instead of `device` (studies)
@@ -49,7 +51,9 @@ struct BoardRunOptions {
   // The oracle, if any, must then be the `float:E,M` software backend of the same format.
   std::optional<pipeline::FloatFormat> float_format;
   bool concurrent = false;              // paper sec 4.3
-  std::string host = "athlon-mp-2600";  // configs/hosts/NAME.json, or a path
+  // configs/hosts/NAME.json, or a path. The command's default: the profile fitted to the paper's
+  // measurements (docs/calibration.md), so a library call gives `rc2000sim run --impl board`'s times.
+  std::string host = "athlon-mp-2600-calibrated";
   std::optional<HostProfile> host_profile;  // when set, this profile instead of `host` (calibration variants)
   // Record a Chrome/Perfetto trace of steps trace_first..trace_last: BoardRunResult::trace_json (the
   // caller writes it, with its other outputs).

@@ -211,8 +211,8 @@ void check_study(const Study& s) {
         throw std::invalid_argument(where(s) + ": " + a.field.path + " is both an axis and fixed");
   }
   for (int c : s.axes.cards) {
-    if (c < 1 || c > static_cast<int>(CardCount::kMax))
-      throw std::invalid_argument(where(s) + ": axes.cards: " + std::to_string(c) + " is outside 1.." +
+    if (c < static_cast<int>(CardCount::kMin) || c > static_cast<int>(CardCount::kMax))
+      throw std::invalid_argument(where(s) + ": axes.cards: " + std::to_string(c) + " is outside " + std::to_string(CardCount::kMin) + ".." +
                                   std::to_string(CardCount::kMax));
   }
   const bool several_cards = std::any_of(s.axes.cards.begin(), s.axes.cards.end(), [](int c) { return c > 1; });

@@ -347,13 +347,13 @@ void read_axes(const Reader& r, const toml::table& t, Study& s, bool form_factor
     } else if (name == "bits") {
       s.axes.bits = int_axis(r, node, k, 7, 31);
     } else if (name == "lanes") {
-      s.axes.lanes = int_axis(r, node, k, 1, 255);  // the CONFIG register holds 8 bits of each
+      s.axes.lanes = int_axis(r, node, k, board::LaneCount::kMin, board::LaneCount::kMax);
     } else if (name == "banks") {
       s.axes.banks = int_axis(r, node, k, 1, 255);
     } else if (name == "concurrent") {
       s.axes.concurrent = concurrency_axis(r, node);
     } else if (name == "cards") {
-      s.axes.cards = int_axis(r, node, k, 1, static_cast<int>(CardCount::kMax));
+      s.axes.cards = int_axis(r, node, k, CardCount::kMin, CardCount::kMax);
     } else if (name == "card_split") {
       s.axes.card_splits = choice_axis<CardSplit>(r, node, k);
     } else if (name == "card_bus") {
@@ -403,10 +403,15 @@ const toml::table& table_at(const Reader& r, const toml::table& root, const char
 }  // namespace
 
 Study default_study() {
+  Study s = default_study_settings();
+  s.scenes.front().name = default_scene_name(s.scenes.front().options);
+  return s;
+}
+
+Study default_study_settings() {
   Study s;
   s.name = "default";
   s.scenes = {{"", paper_scene_options(280, 1120), "", ""}};
-  s.scenes.front().name = default_scene_name(s.scenes.front().options);
   s.axes.devices = {"xc2v6000", "virtex4-sx55", "spartan3-5000"};
   s.axes.bits = {15};
   s.axes.concurrent = {true};

@@ -25,6 +25,9 @@ namespace rc {
 // (a Table 2 scene that sweeps in seconds), Table 2's step counts, the three device profiles, 15
 // bits, the concurrent driver, the calibrated host, 1-16 lanes and 5-12 banks.
 Study default_study();
+// The same without its scene's name (which reads the paper's table): the defaults a command shows
+// when it is registered, before --configs has chosen the config folder.
+Study default_study_settings();
 
 // A study file is at most this large (a study is a page of settings, not data).
 constexpr std::uint64_t kMaxStudyFileBytes = io::kProfileLimitBytes;

@@ -72,7 +72,7 @@ TEST(LaneCount, IsValidByConstruction) {
     (void)l;
     ADD_FAILURE() << "no exception";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("at least one lane"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("lane count 0 is out of range: at least 1 and at most 255"), std::string::npos) << e.what();
   }
 }
 

@@ -7,6 +7,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <string>
+
+#include <unistd.h>
+
+#include "io/input_file.h"
 
 namespace rc::io {
 namespace {
@@ -34,6 +39,30 @@ TEST(ConfigDir, ThisBuildFindsItsSourceTreeConfigs) {
   // RC_SOURCE_DIR: this tree (tests/CMakeLists.txt); ctest does not set RC2000SIM_CONFIGS.
   if (std::getenv("RC2000SIM_CONFIGS") != nullptr) GTEST_SKIP() << "RC2000SIM_CONFIGS is set";
   EXPECT_EQ(config_dir(), std::string(RC_SOURCE_DIR) + "/configs");
+}
+
+TEST(ConfigDir, UseConfigDirTakesAFolderAndSetsTheVariable) {
+  ::unsetenv(kConfigDirVariable);
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("rc_configs_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string file = (dir / "a.json").string();
+  std::ofstream(file) << "{}";
+  for (const std::string& bad : {file, (dir / "missing").string(), std::string()}) {
+    try {
+      use_config_dir(bad);
+      ADD_FAILURE() << "accepted " << bad;
+    } catch (const InputFileError& e) {
+      EXPECT_NE(std::string(e.what()).find("not a folder"), std::string::npos) << e.what();
+      if (!bad.empty()) {
+        EXPECT_EQ(std::string(e.what()).rfind(bad, 0), 0u) << e.what();
+      }
+    }
+    EXPECT_EQ(std::getenv(kConfigDirVariable), nullptr) << "a refused folder must not be used";
+  }
+  use_config_dir(dir.string());
+  EXPECT_EQ(config_dir(), dir.string());
+  ::unsetenv(kConfigDirVariable);
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

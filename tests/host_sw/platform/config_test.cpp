@@ -79,7 +79,7 @@ TEST(BankLayouts, CapacitiesFollowFromBankSizes) {
 TEST(BankLayouts, BadConfigurationsFailClearly) {
   expect_error([] { make_bank_layout(1, 0, 15, 32, 1 << 20); }, {"at least 5 banks", "has 0"});
   expect_error([] { make_bank_layout(1, 4, 15, 32, 1 << 20); }, {"at least 5 banks", "has 4"});
-  expect_error([] { make_bank_layout(0, 6, 15, 32, 1 << 20); }, {"at least one lane"});
+  expect_error([] { make_bank_layout(0, 6, 15, 32, 1 << 20); }, {"lane count 0", "at least 1"});
   expect_error([] { make_bank_layout(3, 6, 31, 32, 1 << 20); }, {"3 lanes", "need 11 banks", "at least 9", "has 6"});
   expect_error([] { make_bank_layout(5, 6, 15, 32, 1 << 20); }, {"5 lanes", "need 11 banks", "has 6"});
   expect_error([] { make_bank_layout(1, 6, 40, 32, 1 << 20); }, {"40", "out of range"});
@@ -96,8 +96,8 @@ TEST(BankLayouts, BadConfigurationsFailClearly) {
   o.bits = 31;
   expect_error([&] { make_board_setup(o); }, {"3 lane(s) at 31 bits on xc2v6000", "39307 slices", "does not fit"});
   // A lane count is checked where it is made (board/lane_count.h).
-  expect_error([&] { o.lanes = 0; }, {"lane count 0", "at least one lane"});
-  expect_error([&] { o.lanes = 256; }, {"lane count 256", "at most 255"});
+  expect_error([&] { o.lanes = 0; }, {"lane count 0", "at least 1 and at most 255"});
+  expect_error([&] { o.lanes = 256; }, {"lane count 256", "at least 1 and at most 255", "CONFIG register"});
   EXPECT_EQ(o.lanes, 3u);
 }
 

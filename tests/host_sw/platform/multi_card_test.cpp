@@ -25,6 +25,7 @@ using sc_core::SC_NS;
 
 BoardRunOptions cards(unsigned n, CardSplit split, CardBus bus) {
   BoardRunOptions o;
+  o.host = "athlon-mp-2600";  // its driver moves data by DMA (the calibrated host's: programmed I/O)
   o.cards = n;
   o.card_split = split;
   o.card_bus = bus;

@@ -117,6 +117,7 @@ TEST(BoardSystem, BatchingAtAndBeyondTheLimitsGivesIdenticalResults) {
   const SolverOptions so = steps(60);
   const std::uint64_t F = scene.faces.size();
   BoardRunOptions o;
+  o.host = "athlon-mp-2600";  // its driver uploads a face set once (the calibrated host's: every pass)
   o.lanes = 2;
   BoardSystem whole("whole", scene, so, setup(o));
   o.bank_capacity_bytes = F * 9 * 4;  // exactly one face set (own-face table in spare bank 5)
@@ -175,6 +176,7 @@ TEST(BoardRunner, ReportsTraceAndWritesVcd) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("rc_board_runner_" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
   BoardRunOptions o;
+  o.host = "athlon-mp-2600";  // its driver moves data by DMA (the calibrated host's: programmed I/O)
   o.lanes = 2;
   o.concurrent = true;
   o.trace = true;

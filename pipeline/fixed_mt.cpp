@@ -49,7 +49,7 @@ using OccludeFn = void (*)(const FaceRecord&, const FixedVec3&, const std::int64
                            const std::int64_t*, const std::int64_t*, std::size_t, int,
                            std::uint8_t*, const std::uint8_t*);
 struct OccludeKernels {
-  OccludeFn narrow, narrow_masked, wide, wide_masked;
+  OccludeFn narrowest, narrowest_masked, narrow, narrow_masked, wide, wide_masked;
 };
 
 #define RC_OCCLUDE_PARAMS                                                                    \
@@ -58,6 +58,12 @@ struct OccludeKernels {
       std::uint8_t *blocked, const std::uint8_t *skip
 #define RC_OCCLUDE_ARGS face, start, end_x, end_y, end_z, n, bits, blocked, skip
 #define RC_DEFINE_OCCLUDE_KERNELS(isa, target)                                                 \
+  target void occlude16_##isa(RC_OCCLUDE_PARAMS) {                                           \
+    occlude_loop<std::int16_t, false>(RC_OCCLUDE_ARGS);                                      \
+  }                                                                                          \
+  target void occlude16_masked_##isa(RC_OCCLUDE_PARAMS) {                                    \
+    occlude_loop<std::int16_t, true>(RC_OCCLUDE_ARGS);                                       \
+  }                                                                                          \
   target void occlude32_##isa(RC_OCCLUDE_PARAMS) {                                           \
     occlude_loop<std::int32_t, false>(RC_OCCLUDE_ARGS);                                      \
   }                                                                                          \
@@ -70,7 +76,8 @@ struct OccludeKernels {
   target void occlude64_masked_##isa(RC_OCCLUDE_PARAMS) {                                    \
     occlude_loop<std::int64_t, true>(RC_OCCLUDE_ARGS);                                       \
   }                                                                                          \
-  constexpr OccludeKernels kOcclude_##isa{occlude32_##isa, occlude32_masked_##isa,           \
+  constexpr OccludeKernels kOcclude_##isa{occlude16_##isa, occlude16_masked_##isa,           \
+                                         occlude32_##isa, occlude32_masked_##isa,           \
                                          occlude64_##isa, occlude64_masked_##isa};
 
 RC_DEFINE_OCCLUDE_KERNELS(baseline, )
@@ -89,6 +96,14 @@ const OccludeKernels& occlude_kernels(KernelIsa isa) {
   if (isa == KernelIsa::X86_64_V4) return kOcclude_v4;
 #endif
   return kOcclude_baseline;
+}
+
+// The narrowest integer type whose products cannot overflow at this width (bit_bounds.h): 16-bit
+// lanes at 7 bits, 32-bit ones up to 15, 64-bit ones above.
+OccludeFn select_kernel(const OccludeKernels& k, int bits, bool masked) {
+  if (core_fits<std::int16_t>(bits)) return masked ? k.narrowest_masked : k.narrowest;
+  if (core_fits<std::int32_t>(bits)) return masked ? k.narrow_masked : k.narrow;
+  return masked ? k.wide_masked : k.wide;
 }
 
 }  // namespace
@@ -169,19 +184,17 @@ bool segment_hits(const FaceRecord& face, const FixedVec3& start, const FixedVec
 void occlude_face(const FaceRecord& face, const FixedVec3& start, const std::int64_t* end_x,
                   const std::int64_t* end_y, const std::int64_t* end_z, std::size_t n, FracBits bits,
                   std::uint8_t* blocked, const std::uint8_t* skip) {
-  occlude_face(best_kernel_isa(), face, start, end_x, end_y, end_z, n, bits, blocked, skip);
+  // Checked once: the culled backend calls this for every face with a handful of candidates.
+  static const OccludeKernels& best = occlude_kernels(best_kernel_isa());
+  assert(is_face_record(face, bits) && is_position(start, bits));
+  select_kernel(best, bits, skip != nullptr)(face, start, end_x, end_y, end_z, n, bits, blocked, skip);
 }
 
 void occlude_face(KernelIsa isa, const FaceRecord& face, const FixedVec3& start,
                   const std::int64_t* end_x, const std::int64_t* end_y, const std::int64_t* end_z,
                   std::size_t n, FracBits bits, std::uint8_t* blocked, const std::uint8_t* skip) {
   assert(is_face_record(face, bits) && is_position(start, bits));
-  const OccludeKernels& k = occlude_kernels(isa);
-  // The narrowest integer type whose products cannot overflow at this width (bit_bounds.h).
-  const bool narrow = core_fits<std::int32_t>(bits);
-  const OccludeFn fn = skip == nullptr ? (narrow ? k.narrow : k.wide)
-                                       : (narrow ? k.narrow_masked : k.wide_masked);
-  fn(face, start, end_x, end_y, end_z, n, bits, blocked, skip);
+  select_kernel(occlude_kernels(isa), bits, skip != nullptr)(face, start, end_x, end_y, end_z, n, bits, blocked, skip);
 }
 
 }  // namespace rc::pipeline

@@ -1,5 +1,6 @@
 #include "pipeline/hit_region.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -36,6 +37,22 @@ FixedVec3 exact_cross(const FixedVec3& a, const FixedVec3& b) {
 
 std::int64_t l1_norm(const FixedVec3& v) { return std::llabs(v.x) + std::llabs(v.y) + std::llabs(v.z); }
 
+using Wide = __int128;
+
+// The largest amount a truncation floor((w * k) / M) can drop, in units of 1/M, over every
+// integer k: w * k mod M is a multiple of gcd(w, M), so at most M - gcd(w, M); nothing when w is 0
+// (gcd(0, M) = M). M = 2^bits, so gcd(w, M) = 2^min(trailing zeros of w, bits).
+std::int64_t max_floor_loss(std::int64_t w, FracBits bits) {
+  if (w == 0) return 0;
+  const int zeros = std::min(__builtin_ctzll(static_cast<unsigned long long>(w)), static_cast<int>(bits));
+  return (std::int64_t{1} << bits) - (std::int64_t{1} << zeros);
+}
+
+// An inclusive interval of exact errors.
+struct ErrorRange {
+  Wide lo = 0, hi = 0;
+};
+
 // Everything the four conditions are built from (docs/fast-visibility.md, "The four conditions").
 // Unit: 2^-bits, so M = 2^bits is "1.0".
 struct ConditionInputs {
@@ -45,8 +62,48 @@ struct ConditionInputs {
   FixedVec3 n_det;      // det = d . n_det / M^2 + error  (n_det = edge2 x edge1)
   FixedVec3 n_u;        // u   = d . n_u / M^2 + error    (n_u = edge2 x tvec)
   FixedVec3 qvec;       // v   = d . qvec / M + error
-  std::int64_t l1_edge1, l1_tvec;
+  std::int64_t l1_edge1, l1_tvec;  // bound the errors below (for the rounding margins)
+  // M^2 det - d.n_det, M^2 u - d.n_u, M v - d.qvec and M^2 (det - u - v) - d.W over every d.
+  ErrorRange det, u, v, w;
 };
+
+// The errors, component by component (docs/fast-visibility.md, "Tighter bounds"). pvec_i = fl(a) -
+// fl(b) for two products of d with components of edge2, so M pvec_i - (d x edge2)_i lies in
+// [-loss(first factor), loss(second factor)]; a dot product sum_i fl(w_i pvec_i / M) loses at most
+// sum_i loss(w_i) / M to its three floors. A zero component (axis-aligned faces) loses nothing.
+ConditionInputs error_ranges(ConditionInputs in, const FaceRecord& face, const FixedVec3& tvec, FracBits bits) {
+  const Wide m = Wide{1} << bits;
+  const FixedVec3& e2 = face.edge2;
+  // cross(d, e2): x = d.y e2.z - d.z e2.y, y = d.z e2.x - d.x e2.z, z = d.x e2.y - d.y e2.x.
+  const std::int64_t loss_e2[3] = {max_floor_loss(e2.x, bits), max_floor_loss(e2.y, bits), max_floor_loss(e2.z, bits)};
+  const std::int64_t pvec_lo[3] = {-loss_e2[2], -loss_e2[0], -loss_e2[1]};
+  const std::int64_t pvec_hi[3] = {loss_e2[1], loss_e2[2], loss_e2[0]};
+  // sum_i w_i * (M pvec_i - (d x e2)_i) over the pvec errors. |w_i| < 2^32 and the losses are
+  // below 2^31, so each product fits 64 bits; the sums are taken in 128.
+  const auto pvec_part = [&](const std::int64_t w[3]) {
+    ErrorRange r;
+    for (int i = 0; i < 3; ++i) {
+      const bool negative = w[i] < 0;
+      r.lo += Wide(w[i] * (negative ? pvec_hi[i] : pvec_lo[i]));
+      r.hi += Wide(w[i] * (negative ? pvec_lo[i] : pvec_hi[i]));
+    }
+    return r;
+  };
+  const auto floor_loss = [&](const FixedVec3& w) {
+    return Wide(max_floor_loss(w.x, bits) + max_floor_loss(w.y, bits) + max_floor_loss(w.z, bits));
+  };
+  const std::int64_t e1[3] = {face.edge1.x, face.edge1.y, face.edge1.z};
+  const std::int64_t tv[3] = {tvec.x, tvec.y, tvec.z};
+  const std::int64_t e1_minus_tv[3] = {e1[0] - tv[0], e1[1] - tv[1], e1[2] - tv[2]};
+  const Wide loss_det = floor_loss(face.edge1), loss_u = floor_loss(tvec), loss_v = floor_loss(in.qvec);
+  const ErrorRange p_det = pvec_part(e1), p_u = pvec_part(tv), p_w = pvec_part(e1_minus_tv);
+  in.det = {p_det.lo - m * loss_det, p_det.hi};
+  in.u = {p_u.lo - m * loss_u, p_u.hi};
+  in.v = {-loss_v, 0};
+  // det and u share pvec's errors (the same pvec enters both), their floors are independent.
+  in.w = {p_w.lo - m * loss_det, p_w.hi + m * loss_u + m * loss_v};
+  return in;
+}
 
 ConditionInputs condition_inputs(const FaceRecord& face, const FixedVec3& start, FracBits bits) {
   const FaceStartValues f = face_start_values(face, start, bits);
@@ -59,7 +116,7 @@ ConditionInputs condition_inputs(const FaceRecord& face, const FixedVec3& start,
   in.qvec = f.qvec;
   in.l1_edge1 = l1_norm(face.edge1);
   in.l1_tvec = l1_norm(f.tvec);
-  return in;
+  return error_ranges(in, face, f.tvec, bits);
 }
 
 template <class Num>
@@ -68,23 +125,23 @@ struct Thresholds {
 };
 
 // The four thresholds c[k] of a[k] . d >= c[k], scaled so that a[k] are integer vectors:
-// conditions 0, 1 and 3 are multiplied by M^2, condition 2 by M. Each subtracted term is the
-// most truncation can add to the left-hand side (docs/fast-visibility.md): a dot product of three
-// truncated products lies at most 3(M-1)/M below its untruncated value, and a truncated cross
-// component dotted with w moves it by at most |w|_1 (M-1)/M^2 either way.
+// conditions 0, 1 and 3 are multiplied by M^2, condition 2 by M. s * X >= target needs
+// s * (d . n_X + error) >= target: with s = +1 the error helps by at most its upper end, with
+// s = -1 by minus its lower end.
 template <class Num>
 Thresholds<Num> thresholds(const ConditionInputs& in, Num m) {
-  const Num m1 = m - 1;
   const bool pos = in.sign > 0;
+  // Most errors fit 64 bits; converting those from there avoids a slow 128-bit conversion.
+  const auto num = [](Wide v) {
+    const bool fits = v >= Wide(INT64_MIN) && v <= Wide(INT64_MAX);
+    return fits ? Num(static_cast<std::int64_t>(v)) : Num(v);
+  };
+  const auto c = [&](Num target, const ErrorRange& e) { return target - (pos ? num(e.hi) : -num(e.lo)); };
   Thresholds<Num> r;
-  // s*det >= |t| + 1. det <= d.n_det/M^2 + (M-1)|e1|/M^2; -det <= -d.n_det/M^2 + same + 3(M-1)/M.
-  r.c[0] = m * m * Num(in.abs_t + 1) - m1 * Num(in.l1_edge1) - (pos ? Num(0) : 3 * m1 * m);
-  // s*u >= 1, the same shape with tvec in place of edge1.
-  r.c[1] = m * m - m1 * Num(in.l1_tvec) - (pos ? Num(0) : 3 * m1 * m);
-  // s*v >= 1. v <= d.qvec/M; -v <= -d.qvec/M + 3(M-1)/M.
-  r.c[2] = m - (pos ? Num(0) : 3 * m1);
-  // s*(det - u - v) >= 1: the errors of det, u and v add up.
-  r.c[3] = m * m - m1 * Num(in.l1_edge1 + in.l1_tvec) - (pos ? 6 : 3) * m1 * m;
+  r.c[0] = c(m * m * Num(in.abs_t + 1), in.det);  // s*det >= |t| + 1
+  r.c[1] = c(m * m, in.u);                         // s*u >= 1
+  r.c[2] = c(m, in.v);                             // s*v >= 1
+  r.c[3] = c(m * m, in.w);                         // s*(det - u - v) >= 1
   return r;
 }
 

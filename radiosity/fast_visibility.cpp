@@ -20,6 +20,10 @@ constexpr std::size_t kFacesPerClaim = 8;
 // streaming kernel (16 or 8 lanes) over all of them: cheaper than one scalar test per candidate.
 constexpr std::size_t kDenseShare = 8;
 
+// Fewer candidates than this run the scalar kernel one by one: gathering them for the vectorised
+// kernel (16-bit lanes at 7 bits, 32-bit up to 15, 64-bit above) costs more than it saves.
+constexpr std::size_t kVectorCandidates = 16;
+
 }  // namespace
 
 // test_face is compiled for AVX-512 and AVX2 as well as the baseline, and the best the CPU runs
@@ -148,17 +152,40 @@ RC_FAST_TARGETS std::uint64_t FastFixedVisibility::test_face(int face, WorkerOut
     return !too_many;
   });
   if (too_many) return test_every_segment(face, out);
-  for (const std::uint32_t point : candidates) {
-    if (!pipeline::pipeline_hits(record.v0, record.edge1, record.edge2, start_,
-                                 points_.position(point), bits_)) {
-      continue;
+  const std::size_t n = candidates.size();
+  if (n < kVectorCandidates) {
+    for (const std::uint32_t point : candidates) {
+      if (pipeline::pipeline_hits(record.v0, record.edge1, record.edge2, start_, points_.position(point), bits_)) {
+        block_segments_ending_at(point, sheet, out);
+      }
     }
-    for (std::uint32_t s = points_.first_segment(point); s != EndPointCatalogue::kNone;
-         s = points_.next_segment(s)) {
-      if (end_sheets_[s] != sheet) out.blocked[s] = 1;
-    }
+    return n;
   }
-  return candidates.size();
+  // The candidates' end points side by side, through the vectorised streaming kernel.
+  out.candidate_x.resize(n);
+  out.candidate_y.resize(n);
+  out.candidate_z.resize(n);
+  out.candidate_hit.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const pipeline::FixedVec3& e = points_.position(candidates[i]);
+    out.candidate_x[i] = e.x;
+    out.candidate_y[i] = e.y;
+    out.candidate_z[i] = e.z;
+  }
+  pipeline::occlude_face(record, start_, out.candidate_x.data(), out.candidate_y.data(), out.candidate_z.data(), n,
+                         bits_, out.candidate_hit.data());
+  for (std::size_t i = 0; i < n; ++i) {
+    if (out.candidate_hit[i]) block_segments_ending_at(candidates[i], sheet, out);
+  }
+  return n;
+}
+
+// A hit at `point` blocks every segment of the batch ending there, except those ending on the
+// face's own sheet.
+void FastFixedVisibility::block_segments_ending_at(std::uint32_t point, int sheet, WorkerOutput& out) const {
+  for (std::uint32_t s = points_.first_segment(point); s != EndPointCatalogue::kNone; s = points_.next_segment(s)) {
+    if (end_sheets_[s] != sheet) out.blocked[s] = 1;
+  }
 }
 
 // The brute force's way for one face: the streaming kernel over every segment of the batch,

@@ -71,11 +71,15 @@ class FastFixedVisibility : public VisibilityBackend {
     // Scratch for one face: its candidate end points, and the own-face mask of a dense face.
     std::vector<std::uint32_t> candidates;
     std::vector<std::uint8_t> skip;
+    // The candidates' end points (structure of arrays) and the kernel's answers.
+    std::vector<std::int64_t> candidate_x, candidate_y, candidate_z;
+    std::vector<std::uint8_t> candidate_hit;
   };
 
   void run_worker(int worker);
   std::uint64_t test_face(int face, WorkerOutput& out) const;
   std::uint64_t test_every_segment(int face, WorkerOutput& out) const;
+  void block_segments_ending_at(std::uint32_t point, int sheet, WorkerOutput& out) const;
   void finish_batch();
   std::uint64_t count_brute_force_tests(const SegmentBatch& batch) const;
 

@@ -48,7 +48,12 @@ void FastFixedVisibility::load_triangles(const std::vector<Triangle>& faces) {
   points_.clear();
   faces_.clear();
   faces_.reserve(faces.size());
-  for (const Triangle& t : faces) faces_.push_back(pipeline::make_face_record(t, bits_));
+  face_terms_.reserve(faces.size());
+  face_terms_.clear();
+  for (const Triangle& t : faces) {
+    faces_.push_back(pipeline::make_face_record(t, bits_));
+    face_terms_.push_back(pipeline::face_error_terms(faces_.back(), bits_));
+  }
 }
 
 // FixedPointVisibility's count: for every face outside the source's sheet, every segment not ending
@@ -135,7 +140,7 @@ RC_FAST_TARGETS std::uint64_t FastFixedVisibility::test_face(int face, WorkerOut
   const int sheet = sheets().first(face);
   if (sheet == source_sheet_) return 0;  // every segment's own surface
   const pipeline::FaceRecord& record = faces_[static_cast<std::size_t>(face)];
-  const pipeline::HitRegion region(record, start_, bits_);
+  const pipeline::HitRegion region(record, face_terms_[static_cast<std::size_t>(face)], start_, bits_);
   // Candidates: end points inside the region with a segment that does not end on this face's sheet.
   std::vector<std::uint32_t>& candidates = out.candidates;
   candidates.clear();

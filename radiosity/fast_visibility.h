@@ -34,6 +34,7 @@
 #include "radiosity/visibility.h"
 #include "radiosity/worker_pool.h"
 #include "pipeline/fixed_format.h"
+#include "pipeline/hit_region.h"
 
 namespace rc {
 
@@ -85,6 +86,7 @@ class FastFixedVisibility : public VisibilityBackend {
 
   int bits_;
   std::vector<pipeline::FaceRecord> faces_;
+  std::vector<pipeline::FaceErrorTerms> face_terms_;  // the hit regions' face-only part, per face
   // The current batch.
   pipeline::FixedVec3 start_{};
   int source_sheet_ = -1;           // the source face's sheet (its first face)

@@ -146,7 +146,6 @@ constexpr bool core_fits(int bits) {
 static_assert(signed_bits(Quantity::Product2Raw, kMaxFracBits) == 64,
               "at 31 bits the widest product needs exactly 64 bits");
 static_assert(core_fits<std::int64_t>(kMaxFracBits), "the 64-bit core covers every width");
-static_assert(core_fits<std::int16_t>(7) && !core_fits<std::int16_t>(8), "the 16-bit core covers width 7");
 static_assert(core_fits<std::int32_t>(15) && !core_fits<std::int32_t>(16),
               "the 32-bit core covers widths up to 15");
 static_assert(signed_bits(Quantity::Dot, 15) == 19, "det/u/v/t are N+4 bits (Table 1's 30 mults)");

@@ -49,11 +49,11 @@ constexpr bool operator!=(const IntVec3<Int>& a, const IntVec3<Int>& b) {
 }
 template <class Int>
 constexpr IntVec3<Int> operator+(const IntVec3<Int>& a, const IntVec3<Int>& b) {
-  return {Int(a.x + b.x), Int(a.y + b.y), Int(a.z + b.z)};  // Int(): int16_t operands promote to int
+  return {a.x + b.x, a.y + b.y, a.z + b.z};
 }
 template <class Int>
 constexpr IntVec3<Int> operator-(const IntVec3<Int>& a, const IntVec3<Int>& b) {
-  return {Int(a.x - b.x), Int(a.y - b.y), Int(a.z - b.z)};
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
 }
 
 // Widens or narrows the component type. Narrowing is only used where bit_bounds.h proves the

@@ -1,5 +1,5 @@
 // The fixed-point Moller-Trumbore pipeline, written once and templated on the integer type:
-// int16_t (width 7), int32_t (widths <= 15), int64_t (every width 7..31) and __int128 (an overflow
+// int32_t (fast path, widths <= 15), int64_t (every width 7..31) and __int128 (an overflow
 // oracle for tests). Every value is an integer count of 2^-N; the arithmetic is exactly the
 // hardware's (paper sec 3.1-3.4):
 //   * products are truncated back to N fractional bits by an arithmetic shift right by N, which
@@ -69,10 +69,8 @@ template <class Int, class Probe>
 Int multiply(Multiplier m, Int a, Int b, int bits, Probe& probe) {
   assert(in_range(operands_of(m).a, bits, a) && in_range(operands_of(m).b, bits, b));
   // Arithmetic shift of a negative value is floor (two's-complement truncation); GCC and Clang
-  // define it so, and C++20 makes it standard. The raw product is held in Int (core_fits<Int>
-  // guarantees it fits): for int16_t, whose operands C++ promotes to int, that lets a vectorised
-  // loop multiply and shift on 16-bit lanes.
-  const Int product = Int(Int(a * b) >> bits);
+  // define it so, and C++20 makes it standard.
+  const Int product = (a * b) >> bits;
   assert(in_range(result_of(m), bits, product));
   probe.multiplier(m, product);
   return product;

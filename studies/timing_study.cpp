@@ -96,8 +96,9 @@ std::vector<TimingOutcome> run_here(const std::vector<TimingCase>& all, const st
   return out;
 }
 
-// Cases dealt to `shards` processes, largest first onto the least loaded (a case's cost is about
-// its simulated steps), each shard in case order.
+// Cases dealt to `shards` processes, largest first onto the least loaded shard with room for it
+// (a case's cost is about its simulated steps; a shard holds at most kMaxSystemsPerProcess, and
+// shards * kMaxSystemsPerProcess >= cases), each shard in case order.
 std::vector<std::vector<std::size_t>> deal(const std::vector<TimingCase>& cases, unsigned shards) {
   std::vector<std::size_t> order(cases.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
@@ -106,7 +107,10 @@ std::vector<std::vector<std::size_t>> deal(const std::vector<TimingCase>& cases,
   std::vector<std::vector<std::size_t>> out(shards);
   std::vector<double> load(shards, 0);
   for (std::size_t i : order) {
-    const std::size_t s = static_cast<std::size_t>(std::min_element(load.begin(), load.end()) - load.begin());
+    std::size_t s = shards;
+    for (std::size_t k = 0; k < shards; ++k) {
+      if (out[k].size() < kMaxSystemsPerProcess && (s == shards || load[k] < load[s])) s = k;
+    }
     out[s].push_back(i);
     load[s] += cases[i].solver.fixed_steps;
   }
@@ -219,7 +223,13 @@ std::vector<TimingOutcome> run_in_children(const std::vector<TimingCase>& cases,
   std::string error;
   std::size_t next = 0;
   while (next < dealt.size() || !running.empty()) {
-    while (error.empty() && next < dealt.size() && running.size() < processes) running.push_back(start_worker(cases, dealt, next++, running));
+    while (error.empty() && next < dealt.size() && running.size() < processes) {
+      try {
+        running.push_back(start_worker(cases, dealt, next++, running));
+      } catch (const std::exception& e) {
+        error = e.what();  // the running workers are still waited for below
+      }
+    }
     if (running.empty()) break;
     std::vector<pollfd> fds;
     for (const Worker& w : running) fds.push_back({w.fd, POLLIN, 0});

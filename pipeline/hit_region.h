@@ -25,6 +25,24 @@
 
 namespace rc::pipeline {
 
+using Wide = __int128;
+
+// An inclusive interval of exact errors.
+struct ErrorRange {
+  Wide lo = 0, hi = 0;
+};
+
+// What the conditions take from the face alone (docs/fast-visibility.md, "Tighter bounds"):
+// computed once per face, reused for every start.
+struct FaceErrorTerms {
+  FixedVec3 n_det{};               // edge2 x edge1: det = d . n_det / M^2 + error
+  std::int64_t l1_edge1 = 0;
+  std::int64_t pvec_lo[3]{}, pvec_hi[3]{};  // M pvec_i - (d x edge2)_i over every d
+  Wide loss_det = 0;               // what det's three floors can drop, in units of 1/M
+  ErrorRange det;                  // M^2 det - d . n_det over every d
+};
+FaceErrorTerms face_error_terms(const FaceRecord& face, FracBits bits);
+
 // The four conditions in exact integer arithmetic: a hit at direction d requires
 // a[k] . d >= c[k] for every k. For the tests and the proof, not for speed.
 struct ExactHitConditions {
@@ -44,6 +62,8 @@ class HitRegion {
   // Throws std::invalid_argument for a width outside 7..31. Requires a valid face record and
   // start position (as pipeline::segment_hits does).
   HitRegion(const FaceRecord& face, const FixedVec3& start, FracBits bits);
+  // The same with the face's terms computed beforehand (face_error_terms(face, bits)).
+  HitRegion(const FaceRecord& face, const FaceErrorTerms& terms, const FixedVec3& start, FracBits bits);
 
   // True when t == 0: the pipeline reports a miss for every end point.
   bool empty() const { return empty_; }

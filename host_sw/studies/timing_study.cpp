@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include <poll.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -96,8 +97,9 @@ std::vector<TimingOutcome> run_here(const std::vector<TimingCase>& all, const st
   return out;
 }
 
-// Cases dealt to `shards` processes, largest first onto the least loaded (a case's cost is about
-// its simulated steps), each shard in case order.
+// Cases dealt to `shards` processes, largest first onto the least loaded shard with room for it
+// (a case's cost is about its simulated steps; a shard holds at most kMaxSystemsPerProcess, and
+// shards * kMaxSystemsPerProcess >= cases), each shard in case order.
 std::vector<std::vector<std::size_t>> deal(const std::vector<TimingCase>& cases, unsigned shards) {
   std::vector<std::size_t> order(cases.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
@@ -106,7 +108,10 @@ std::vector<std::vector<std::size_t>> deal(const std::vector<TimingCase>& cases,
   std::vector<std::vector<std::size_t>> out(shards);
   std::vector<double> load(shards, 0);
   for (std::size_t i : order) {
-    const std::size_t s = static_cast<std::size_t>(std::min_element(load.begin(), load.end()) - load.begin());
+    std::size_t s = shards;
+    for (std::size_t k = 0; k < shards; ++k) {
+      if (out[k].size() < kMaxSystemsPerProcess && (s == shards || load[k] < load[s])) s = k;
+    }
     out[s].push_back(i);
     load[s] += cases[i].solver.fixed_steps;
   }
@@ -149,51 +154,122 @@ TimingOutcome from_message(const nlohmann::json& j) {
   _exit(0);  // no atexit handlers, no stdio flush: the parent owns those
 }
 
-std::string read_all(int fd) {
-  std::string text;
-  char buffer[65536];
-  for (ssize_t n; (n = ::read(fd, buffer, sizeof buffer)) != 0;) {
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      throw std::runtime_error(std::string("timing study: reading a worker's results failed: ") + std::strerror(errno));
-    }
-    text.append(buffer, static_cast<std::size_t>(n));
-  }
-  return text;
-}
-
 }  // namespace
 
 unsigned default_study_processes() { return std::max(1u, std::min(std::thread::hardware_concurrency(), 8u)); }
+
+namespace {
+
+// One forked child per shard: its pid and the read end of its pipe.
+struct Worker {
+  pid_t pid = -1;
+  int fd = -1;
+  std::size_t shard = 0;
+  std::string text;
+};
+
+Worker start_worker(const std::vector<TimingCase>& cases, const std::vector<std::vector<std::size_t>>& dealt, std::size_t shard,
+                    const std::vector<Worker>& running) {
+  int fds[2];
+  if (::pipe(fds) != 0) throw std::runtime_error(std::string("timing study: pipe: ") + std::strerror(errno));
+  std::fflush(nullptr);  // nothing buffered may be written twice
+  const pid_t parent = ::getpid();
+  const pid_t pid = ::fork();
+  if (pid < 0) throw std::runtime_error(std::string("timing study: fork: ") + std::strerror(errno));
+  if (pid == 0) {
+    die_with_parent(parent, SIGKILL);  // a worker has nothing to clean up; it must not outlive the study
+    ::close(fds[0]);
+    for (const Worker& w : running) ::close(w.fd);
+    run_child(cases, dealt[shard], fds[1]);
+  }
+  ::close(fds[1]);
+  register_child(pid);  // ended with this process if it is interrupted
+  return {pid, fds[0], shard, {}};
+}
+
+// Waits for a finished worker and decodes its outcomes into `out`; returns an error message or "".
+std::string finish_worker(Worker& w, const std::vector<std::vector<std::size_t>>& dealt, std::vector<TimingOutcome>& out) {
+  ::close(w.fd);
+  int status = 0;
+  ::waitpid(w.pid, &status, 0);
+  unregister_child(w.pid);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || w.text.empty()) {
+    return "timing study: worker process for shard " + std::to_string(w.shard) + " died (status " + std::to_string(status) + ")";
+  }
+  const nlohmann::json answer = nlohmann::json::parse(w.text);
+  if (answer.contains("error")) return answer["error"].get<std::string>();
+  const auto& list = answer.at("outcomes");
+  for (std::size_t k = 0; k < list.size(); ++k) out[dealt[w.shard][k]] = from_message(list[k]);
+  return "";
+}
+
+// Appends what the worker has written; false at its end of file.
+bool read_some(Worker& w) {
+  char buffer[65536];
+  for (;;) {
+    const ssize_t n = ::read(w.fd, buffer, sizeof buffer);
+    if (n > 0) {
+      w.text.append(buffer, static_cast<std::size_t>(n));
+      return true;
+    }
+    if (n == 0) return false;
+    if (errno != EINTR) {
+      throw std::runtime_error(std::string("timing study: reading a worker's results failed: ") + std::strerror(errno));
+    }
+  }
+}
+
+// Every shard in a child of its own, at most `processes` at a time, the next one started as soon
+// as one ends. This process elaborates nothing.
+std::vector<TimingOutcome> run_in_children(const std::vector<TimingCase>& cases, const std::vector<std::vector<std::size_t>>& dealt,
+                                           unsigned processes) {
+  std::vector<TimingOutcome> out(cases.size());
+  std::vector<Worker> running;
+  std::string error;
+  std::size_t next = 0;
+  while (next < dealt.size() || !running.empty()) {
+    while (error.empty() && next < dealt.size() && running.size() < processes) {
+      try {
+        running.push_back(start_worker(cases, dealt, next++, running));
+      } catch (const std::exception& e) {
+        error = e.what();  // the running workers are still waited for below
+      }
+    }
+    if (running.empty()) break;
+    std::vector<pollfd> fds;
+    for (const Worker& w : running) fds.push_back({w.fd, POLLIN, 0});
+    if (::poll(fds.data(), fds.size(), -1) < 0) {
+      if (errno == EINTR) continue;
+      throw std::runtime_error(std::string("timing study: poll: ") + std::strerror(errno));
+    }
+    for (std::size_t i = running.size(); i-- > 0;) {
+      if (fds[i].revents == 0 || read_some(running[i])) continue;
+      const std::string e = finish_worker(running[i], dealt, out);
+      if (error.empty()) error = e;
+      running.erase(running.begin() + static_cast<std::ptrdiff_t>(i));
+    }
+  }
+  if (!error.empty()) throw std::runtime_error(error);
+  return out;
+}
+
+}  // namespace
 
 std::vector<TimingOutcome> run_timing_study(const std::vector<TimingCase>& cases, unsigned processes) {
   for (std::size_t i = 0; i < cases.size(); ++i) {  // bad cases fail here, before any process starts
     if (cases[i].scene == nullptr || cases[i].recording == nullptr || cases[i].solver.fixed_steps <= 0)
       (void)elaborate_check(cases[i]);
   }
-  const unsigned shards = static_cast<unsigned>(std::max<std::size_t>(1, std::min<std::size_t>(processes, cases.size())));
-  const std::vector<std::vector<std::size_t>> dealt = deal(cases, shards);
-  std::vector<pid_t> children;
-  std::vector<int> pipes;
-  std::fflush(nullptr);  // nothing buffered may be written twice
-  const pid_t parent = ::getpid();
-  for (unsigned s = 1; s < shards; ++s) {
-    int fds[2];
-    if (::pipe(fds) != 0) throw std::runtime_error(std::string("timing study: pipe: ") + std::strerror(errno));
-    const pid_t pid = ::fork();
-    if (pid < 0) throw std::runtime_error(std::string("timing study: fork: ") + std::strerror(errno));
-    if (pid == 0) {
-      die_with_parent(parent, SIGKILL);  // a worker has nothing to clean up; it must not outlive the study
-      ::close(fds[0]);
-      for (int fd : pipes) ::close(fd);
-      run_child(cases, dealt[s], fds[1]);
-    }
-    ::close(fds[1]);
-    register_child(pid);  // ended with this process if it is interrupted
-    children.push_back(pid);
-    pipes.push_back(fds[0]);
-  }
-  std::vector<TimingOutcome> out(cases.size());
+  processes = std::max(1u, processes);
+  const std::size_t n = cases.size();
+  const std::size_t shards = std::max<std::size_t>(std::max<std::size_t>(1, std::min<std::size_t>(processes, n)),
+                                                   (n + kMaxSystemsPerProcess - 1) / kMaxSystemsPerProcess);
+  const std::vector<std::vector<std::size_t>> dealt = deal(cases, static_cast<unsigned>(shards));
+  if (shards > processes) return run_in_children(cases, dealt, processes);
+  // One shard per process: this one runs the first, children the others.
+  std::vector<Worker> children;
+  for (std::size_t s = 1; s < shards; ++s) children.push_back(start_worker(cases, dealt, s, children));
+  std::vector<TimingOutcome> out(n);
   std::exception_ptr error;
   try {
     std::vector<TimingOutcome> mine = run_here(cases, dealt[0]);
@@ -202,23 +278,11 @@ std::vector<TimingOutcome> run_timing_study(const std::vector<TimingCase>& cases
     error = std::current_exception();
   }
   std::string child_error;
-  for (std::size_t c = 0; c < children.size(); ++c) {
-    const std::string text = read_all(pipes[c]);
-    ::close(pipes[c]);
-    int status = 0;
-    ::waitpid(children[c], &status, 0);
-    unregister_child(children[c]);
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || text.empty()) {
-      child_error = "timing study: worker process " + std::to_string(c + 1) + " died (status " + std::to_string(status) + ")";
-      continue;
+  for (Worker& w : children) {
+    while (read_some(w)) {
     }
-    const nlohmann::json answer = nlohmann::json::parse(text);
-    if (answer.contains("error")) {
-      child_error = answer["error"].get<std::string>();
-      continue;
-    }
-    const auto& list = answer.at("outcomes");
-    for (std::size_t k = 0; k < list.size(); ++k) out[dealt[c + 1][k]] = from_message(list[k]);
+    const std::string e = finish_worker(w, dealt, out);
+    if (!e.empty()) child_error = e;
   }
   if (error) std::rethrow_exception(error);
   if (!child_error.empty()) throw std::runtime_error(child_error);

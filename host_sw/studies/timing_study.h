@@ -5,6 +5,7 @@
 // nothing, so each one's simulated time is what it would be alone.
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -45,6 +46,13 @@ struct TimingCase {
 
 unsigned default_study_processes();  // the machine's cores, at most 8
 
+// The most systems one process elaborates. Simulated side by side, systems take turns at every
+// event, so a process cycles through all of their state: past about a hundred systems that state
+// no longer fits the caches and the time per system grows (measured: 1.2 ms of sc_start per
+// system at 100 systems, 5.3 ms at 1,000, for the same instructions; docs/results/performance.md).
+// Larger studies are cut into shards of at most this many, each run in a process of its own.
+inline constexpr std::size_t kMaxSystemsPerProcess = 64;
+
 struct TimingOutcome {
   std::string label;
   double simulated_seconds = 0;
@@ -55,11 +63,14 @@ struct TimingOutcome {
 // Throws std::invalid_argument for a bad case (before elaboration) and rethrows a system's error.
 // May be called once per process, before anything else elaborates SystemC.
 //
-// With processes > 1 the cases are dealt to that many processes (this one and forked children,
-// each elaborating its own share; a SystemC kernel is single-threaded and elaborates once per
-// process). Cases share nothing, so every outcome is what it would be in one process: the
-// children send their reports back as JSON, which keeps every number exactly, and the result is
-// in case order whatever the deal (test TimingStudy.ProcessesChangeNoOutcome).
+// The cases are dealt to shards (largest first onto the least loaded), as many as `processes`
+// and as many more as keep every shard within kMaxSystemsPerProcess; a SystemC kernel is
+// single-threaded and elaborates once per process, so each shard elaborates in a process of its
+// own. When the shards are no more than `processes`, this process runs the first and forked
+// children the others; otherwise every shard runs in a forked child, `processes` at a time. Cases
+// share nothing, so every outcome is what it would be in one process: the children send their
+// reports back as JSON, which keeps every number exactly, and the result is in case order whatever
+// the deal (tests TimingStudy.ProcessesChangeNoOutcome, TimingStudy.ShardsChangeNoOutcome).
 std::vector<TimingOutcome> run_timing_study(const std::vector<TimingCase>& cases,
                                             unsigned processes = default_study_processes());
 

@@ -17,8 +17,15 @@ namespace {
 constexpr std::size_t kFacesPerClaim = 8;
 
 // A face whose hit region holds more than 1/kDenseShare of the batch's segments runs the
-// streaming kernel (16 or 8 lanes) over all of them: cheaper than one scalar test per candidate.
-constexpr std::size_t kDenseShare = 8;
+// streaming kernel (16 or 8 lanes) over all of them: one pass of the kernel over a batch costs
+// about what collecting and testing that many candidates does (measured with bench_visibility:
+// 1/8, 1/32, 1/64 and 1/128 gave 0.30, 0.42, 0.48 and 0.51 of Embree's speed at 7 bits, where
+// regions are large, and the same speed at 15 and 31 bits).
+constexpr std::size_t kDenseShare = 128;
+
+// Fewer candidates than this run the scalar kernel one by one: gathering them for the vectorised
+// kernel (32-bit lanes up to 15 bits, 64-bit above) costs more than it saves.
+constexpr std::size_t kVectorCandidates = 16;
 
 }  // namespace
 
@@ -44,7 +51,12 @@ void FastFixedVisibility::load_triangles(const std::vector<Triangle>& faces) {
   points_.clear();
   faces_.clear();
   faces_.reserve(faces.size());
-  for (const Triangle& t : faces) faces_.push_back(pipeline::make_face_record(t, bits_));
+  face_terms_.reserve(faces.size());
+  face_terms_.clear();
+  for (const Triangle& t : faces) {
+    faces_.push_back(pipeline::make_face_record(t, bits_));
+    face_terms_.push_back(pipeline::face_error_terms(faces_.back(), bits_));
+  }
 }
 
 // FixedPointVisibility's count: for every face outside the source's sheet, every segment not ending
@@ -73,6 +85,21 @@ void FastFixedVisibility::submit(const SegmentBatch& batch) {
   // node's one end sheet, named by its first face, exactly as it would note one end face.
   end_sheets_.resize(n);
   for (std::size_t s = 0; s < n; ++s) end_sheets_[s] = sheets().first(batch.end_faces[s]);
+  // The segments ending on each sheet, grouped by sheet (a counting sort): a dense face sets
+  // its own sheet's segments back after the unmasked kernel.
+  // Segments ending on no face (-1) or on a face this backend does not hold are on no face's sheet.
+  const auto faces = static_cast<int>(faces_.size());
+  const auto held = [faces](int sheet) { return sheet >= 0 && sheet < faces; };
+  sheet_begin_.assign(faces_.size() + 1, 0);
+  for (std::size_t s = 0; s < n; ++s) {
+    if (held(end_sheets_[s])) ++sheet_begin_[static_cast<std::size_t>(end_sheets_[s]) + 1];
+  }
+  for (std::size_t f = 0; f < faces_.size(); ++f) sheet_begin_[f + 1] += sheet_begin_[f];
+  sheet_segments_.resize(sheet_begin_.back());
+  std::vector<std::uint32_t> next(sheet_begin_.begin(), sheet_begin_.end() - 1);
+  for (std::size_t s = 0; s < n; ++s) {
+    if (held(end_sheets_[s])) sheet_segments_[next[static_cast<std::size_t>(end_sheets_[s])]++] = static_cast<std::uint32_t>(s);
+  }
   tree_.mark_batch(points_, end_sheets_.data());
   source_sheet_ = sheets().first(batch.source_face);
   segments_ = n;
@@ -88,7 +115,7 @@ void FastFixedVisibility::submit(const SegmentBatch& batch) {
   brute_force_tests_ += count_brute_force_tests(batch);
   for (WorkerOutput& out : outputs_) {
     out.blocked.assign(n, 0);
-    out.tests = out.dense_faces = 0;
+    out.tests = out.dense_faces = out.dense_tests = 0;
   }
   next_face_.value.store(0, std::memory_order_relaxed);
   pending_ = true;
@@ -110,6 +137,7 @@ void FastFixedVisibility::finish_batch() {
     for (std::size_t s = 0; s < segments_; ++s) blocked_[s] |= out.blocked[s];
     tests_ += out.tests;
     dense_faces_ += out.dense_faces;
+    dense_tests_ += out.dense_tests;
   }
 }
 
@@ -131,7 +159,7 @@ RC_FAST_TARGETS std::uint64_t FastFixedVisibility::test_face(int face, WorkerOut
   const int sheet = sheets().first(face);
   if (sheet == source_sheet_) return 0;  // every segment's own surface
   const pipeline::FaceRecord& record = faces_[static_cast<std::size_t>(face)];
-  const pipeline::HitRegion region(record, start_, bits_);
+  const pipeline::HitRegion region(record, face_terms_[static_cast<std::size_t>(face)], start_, bits_);
   // Candidates: end points inside the region with a segment that does not end on this face's sheet.
   std::vector<std::uint32_t>& candidates = out.candidates;
   candidates.clear();
@@ -148,33 +176,57 @@ RC_FAST_TARGETS std::uint64_t FastFixedVisibility::test_face(int face, WorkerOut
     return !too_many;
   });
   if (too_many) return test_every_segment(face, out);
-  for (const std::uint32_t point : candidates) {
-    if (!pipeline::pipeline_hits(record.v0, record.edge1, record.edge2, start_,
-                                 points_.position(point), bits_)) {
-      continue;
+  const std::size_t n = candidates.size();
+  if (n < kVectorCandidates) {
+    for (const std::uint32_t point : candidates) {
+      if (pipeline::pipeline_hits(record.v0, record.edge1, record.edge2, start_, points_.position(point), bits_)) {
+        block_segments_ending_at(point, sheet, out);
+      }
     }
-    for (std::uint32_t s = points_.first_segment(point); s != EndPointCatalogue::kNone;
-         s = points_.next_segment(s)) {
-      if (end_sheets_[s] != sheet) out.blocked[s] = 1;
-    }
+    return n;
   }
-  return candidates.size();
+  // The candidates' end points side by side, through the vectorised streaming kernel.
+  out.candidate_x.resize(n);
+  out.candidate_y.resize(n);
+  out.candidate_z.resize(n);
+  out.candidate_hit.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const pipeline::FixedVec3& e = points_.position(candidates[i]);
+    out.candidate_x[i] = e.x;
+    out.candidate_y[i] = e.y;
+    out.candidate_z[i] = e.z;
+  }
+  pipeline::occlude_face(record, start_, out.candidate_x.data(), out.candidate_y.data(), out.candidate_z.data(), n,
+                         bits_, out.candidate_hit.data());
+  for (std::size_t i = 0; i < n; ++i) {
+    if (out.candidate_hit[i]) block_segments_ending_at(candidates[i], sheet, out);
+  }
+  return n;
 }
 
-// The brute force's way for one face: the streaming kernel over every segment of the batch,
-// those ending on the face's sheet masked.
+// A hit at `point` blocks every segment of the batch ending there, except those ending on the
+// face's own sheet.
+void FastFixedVisibility::block_segments_ending_at(std::uint32_t point, int sheet, WorkerOutput& out) const {
+  for (std::uint32_t s = points_.first_segment(point); s != EndPointCatalogue::kNone; s = points_.next_segment(s)) {
+    if (end_sheets_[s] != sheet) out.blocked[s] = 1;
+  }
+}
+
+// The brute force's way for one face: the streaming kernel over every segment of the batch. The
+// segments ending on the face's sheet are not its business: their flags are saved before and put
+// back after, which leaves them exactly as the masked kernel would (it ORs nothing into them).
 std::uint64_t FastFixedVisibility::test_every_segment(int face, WorkerOutput& out) const {
   ++out.dense_faces;
-  out.skip.resize(segments_);
-  std::size_t own = 0;
-  const int sheet = sheets().first(face);
-  for (std::size_t s = 0; s < segments_; ++s) {
-    out.skip[s] = end_sheets_[s] == sheet;
-    own += out.skip[s];
-  }
-  pipeline::occlude_face(faces_[static_cast<std::size_t>(face)], start_, end_x_.data(), end_y_.data(),
-                         end_z_.data(), segments_, bits_, out.blocked.data(), own ? out.skip.data() : nullptr);
-  return segments_ - own;
+  const auto sheet = static_cast<std::size_t>(sheets().first(face));
+  const std::uint32_t* own = sheet_segments_.data() + sheet_begin_[sheet];
+  const std::size_t owned = sheet_begin_[sheet + 1] - sheet_begin_[sheet];
+  out.saved.resize(owned);
+  for (std::size_t k = 0; k < owned; ++k) out.saved[k] = out.blocked[own[k]];
+  pipeline::occlude_face(faces_[static_cast<std::size_t>(face)], start_, end_x_.data(), end_y_.data(), end_z_.data(),
+                         segments_, bits_, out.blocked.data());
+  for (std::size_t k = 0; k < owned; ++k) out.blocked[own[k]] = out.saved[k];
+  out.dense_tests += segments_ - owned;
+  return segments_ - owned;
 }
 
 }  // namespace rc

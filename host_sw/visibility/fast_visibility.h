@@ -34,6 +34,7 @@
 #include "host_sw/radiosity/visibility.h"
 #include "host_sw/radiosity/worker_pool.h"
 #include "pipeline/fixed_format.h"
+#include "pipeline/hit_region.h"
 
 namespace rc {
 
@@ -59,6 +60,9 @@ class FastFixedVisibility : public VisibilityBackend {
   std::uint64_t brute_force_tests() const { return brute_force_tests_; }
   // Face-batch pairs that ran the streaming kernel over every segment (dense hit regions).
   std::uint64_t dense_faces() const { return dense_faces_; }
+  // The kernel tests those dense faces ran (part of tests_performed()): the rest is what the hit
+  // regions let through.
+  std::uint64_t dense_tests() const { return dense_tests_; }
 
   int frac_bits() const { return bits_; }
   int threads() const { return pool_.size(); }
@@ -67,25 +71,33 @@ class FastFixedVisibility : public VisibilityBackend {
   // One cache line each, so that workers never write to a line another one uses.
   struct alignas(64) WorkerOutput {
     std::vector<std::uint8_t> blocked;  // indexed by batch segment
-    std::uint64_t tests = 0, dense_faces = 0;
+    std::uint64_t tests = 0, dense_faces = 0, dense_tests = 0;
     // Scratch for one face: its candidate end points, and the own-face mask of a dense face.
     std::vector<std::uint32_t> candidates;
-    std::vector<std::uint8_t> skip;
+    std::vector<std::uint8_t> saved;  // a dense face's own segments' flags
+    // The candidates' end points (structure of arrays) and the kernel's answers.
+    std::vector<std::int64_t> candidate_x, candidate_y, candidate_z;
+    std::vector<std::uint8_t> candidate_hit;
   };
 
   void run_worker(int worker);
   std::uint64_t test_face(int face, WorkerOutput& out) const;
   std::uint64_t test_every_segment(int face, WorkerOutput& out) const;
+  void block_segments_ending_at(std::uint32_t point, int sheet, WorkerOutput& out) const;
   void finish_batch();
   std::uint64_t count_brute_force_tests(const SegmentBatch& batch) const;
 
   int bits_;
   std::vector<pipeline::FaceRecord> faces_;
+  std::vector<pipeline::FaceErrorTerms> face_terms_;  // the hit regions' face-only part, per face
   // The current batch.
   pipeline::FixedVec3 start_{};
   int source_sheet_ = -1;           // the source face's sheet (its first face)
   std::size_t segments_ = 0;
   std::vector<int> end_sheets_;      // per segment: its end face's sheet (first face)
+  // The batch's segments grouped by end sheet: those ending on sheet f are
+  // sheet_segments_[sheet_begin_[f] .. sheet_begin_[f + 1]).
+  std::vector<std::uint32_t> sheet_begin_, sheet_segments_;
   std::vector<std::int64_t> end_x_, end_y_, end_z_;  // quantised, in batch order (dense faces)
   EndPointCatalogue points_;
   EndPointTree tree_;
@@ -96,7 +108,7 @@ class FastFixedVisibility : public VisibilityBackend {
   std::vector<WorkerOutput> outputs_;  // one per worker
   std::vector<std::uint8_t> blocked_;
   bool pending_ = false;               // submitted, not yet collected
-  std::uint64_t tests_ = 0, brute_force_tests_ = 0, dense_faces_ = 0;
+  std::uint64_t tests_ = 0, brute_force_tests_ = 0, dense_faces_ = 0, dense_tests_ = 0;
   WorkerPool pool_;                    // last: its threads stop before the members above go
 };
 

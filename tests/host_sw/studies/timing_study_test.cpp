@@ -78,5 +78,41 @@ TEST(TimingStudy, ProcessesChangeNoOutcome) {
   EXPECT_EQ(dump(dealt), reference);
 }
 
+// More systems than one process elaborates: the study is cut into shards of at most
+// kMaxSystemsPerProcess. With more shards than processes every shard runs in a child, `processes`
+// at a time (1 and 2 below); with as many, this process runs one (3, last: SystemC elaborates once
+// per process). Every outcome must be what the case gives beside other neighbours (the reference:
+// three runs of consecutive cases, each in one process).
+TEST(TimingStudy, ShardsChangeNoOutcome) {
+  const Scene scene = small_cornell_box();
+  const SolverOptions so = steps(12);
+  const RecordedRun recorded = record_functional_run(scene, so, "fixed", 15, 1);
+  const std::size_t k = kMaxSystemsPerProcess;
+  std::vector<TimingCase> cases;
+  for (std::size_t i = 0; i < 2 * k + 8; ++i) {
+    TimingCase c;
+    c.label = std::to_string(i);
+    c.scene = &scene;
+    c.solver = steps(6 + static_cast<int>(i % 7));  // unequal costs: the deal mixes the runs
+    c.recording = &recorded.recording;
+    c.software = i % 5 == 4;
+    c.board.lanes = static_cast<board::LaneCount>(1 + i % 3);
+    c.board.concurrent = i % 2 == 1;
+    cases.push_back(c);
+  }
+  const auto part = [](const auto& v, std::size_t from, std::size_t to) {
+    return std::decay_t<decltype(v)>(v.begin() + static_cast<std::ptrdiff_t>(from), v.begin() + static_cast<std::ptrdiff_t>(to));
+  };
+  const std::size_t n = cases.size();
+  const std::string reference = in_one_process(part(cases, 0, k)) + in_one_process(part(cases, k, 2 * k)) +
+                                in_one_process(part(cases, 2 * k, n));
+  for (unsigned processes : {1u, 2u, 3u}) {
+    const std::vector<TimingOutcome> sharded = run_timing_study(cases, processes);
+    ASSERT_EQ(sharded.size(), n);
+    EXPECT_EQ(dump(part(sharded, 0, k)) + dump(part(sharded, k, 2 * k)) + dump(part(sharded, 2 * k, n)), reference)
+        << processes << " processes";
+  }
+}
+
 }  // namespace
 }  // namespace rc::test

@@ -91,7 +91,11 @@ TEST(FastCornell, RadiositySolutionIsBitIdenticalToBruteForce) {
     EXPECT_GT(expected.blocked_segments, 0u);
     EXPECT_EQ(fast.brute_force_tests(), brute.tests_performed());
     // At 7 bits the truncation error is a large part of the scene, and so is every hit region.
-    EXPECT_LT(fast.tests_performed(), brute.tests_performed() / (bits == 7 ? 1 : 50)) << bits << " bits";
+    // Faces whose regions hold more than 1/128 of a step's segments run the streaming kernel over
+    // all of them (cheaper per test); the regions themselves must let through under 1/50, and
+    // few faces may go dense.
+    EXPECT_LT(fast.tests_performed() - fast.dense_tests(), brute.tests_performed() / (bits == 7 ? 1 : 50)) << bits << " bits";
+    EXPECT_LT(fast.dense_tests(), brute.tests_performed() / (bits == 7 ? 2 : 4)) << bits << " bits";
   }
 }
 

@@ -1,0 +1,145 @@
+// Time per simulated system of a timing study (studies/timing_study.h) against the number of
+// systems elaborated in one process: a study that scales linearly keeps the time per system flat
+// from 100 to 4,000 systems.
+//
+//   build/bench/bench_systems
+//
+// Every system replays the same recording (the 70-face, 280-patch Cornell Box, kSteps shooting
+// steps at 15 bits) on a board configuration of its own (1-4 lanes, serial or concurrent, every
+// fourth one the software-only implementation), so the systems are what a design search
+// elaborates. SystemC elaborates once per process, so every measurement runs in a forked child
+// with one process (run_timing_study(cases, 1)); the child reports elaboration plus simulation
+// wall time, which is what the benchmark's manual time is.
+//
+// Counters: us_per_system = the study's wall time (elaboration, simulation, reports) / systems:
+// the figure that must stay flat as the systems grow.
+#include <benchmark/benchmark.h>
+#include <systemc>
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "scenes/prepare.h"
+#include "host_sw/studies/timing_study.h"
+
+namespace {
+
+constexpr int kSteps = 40;
+
+struct Workload {
+  rc::Scene scene;
+  rc::SolverOptions solver;
+  rc::RecordedRun recorded;
+};
+
+const Workload& workload() {
+  static const Workload w = [] {
+    Workload made;
+    rc::SceneOptions options;
+    options.face_target = 70;
+    options.face_levels = 0;
+    options.patch_levels = 1;
+    made.scene = rc::prepare_scene(options).scene;
+    made.solver.fixed_steps = kSteps;
+    made.recorded = rc::record_functional_run(made.scene, made.solver, "fast", 15, 1);
+    return made;
+  }();
+  return w;
+}
+
+std::vector<rc::TimingCase> make_cases(const Workload& w, int systems) {
+  std::vector<rc::TimingCase> cases;
+  cases.reserve(static_cast<std::size_t>(systems));
+  for (int i = 0; i < systems; ++i) {
+    rc::TimingCase c;
+    c.label = std::to_string(i);
+    c.scene = &w.scene;
+    c.solver = w.solver;
+    c.recording = &w.recorded.recording;
+    c.software = i % 4 == 3;
+    c.board.lanes = static_cast<rc::board::LaneCount>(1 + i % 4);
+    c.board.concurrent = i % 2 == 1;
+    cases.push_back(c);
+  }
+  return cases;
+}
+
+// Runs the study in a forked child (one SystemC elaboration per process) and returns its wall
+// time in seconds, as the child measured it (the fork and the pipe are not part of it).
+double study_seconds(const std::vector<rc::TimingCase>& cases) {
+  int fds[2];
+  if (::pipe(fds) != 0) throw std::runtime_error("bench_systems: pipe failed");
+  std::fflush(nullptr);
+  const pid_t pid = ::fork();
+  if (pid < 0) throw std::runtime_error("bench_systems: fork failed");
+  if (pid == 0) {
+    ::close(fds[0]);
+    double seconds = -1;
+    try {
+      const auto t0 = std::chrono::steady_clock::now();
+      const std::vector<rc::TimingOutcome> outcomes = rc::run_timing_study(cases, 1);
+      seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      if (outcomes.size() != cases.size()) seconds = -1;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "bench_systems: %s\n", e.what());
+    }
+    if (::write(fds[1], &seconds, sizeof seconds) != sizeof seconds) _exit(3);
+    _exit(0);
+  }
+  ::close(fds[1]);
+  double seconds = -1;
+  const ssize_t n = ::read(fds[0], &seconds, sizeof seconds);
+  ::close(fds[0]);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  if (n != sizeof seconds || seconds < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    throw std::runtime_error("bench_systems: the study's child process failed");
+  }
+  return seconds;
+}
+
+// range(0): systems in one process.
+void BM_TimingStudy(benchmark::State& state) {
+  const Workload& w = workload();
+  const int systems = static_cast<int>(state.range(0));
+  const std::vector<rc::TimingCase> cases = make_cases(w, systems);
+  double total = 0;
+  for (auto _ : state) {
+    const double seconds = study_seconds(cases);
+    state.SetIterationTime(seconds);
+    total += seconds;
+  }
+  state.counters["systems"] = systems;
+  state.counters["us_per_system"] = 1e6 * total / static_cast<double>(state.iterations()) / systems;
+  state.SetItemsProcessed(state.iterations() * systems);
+  state.SetLabel(std::to_string(kSteps) + " steps of 70 faces / 280 patches per system");
+}
+BENCHMARK(BM_TimingStudy)
+    ->ArgName("systems")
+    ->Arg(100)
+    ->Arg(250)
+    ->Arg(500)
+    ->Arg(1000)
+    ->Arg(2000)
+    ->Arg(4000)
+    ->Iterations(1)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+// SystemC's library owns main() and calls sc_main.
+int sc_main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

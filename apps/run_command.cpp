@@ -107,6 +107,12 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   board.on_progress = [&](const StepProgress& p) {
     progress.update("step %d, %.2f%% converged", p.step, 100.0 * p.convergence_reached);
   };
+  // Sec 5.6 on the run's device, from the profiles the run uses (loaded once, by run_simulation).
+  // Estimated before the simulation: a profile that cannot give the estimate is said so by an
+  // exception caught here, and once SystemC has switched stacks AddressSanitizer cannot follow a
+  // throw (docs/reliability.md, "Sanitizers").
+  LanesThatFit fit = float_arith(o) ? lanes_that_fit(*board.device_profile, *board.host_profile, pipeline::parse_float_format(o.arith))
+                                    : lanes_that_fit(*board.device_profile, *board.host_profile, o.bits);
   BoardRunResult r = run_radiosity_on_board(scene, o.solver, board);
   RunOutcome out;
   out.solver = std::move(r.solver);
@@ -118,9 +124,7 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   out.visibility_tests = r.report.intersections.tests;
   out.board = std::move(r.report);
   out.trace_json = std::move(r.trace_json);
-  // The profiles the run used (loaded once, by run_simulation), not read again.
-  out.lanes_that_fit = float_arith(o) ? lanes_that_fit(*board.device_profile, *board.host_profile, pipeline::parse_float_format(o.arith))
-                                      : lanes_that_fit(*board.device_profile, *board.host_profile, o.bits);
+  out.lanes_that_fit = std::move(fit);
   return out;
 }
 

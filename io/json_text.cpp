@@ -191,4 +191,14 @@ void throw_json_syntax_error(const nlohmann::json::parse_error& e, std::string_v
                       ": not valid JSON: " + parser_reason(e.what()));
 }
 
+void throw_json_number_error(const nlohmann::json::out_of_range& e, std::string_view text, const std::string& path) {
+  const std::string what = e.what();  // "... number overflow parsing '2e308'"
+  const std::size_t open = what.find('\''), close = what.rfind('\'');
+  const std::string number = open != std::string::npos && close > open ? what.substr(open + 1, close - open - 1) : "";
+  const std::size_t at = number.empty() ? std::string_view::npos : text.find(number);
+  const std::string where = at == std::string_view::npos ? "" : "line " + std::to_string(position_of(text, at).line) + ": ";
+  throw JsonTextError(path + ": " + where + "the number " + (number.empty() ? std::string("") : "'" + number + "' ") +
+                      "is beyond the range of a double (numbers must be finite)");
+}
+
 }  // namespace rc::io

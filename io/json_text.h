@@ -37,6 +37,11 @@ std::string_view check_json_text(std::string_view text, const std::string& path)
 [[noreturn]] void throw_json_syntax_error(const nlohmann::json::parse_error& e, std::string_view text,
                                           const std::string& path);
 
+// "<path>: line L: a number beyond the range of a double ('2e308')": nlohmann's out_of_range.406,
+// which has no position of its own (the line is that of the number's first occurrence).
+[[noreturn]] void throw_json_number_error(const nlohmann::json::out_of_range& e, std::string_view text,
+                                          const std::string& path);
+
 // `text` parsed as JSON (nlohmann::json or nlohmann::ordered_json), or a JsonTextError naming `path`.
 template <class Json = nlohmann::json>
 Json parse_json_text(std::string_view text, const std::string& path) {
@@ -45,6 +50,8 @@ Json parse_json_text(std::string_view text, const std::string& path) {
     return Json::parse(body.begin(), body.end());
   } catch (const nlohmann::json::parse_error& e) {
     throw_json_syntax_error(e, body, path);
+  } catch (const nlohmann::json::out_of_range& e) {  // a number that overflows a double
+    throw_json_number_error(e, body, path);
   }
 }
 

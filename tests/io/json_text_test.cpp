@@ -73,6 +73,14 @@ TEST(JsonText, SyntaxErrorsSayLineAndColumn) {
   EXPECT_NE(error_of("{\"a\": \"unterminated}"), "");
 }
 
+// nlohmann throws out_of_range.406 for a number beyond a double (the fuzzer's composition with
+// "2e308" ended in std::terminate): named with its line like any other error.
+TEST(JsonText, ANumberBeyondADoubleIsNamedWithItsLine) {
+  EXPECT_EQ(error_of("{\n  \"min\": [0, 2e308, 0]\n}"),
+            "p.json: line 2: the number '2e308' is beyond the range of a double (numbers must be finite)");
+  EXPECT_EQ(error_of("[-1e400]"), "p.json: line 1: the number '-1e400' is beyond the range of a double (numbers must be finite)");
+}
+
 TEST(JsonText, OtherEncodingsAreNamed) {
   EXPECT_EQ(error_of(std::string("\xFF\xFE{\0}\0", 6)),
             "p.json: is UTF-16 (little-endian byte order mark), not UTF-8; save it as UTF-8");

@@ -29,6 +29,20 @@ inline void expect_identical(const std::vector<Spectrum>& a, const std::vector<S
   EXPECT_EQ(differ, 0u) << "patches whose radiosity differs";
 }
 
+// The cycle-level wrapper against the fast one on the same run: the same radiosity bit for bit, the
+// same end time, FPGA busy time and wrapper cycles, and the same reads, writes and busy time per bank.
+inline void expect_cycle_model_matches_fast(const BoardSystem& fast, const BoardSystem& cycle) {
+  expect_identical(fast.result().radiosity, cycle.result().radiosity);
+  EXPECT_EQ(fast.end_time(), cycle.end_time());
+  EXPECT_EQ(fast.driver().stats().fpga_busy, cycle.driver().stats().fpga_busy);
+  EXPECT_EQ(fast.board.wrapper().stats().busy_cycles, cycle.board.wrapper().stats().busy_cycles);
+  for (unsigned b = 0; b < fast.board.params().banks; ++b) {
+    EXPECT_EQ(fast.board.bank(b).report().reads, cycle.board.bank(b).report().reads) << "bank " << b;
+    EXPECT_EQ(fast.board.bank(b).report().writes, cycle.board.bank(b).report().writes) << "bank " << b;
+    EXPECT_EQ(fast.board.bank(b).report().busy, cycle.board.bank(b).report().busy) << "bank " << b;
+  }
+}
+
 inline SolverResult cpu_fixed_point(const Scene& scene, const SolverOptions& options, int bits) {
   FixedPointVisibility v(bits);
   return ProgressiveRadiosity(scene, v, options).run();

@@ -159,15 +159,7 @@ TEST(BoardSystem, CycleLevelModelMatchesFastModelInTheSolver) {
   o.model = board::WrapperModel::cycle;
   BoardSystem cycle("cycle", scene, so, setup(o));
   run_all({&fast, &cycle});
-  expect_identical(fast.result().radiosity, cycle.result().radiosity);
-  EXPECT_EQ(fast.end_time(), cycle.end_time());
-  EXPECT_EQ(fast.driver().stats().fpga_busy, cycle.driver().stats().fpga_busy);
-  EXPECT_EQ(fast.board.wrapper().stats().busy_cycles, cycle.board.wrapper().stats().busy_cycles);
-  for (unsigned b = 0; b < fast.board.params().banks; ++b) {
-    EXPECT_EQ(fast.board.bank(b).report().reads, cycle.board.bank(b).report().reads) << "bank " << b;
-    EXPECT_EQ(fast.board.bank(b).report().writes, cycle.board.bank(b).report().writes) << "bank " << b;
-    EXPECT_EQ(fast.board.bank(b).report().busy, cycle.board.bank(b).report().busy) << "bank " << b;
-  }
+  expect_cycle_model_matches_fast(fast, cycle);
 }
 
 // The runner: the report, the trace document (the caller writes it) and the VCD SystemC writes as it

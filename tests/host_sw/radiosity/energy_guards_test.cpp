@@ -13,28 +13,15 @@
 #include "scenes/normalise.h"
 #include "scenes/subdivide.h"
 #include "tests/common/simple_scenes.h"
+#include "tests/host_sw/radiosity/guard_support.h"
 
 namespace rc {
 namespace {
 
-SolverResult solve(const Scene& scene, FormFactorKind kind, bool cull = true) {
-  FloatVisibility visibility;
-  SolverOptions options;
-  options.form_factor = kind;
-  options.cull_receivers = cull;
-  return ProgressiveRadiosity(scene, visibility, options).run();
-}
+using test::contains;
+using test::divergence_of;
+using test::solve;
 
-std::string divergence_of(const Scene& scene, FormFactorKind kind) {
-  try {
-    solve(scene, kind);
-  } catch (const SolveDiverged& e) {
-    return e.what();
-  }
-  return "";
-}
-
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 // Two unit plates facing each other `gap` apart (the lower one faces +z, the upper -z), each two
 // triangles; the lower emits `lower_emission`, the upper `upper_emission`; both reflect `rho`.

@@ -13,9 +13,14 @@
 #include "scenes/prepare.h"
 #include "scenes/subdivide.h"
 #include "tests/common/simple_scenes.h"
+#include "tests/host_sw/radiosity/guard_support.h"
 
 namespace rc {
 namespace {
+
+using test::contains;
+using test::divergence_of;
+using test::solve;
 
 // A quad folded like a closing book (its two triangles face each other, 23 degrees apart: what a
 // scene file refuses now, built here by hand as a mesh could give it) lit through its opening by a
@@ -38,23 +43,6 @@ Scene folded_quad_scene(int patch_levels) {
   return s;
 }
 
-SolverResult solve(const Scene& scene, FormFactorKind kind) {
-  FloatVisibility visibility;
-  SolverOptions options;
-  options.form_factor = kind;
-  return ProgressiveRadiosity(scene, visibility, options).run();
-}
-
-std::string divergence_of(const Scene& scene, FormFactorKind kind) {
-  try {
-    solve(scene, kind);
-  } catch (const SolveDiverged& e) {
-    return e.what();
-  }
-  return "";
-}
-
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 // Before the guard this solve ran the 10,000,000 steps of the cap and wrote inf.
 TEST(SolveGuard, AFoldedQuadStopsWithTheStepThePairAndAdvice) {

@@ -2,17 +2,16 @@
 // the axes (the classic five, hosts, and any profile field by its path) and fixed profile
 // settings. It comes from a study file (study_file.h) or from `rc2000sim sweep`'s options, and is
 // recorded, resolved (every default filled in), in every output folder and shard as
-// study_json(); study_from_json() reads that record back (`sweep merge` plans from it).
+// study_json() (study_json.h); study_from_json() reads that record back (`sweep merge` plans from it).
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "host_sw/radiosity/radiosity.h"
 #include "scenes/prepare.h"
-#include "host_sw/studies/config_sweep.h"
+#include "host_sw/studies/sweep_config.h"
+#include "host_sw/studies/sweep_options.h"
 
 namespace rc {
 
@@ -52,11 +51,6 @@ struct Study {
 // unique, every profile known, every profile path a field of every device (or host) swept and every
 // value accepted by the profile's loader, and the size of the sweep. Errors name the study.
 void check_study(const Study& study);
-
-// The resolved study as recorded (schema rc2000sim.study/1) and back. study_from_json resolves the
-// profile paths again and runs check_study.
-nlohmann::ordered_json study_json(const Study& study);
-Study study_from_json(const nlohmann::ordered_json& json);
 
 // Resolves a profile path against the study's first device and first host (profile_setting.h).
 ProfileField resolve_study_field(const std::string& path, const std::vector<std::string>& devices,

@@ -14,9 +14,7 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
-#include "host_sw/studies/config_sweep.h"
+#include "host_sw/studies/sweep_row.h"
 #include "host_sw/studies/study.h"
 
 namespace rc {
@@ -68,10 +66,6 @@ std::vector<unsigned> deal_groups(const std::vector<double>& costs, unsigned sha
 // one line per phase.
 ShardResult run_study_shard(const Study& study, const Shard& shard,
                             const std::function<void(const std::string&)>& progress);
-
-// The shard file (rc2000sim.shard/1) and back; numbers round-trip exactly.
-nlohmann::ordered_json shard_json(const ShardResult& shard);
-ShardResult shard_from_json(const nlohmann::ordered_json& json, const std::string& origin);
 
 // One scene's sweep, complete.
 struct SceneSweep {

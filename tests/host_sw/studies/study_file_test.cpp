@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "host_sw/studies/study_file.h"
+#include "host_sw/studies/study_json.h"
+#include "host_sw/studies/sweep_columns.h"
 
 namespace rc {
 namespace {

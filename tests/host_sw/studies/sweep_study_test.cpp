@@ -5,6 +5,9 @@
 
 #include "host_sw/radiosity/radiosity.h"
 #include "host_sw/studies/study_file.h"
+#include "host_sw/studies/shard_json.h"
+#include "host_sw/studies/sweep_columns.h"
+#include "host_sw/studies/sweep_row_json.h"
 #include "host_sw/studies/sweep_study.h"
 #include "host_sw/visibility/visibility_factory.h"
 

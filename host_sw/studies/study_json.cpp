@@ -1,0 +1,113 @@
+#include "host_sw/studies/study_json.h"
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+namespace rc {
+
+namespace {
+
+nlohmann::ordered_json scene_json(const StudyScene& s) {
+  nlohmann::ordered_json j = {{"name", s.name},
+                              {"file", s.source},
+                              {"faces", s.options.face_target},
+                              {"face_levels", s.options.face_levels},
+                              {"patch_levels", s.options.patch_levels},
+                              {"patch_size", s.options.patch_size}};
+  if (!s.form_factor.empty()) j["form_factor"] = s.form_factor;  // a form-factor axis only
+  return j;
+}
+
+StudyScene scene_from_json(const nlohmann::ordered_json& j) {
+  StudyScene s;
+  s.name = j.at("name").get<std::string>();
+  s.source = j.at("file").get<std::string>();
+  s.options.file = s.source;  // a recorded study is merged, not solved: nothing loads it
+  s.options.face_target = j.at("faces").get<int>();
+  s.options.face_levels = j.at("face_levels").get<int>();
+  s.options.patch_levels = j.at("patch_levels").get<int>();
+  s.options.patch_size = j.at("patch_size").get<double>();
+  s.form_factor = j.value("form_factor", std::string());
+  if (!s.form_factor.empty()) (void)parse_form_factor_kind(s.form_factor);
+  return s;
+}
+
+nlohmann::ordered_json setting_json(const ProfileSetting& s) { return {{"path", s.field.path}, {"value", s.value}}; }
+
+}  // namespace
+
+nlohmann::ordered_json study_json(const Study& s) {
+  nlohmann::ordered_json j;
+  j["schema"] = "rc2000sim.study/1";
+  j["name"] = s.name;
+  j["description"] = s.description;
+  j["file"] = std::filesystem::path(s.file).filename().string();  // where it lay is not part of the study
+  nlohmann::ordered_json scenes = nlohmann::ordered_json::array();
+  for (const StudyScene& scene : s.scenes) scenes.push_back(scene_json(scene));
+  j["scenes"] = scenes;
+  j["solver"] = {{"steps", to_string(s.steps)},
+                 {"convergence", s.convergence},
+                 {"paper_faithful", s.paper_faithful},
+                 {"visibility", s.visibility},
+                 {"full_banks", s.full_banks}};
+  // Recorded when not the paper's point rule, so records of point studies read as before it existed.
+  if (s.form_factor != Study{}.form_factor) j["solver"]["form_factor"] = s.form_factor;
+  nlohmann::ordered_json profile = nlohmann::ordered_json::array();
+  for (const ProfileAxis& a : s.axes.profile) profile.push_back({{"path", a.field.path}, {"values", a.values}});
+  nlohmann::ordered_json concurrent = nlohmann::ordered_json::array();
+  for (bool c : s.axes.concurrent) concurrent.push_back(c);
+  j["axes"] = {{"devices", s.axes.devices},         {"bits", s.axes.bits},
+               {"concurrent", concurrent},            {"hosts", s.axes.hosts},
+               {"cards", s.axes.cards},               {"card_split", choice_name_vector(s.axes.card_splits)},
+               {"card_bus", choice_name_vector(s.axes.card_buses)},       {"profile", profile},
+               {"lanes", s.axes.lanes},               {"banks", s.axes.banks}};
+  nlohmann::ordered_json fixed = nlohmann::ordered_json::array();
+  for (const ProfileSetting& f : s.fixed) fixed.push_back(setting_json(f));
+  j["fixed"] = fixed;
+  return j;
+}
+
+Study study_from_json(const nlohmann::ordered_json& j) {
+  if (j.value("schema", "") != "rc2000sim.study/1")
+    throw std::invalid_argument("not a resolved study (schema rc2000sim.study/1)");
+  Study s;
+  try {
+    s.name = j.at("name").get<std::string>();
+    s.description = j.at("description").get<std::string>();
+    s.file = j.at("file").get<std::string>();
+    for (const auto& scene : j.at("scenes")) s.scenes.push_back(scene_from_json(scene));
+    const auto& solver = j.at("solver");
+    s.steps = parse_steps(solver.at("steps").get<std::string>());
+    s.convergence = solver.at("convergence").get<double>();
+    s.paper_faithful = solver.at("paper_faithful").get<bool>();
+    s.visibility = solver.at("visibility").get<std::string>();
+    s.full_banks = solver.at("full_banks").get<bool>();
+    s.form_factor = solver.value("form_factor", Study{}.form_factor);
+    const auto& axes = j.at("axes");
+    s.axes.devices = axes.at("devices").get<std::vector<std::string>>();
+    s.axes.bits = axes.at("bits").get<std::vector<int>>();
+    s.axes.concurrent = axes.at("concurrent").get<std::vector<bool>>();
+    s.axes.hosts = axes.at("hosts").get<std::vector<std::string>>();
+    s.axes.cards = axes.at("cards").get<std::vector<int>>();
+    s.axes.card_splits = parse_choices<CardSplit>(axes.at("card_split").get<std::vector<std::string>>());
+    s.axes.card_buses = parse_choices<CardBus>(axes.at("card_bus").get<std::vector<std::string>>());
+    s.axes.lanes = axes.at("lanes").get<std::vector<int>>();
+    s.axes.banks = axes.at("banks").get<std::vector<int>>();
+    for (const auto& a : axes.at("profile")) {
+      ProfileAxis axis{resolve_study_field(a.at("path").get<std::string>(), s.axes.devices, s.axes.hosts), {}};
+      for (const auto& v : a.at("values")) axis.values.push_back(v);
+      s.axes.profile.push_back(axis);
+    }
+    for (const auto& f : j.at("fixed")) {
+      s.fixed.push_back({resolve_study_field(f.at("path").get<std::string>(), s.axes.devices, s.axes.hosts),
+                         f.at("value")});
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw std::invalid_argument(std::string("resolved study: ") + e.what());
+  }
+  check_study(s);
+  return s;
+}
+
+}  // namespace rc

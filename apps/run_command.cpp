@@ -12,6 +12,7 @@
 #include "apps/progress.h"
 #include "apps/report.h"
 #include "io/parse_number.h"
+#include "host_sw/platform/run_bounds.h"
 #include "host_sw/radiosity/png_writer.h"
 #include "pipeline/float_format.h"
 #include "host_sw/visibility/fixed_visibility.h"
@@ -156,9 +157,11 @@ void print_board_summary(const RunReport& b) {
               b.board.device.clock_hz / 1e6, b.board.device.banks,
               static_cast<unsigned long long>(b.board.batching.passes),
               (static_cast<double>(b.board.pci.bytes_to_board) + static_cast<double>(b.board.pci.bytes_to_host)) / 1e6);
-  for (const LaneReport& lane : b.board.lanes) {
-    std::printf("  lane %-7u utilisation %.1f%%\n", lane.lane, 100.0 * lane.utilisation);
-  }
+  // What bounds the run and its FPGA stream, and the bandwidth each resource gave (docs/board.md,
+  // "What bounds a run"), instead of one utilisation line per lane.
+  const RunBounds bounds = run_bounds(b);
+  std::printf("  bound        %s\n", bounds.summary().c_str());
+  std::printf("  bandwidth    %s\n", bounds.bandwidth_line().c_str());
   for (const CardReport& c : b.board.cards.per_card) {
     std::printf("  card %-7u %llu passes, FPGA busy %.6f s, PCI bus busy %.6f s (waited %.6f s), driver idle %.6f s\n",
                 c.card, static_cast<unsigned long long>(c.passes), c.fpga_busy_seconds, c.pci_bus_busy_seconds,

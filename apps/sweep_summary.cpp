@@ -15,6 +15,12 @@ std::string name_list_text(const std::vector<std::string>& items) {
 
 namespace {
 
+std::string rate_text(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", x);
+  return text;
+}
+
 std::string cell(const SweepRow& r) {
   char text[16];
   if (r.validity == Validity::does_not_fit) return "fit";
@@ -79,6 +85,14 @@ void print_blocks(const std::vector<SweepRow>& rows, const SweepAxes& axes) {
       std::printf("  fastest: %u lanes, %u banks: %.3f s, %.2fx one lane, %.2fx software; bottleneck %s\n",
                   best->config.lanes, best->config.banks, best->simulated_seconds, best->speedup_vs_one_lane,
                   best->speedup_vs_software, best->bottleneck.c_str());
+      if (!best->stream_bound.empty()) {
+        std::printf("           FPGA stream bound by %s at %.3g tests/s%s\n", best->stream_bound.c_str(),
+                    best->stream_bound_tests_per_second,
+                    best->stream_next.empty() ? ""
+                                              : ("; next: " + best->stream_next + " at " +
+                                                 rate_text(best->stream_next_tests_per_second) + " tests/s")
+                                                    .c_str());
+      }
     }
     if (frugal) {
       std::printf("  most frugal: %u lanes, %u banks: %.4g J (%.4g J per step, %.4g W), %.3f s\n", frugal->config.lanes,

@@ -3,6 +3,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "host_sw/platform/run_bounds.h"
+#include "host_sw/platform/run_bounds_json.h"
+
 namespace rc {
 
 // ---- the internal codec (every field, by name) ------------------------------------------------------
@@ -220,6 +223,7 @@ ordered_json board_json(const RunReport& r) {
     limits.push_back({{"limit", l.limit}, {"passes", l.passes}, {"fpga_busy_seconds", l.fpga_busy_seconds}});
   }
   j["stream_limits"] = limits;
+  j["bounds"] = run_bounds_json(run_bounds(r));  // docs/board.md, "What bounds a run"
   j["intersections"] = {{"tests", r.intersections.tests},
                         {"per_second", r.intersections.per_second},
                         {"per_second_while_fpga_busy", r.intersections.per_second_while_fpga_busy}};

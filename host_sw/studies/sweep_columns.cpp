@@ -57,7 +57,20 @@ const char* const kColumns[] = {"device",
                                 "pci_joules",
                                 "host_joules",
                                 "energy_missing",
-                                "pareto_time_energy"};
+                                "pareto_time_energy",
+                                "stream_bound",
+                                "stream_bound_tests_per_second",
+                                "stream_next",
+                                "stream_next_tests_per_second",
+                                "run_bound",
+                                "run_next",
+                                "lane_tests_per_second_peak",
+                                "sram_bytes_per_second",
+                                "sram_bytes_per_test",
+                                "busiest_bank_bytes_per_second",
+                                "pci_bytes_per_second_to_board",
+                                "pci_bytes_per_second_to_host",
+                                "pci_mode"};
 
 constexpr std::size_t kConfigColumns = 5;  // device .. concurrent: the extra columns follow them
 
@@ -135,7 +148,20 @@ std::vector<SweepCell> sweep_cells(const SweepRow& r, const std::vector<std::str
       number(r.pci_joules),
       number(r.host_joules),
       text(r.energy_missing),
-      ok && std::isfinite(r.energy_joules) ? integer(r.pareto_time_energy ? 1 : 0) : none()};
+      ok && std::isfinite(r.energy_joules) ? integer(r.pareto_time_energy ? 1 : 0) : none(),
+      text(r.stream_bound),
+      number(r.stream_bound_tests_per_second),
+      text(r.stream_next),
+      number(r.stream_next_tests_per_second),
+      text(r.run_bound),
+      text(r.run_next),
+      number(r.lane_tests_per_second_peak),
+      number(r.sram_bytes_per_second),
+      number(r.sram_bytes_per_test),
+      number(r.busiest_bank_bytes_per_second),
+      number(r.pci_bytes_per_second_to_board),
+      number(r.pci_bytes_per_second_to_host),
+      text(r.pci_mode)};
   values.insert(values.end(), rest.begin(), rest.end());
   return values;
 }

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "host_sw/platform/run_bounds.h"
+
 namespace rc {
 
 namespace {
@@ -42,6 +44,41 @@ void energy_columns(const RunReport& report, SweepRow& r) {
   r.host_joules = component_joules(e, "host");
 }
 
+void set_no_bounds(SweepRow& r) {
+  for (double* x : {&r.stream_bound_tests_per_second, &r.stream_next_tests_per_second, &r.lane_tests_per_second_peak,
+                    &r.sram_bytes_per_second, &r.sram_bytes_per_test, &r.busiest_bank_bytes_per_second,
+                    &r.pci_bytes_per_second_to_board, &r.pci_bytes_per_second_to_host})
+    *x = kNaN;
+}
+
+double ceiling_of(const ResourceUse* u) { return u && u->tests_per_second_ceiling ? *u->tests_per_second_ceiling : kNaN; }
+
+void bound_columns(const RunReport& report, SweepRow& r) {
+  const RunBounds b = run_bounds(report);
+  r.stream_bound = b.stream_bound_name();
+  r.stream_bound_tests_per_second = ceiling_of(b.stream_bound());
+  r.stream_next = b.stream_next_name();
+  r.stream_next_tests_per_second = ceiling_of(b.stream_next());
+  r.run_bound = b.run[0].name;
+  r.run_next = b.run[1].name;
+  r.lane_tests_per_second_peak = b.resources.front().capacity;
+  r.sram_bytes_per_second = b.sram_bytes_per_second;
+  r.sram_bytes_per_test = b.sram_bytes_per_test;
+  r.busiest_bank_bytes_per_second = kNaN;
+  double most = -1;
+  for (const ResourceUse& u : b.resources) {
+    if (u.kind == ResourceUse::Kind::bank && u.utilisation > most) {  // the first of equal banks, as busiest_bank
+      most = u.utilisation;
+      r.busiest_bank_bytes_per_second = u.demand;
+    }
+    if (u.kind == ResourceUse::Kind::pci) {
+      r.pci_bytes_per_second_to_board = u.written_bytes_per_second;
+      r.pci_bytes_per_second_to_host = u.read_bytes_per_second;
+      r.pci_mode = u.role;
+    }
+  }
+}
+
 }  // namespace
 
 SweepRow invalid_row(const SweepConfig& config, const ConfigCheck& check, int steps) {
@@ -57,6 +94,7 @@ SweepRow invalid_row(const SweepConfig& config, const ConfigCheck& check, int st
                     &r.fpga_limit_share, &r.speedup_vs_one_lane, &r.speedup_vs_software})
     *x = kNaN;
   set_no_energy(r);
+  set_no_bounds(r);
   return r;
 }
 
@@ -111,6 +149,7 @@ SweepRow row_from_report(const SweepConfig& config, const RunReport& report, int
   r.bottleneck = bottleneck(r);
   r.speedup_vs_one_lane = r.speedup_vs_software = kNaN;
   energy_columns(report, r);
+  bound_columns(report, r);
   return r;
 }
 

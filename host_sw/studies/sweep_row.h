@@ -44,6 +44,16 @@ struct SweepRow {
   // On the Pareto front of time against energy (pareto_time_energy below); false off it, and for rows
   // without both.
   bool pareto_time_energy = false;
+  // The bound model (host_sw/platform/run_bounds.h): what bounds the FPGA's stream and what comes
+  // next, each with its ceiling in tests/s (per card); the host timeline's largest part and the next
+  // (fpga, host_compute, host_driver, pci); the bandwidths. NaN and empty for an invalid row.
+  std::string stream_bound, stream_next;
+  double stream_bound_tests_per_second = 0, stream_next_tests_per_second = 0;
+  std::string run_bound, run_next;
+  double lane_tests_per_second_peak = 0;
+  double sram_bytes_per_second = 0, sram_bytes_per_test = 0, busiest_bank_bytes_per_second = 0;
+  double pci_bytes_per_second_to_board = 0, pci_bytes_per_second_to_host = 0;
+  std::string pci_mode;  // "DMA", "PIO" or "DMA and PIO"
 };
 
 SweepRow invalid_row(const SweepConfig& config, const ConfigCheck& check, int steps);

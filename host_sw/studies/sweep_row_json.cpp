@@ -55,7 +55,10 @@ const char* const kRowFigures[] = {"steps", "clock_mhz", "nominal_rays_per_cycle
                                    "fpga_limit_share", "speedup_vs_one_lane", "speedup_vs_software", "energy_joules",
                                    "energy_per_step_joules", "energy_per_intersection_nanojoules", "average_watts",
                                    "energy_delay_product_joule_seconds", "fpga_joules", "sram_joules", "pci_joules",
-                                   "host_joules"};
+                                   "host_joules", "stream_bound_tests_per_second", "stream_next_tests_per_second",
+                                   "lane_tests_per_second_peak", "sram_bytes_per_second", "sram_bytes_per_test",
+                                   "busiest_bank_bytes_per_second", "pci_bytes_per_second_to_board",
+                                   "pci_bytes_per_second_to_host"};
 
 // A row read back (a shard file, hand-edited or damaged) must hold figures a run can produce: every
 // number finite and non-negative (null: not measured), a simulated row's time positive and at most
@@ -127,6 +130,19 @@ SweepRow sweep_row_from_json(const nlohmann::ordered_json& j, const SweepConfig&
   r.host_joules = number_from(j, "host_joules");
   r.energy_missing = j.at("energy_missing").get<std::string>();
   r.pareto_time_energy = !j.at("pareto_time_energy").is_null() && j.at("pareto_time_energy").get<int>() == 1;
+  r.stream_bound = j.at("stream_bound").get<std::string>();
+  r.stream_bound_tests_per_second = number_from(j, "stream_bound_tests_per_second");
+  r.stream_next = j.at("stream_next").get<std::string>();
+  r.stream_next_tests_per_second = number_from(j, "stream_next_tests_per_second");
+  r.run_bound = j.at("run_bound").get<std::string>();
+  r.run_next = j.at("run_next").get<std::string>();
+  r.lane_tests_per_second_peak = number_from(j, "lane_tests_per_second_peak");
+  r.sram_bytes_per_second = number_from(j, "sram_bytes_per_second");
+  r.sram_bytes_per_test = number_from(j, "sram_bytes_per_test");
+  r.busiest_bank_bytes_per_second = number_from(j, "busiest_bank_bytes_per_second");
+  r.pci_bytes_per_second_to_board = number_from(j, "pci_bytes_per_second_to_board");
+  r.pci_bytes_per_second_to_host = number_from(j, "pci_bytes_per_second_to_host");
+  r.pci_mode = j.at("pci_mode").get<std::string>();
   return r;
 }
 

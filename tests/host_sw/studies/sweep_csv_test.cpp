@@ -43,7 +43,10 @@ TEST(SweepCsv, SpeedupsAndCsvAreStable) {
             "mean_lane_utilisation,intersections_per_second_while_busy,fpga_limit,fpga_limit_share,bottleneck,"
             "speedup_vs_one_lane,speedup_vs_software,energy_joules,energy_per_step_joules,"
             "energy_per_intersection_nanojoules,average_watts,energy_delay_product_joule_seconds,fpga_joules,"
-            "sram_joules,pci_joules,host_joules,energy_missing,pareto_time_energy");
+            "sram_joules,pci_joules,host_joules,energy_missing,pareto_time_energy,stream_bound,"
+            "stream_bound_tests_per_second,stream_next,stream_next_tests_per_second,run_bound,run_next,"
+            "lane_tests_per_second_peak,sram_bytes_per_second,sram_bytes_per_test,busiest_bank_bytes_per_second,"
+            "pci_bytes_per_second_to_board,pci_bytes_per_second_to_host,pci_mode");
   EXPECT_EQ(second.rfind("xc2v6000,2,6,15,1,ok,,,10,52.5,2,6.5,4,2,1,0.5,3,", 0), 0u) << second;
   // The reason holds commas, so it is quoted; the numbers of an invalid row are empty.
   EXPECT_EQ(invalid.rfind("xc2v6000,12,6,15,1,invalid,does_not_fit,\"12 lane(s)", 0), 0u) << invalid;

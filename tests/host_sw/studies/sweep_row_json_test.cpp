@@ -66,6 +66,14 @@ TEST(SweepRowJson, EnergyColumnsRoundTripAndAreNullWithoutEnergy) {
   EXPECT_DOUBLE_EQ(back.energy_per_intersection_nanojoules, 100.0);
   EXPECT_DOUBLE_EQ(back.host_joules, 94.0);
   EXPECT_TRUE(back.pareto_time_energy);
+  // and every bound column.
+  EXPECT_EQ(back.stream_bound, r.stream_bound);
+  EXPECT_EQ(back.stream_next, r.stream_next);
+  EXPECT_EQ(back.run_bound, r.run_bound);
+  EXPECT_EQ(back.run_next, r.run_next);
+  EXPECT_EQ(back.pci_mode, r.pci_mode);
+  EXPECT_DOUBLE_EQ(back.lane_tests_per_second_peak, r.lane_tests_per_second_peak);
+  EXPECT_DOUBLE_EQ(back.sram_bytes_per_test, r.sram_bytes_per_test);
 }
 
 }  // namespace

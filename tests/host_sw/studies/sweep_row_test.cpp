@@ -26,6 +26,15 @@ TEST(SweepRow, RowsComeFromTheReportAndNameTheBottleneck) {
   EXPECT_EQ(r.bottleneck, "fpga_result_bank");  // waiting is the largest part of the host's timeline
   EXPECT_EQ(row_from_report(config("xc2v6000", 2, 6), synthetic_report(1.0, 2.0), 385).bottleneck, "host_compute");
 
+  // The bound model's columns (host_sw/platform/run_bounds.h, tested there): the same stream bound,
+  // the host timeline's parts in order, the lanes' peak and the PCI's mode.
+  EXPECT_EQ(r.stream_bound, "bank 4 (results, written)");  // the report's groups share no word
+  EXPECT_EQ(r.run_bound, "fpga");
+  EXPECT_EQ(r.run_next, "host_compute");
+  EXPECT_DOUBLE_EQ(r.lane_tests_per_second_peak, 2 * 52.5e6);
+  EXPECT_EQ(r.pci_mode, "DMA");
+  EXPECT_DOUBLE_EQ(r.busiest_bank_bytes_per_second, 0.0);  // the report moved no bytes
+
   EXPECT_EQ(fpga_limit_kind("lanes"), "fpga_lanes");
   EXPECT_EQ(fpga_limit_kind("bank 7 (results)"), "fpga_result_bank");
   EXPECT_EQ(fpga_limit_kind("bank 2 (rays g0 Y)"), "fpga_ray_bank");

@@ -14,6 +14,8 @@
 #include "io/parse_number.h"
 #include "host_sw/platform/run_bounds.h"
 #include "host_sw/radiosity/png_writer.h"
+#include "host_sw/studies/workload.h"
+#include "host_sw/studies/workload_json.h"
 #include "pipeline/float_format.h"
 #include "host_sw/visibility/fixed_visibility.h"
 #include "host_sw/visibility/visibility_factory.h"
@@ -204,6 +206,8 @@ nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& pre
   report["steps"] = out.solver.steps;
   if (out.board) report["simulated_seconds"] = out.board->simulated_seconds;
   report["scene"] = scene_json(scene, o.scene.file.empty() ? "embedded:cornell-box" : o.scene.file, prepared.warnings);
+  report["workload"] = workload_json(run_workload(o.scene, o.solver), scene.faces.size(), scene.patches.size(),
+                                     out.solver.steps);
   report["settings"] = {{"impl", choice_name(o.impl)},
                         {"convergence", o.solver.convergence},
                         {"fixed_steps", o.solver.fixed_steps},
@@ -299,6 +303,10 @@ int run_simulation(const RunOptions& given) {
   }
   for (const std::string& w : prepared.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   const Scene& scene = prepared.scene;
+  // Once: counts of a paper scene built another way (report.json's workload says it too).
+  const ConstructionCheck construction =
+      check_construction(run_workload(o.scene, o.solver), scene.faces.size(), scene.patches.size());
+  if (construction.kind == Construction::other) std::fprintf(stderr, "note: %s\n", construction.note.c_str());
 
   std::optional<TemporaryFile> vcd;  // SystemC writes it while simulating; moved into place at the end
   if (!o.board.vcd_path.empty()) vcd.emplace(".vcd");

@@ -6,6 +6,7 @@
 #include "host_sw/studies/study_json.h"
 #include "host_sw/studies/sweep_columns.h"
 #include "host_sw/studies/sweep_row_json.h"
+#include "host_sw/studies/workload_json.h"
 
 namespace rc {
 
@@ -24,6 +25,9 @@ nlohmann::ordered_json sweep_json(const Study& s, const SceneSweep& r, const std
   j["solver"] = {{"paper_faithful", s.paper_faithful}, {"steps_policy", to_string(s.steps)}, {"convergence", s.convergence},
                  {"visibility", s.visibility}};
   if (s.form_factor != Study{}.form_factor) j["solver"]["form_factor"] = s.form_factor;  // point: as before it existed
+  for (const StudyScene& scene : s.scenes) {  // the scene's workload (workload.h), as `run` records it
+    if (scene.name == r.scene.name) j["workload"] = workload_json(study_workload(s, scene), r.scene.faces, r.scene.patches, 0);
+  }
   j["host_profile"] = s.axes.hosts.size() == 1 ? nlohmann::ordered_json(s.axes.hosts.front())
                                                : nlohmann::ordered_json(s.axes.hosts);
   nlohmann::ordered_json w = nlohmann::ordered_json::array();

@@ -15,6 +15,7 @@
 #include "board/profile_reader.h"
 #include "io/input_file.h"
 #include "io/json_text.h"
+#include "host_sw/studies/workload.h"
 #include "host_sw/radiosity/radiosity.h"
 
 namespace rc {
@@ -153,10 +154,9 @@ std::vector<PaperScene> prepare_paper_scenes(const std::vector<PaperRow>& rows, 
   for (std::size_t i = 0; i < rows.size(); ++i) {
     PaperScene& p = scenes[i];
     p.row = rows[i];
-    p.scene = prepare_scene(paper_scene_options(p.row.faces, p.row.patches)).scene;
-    p.solver.cull_receivers = false;
-    p.solver.form_factor = FormFactorKind::PointToPoint;  // the paper's rule (sec 2)
-    p.solver.fixed_steps = p.row.steps;
+    const Workload w = paper_workload(p.row);  // the paper's construction, steps, segments and rule
+    p.scene = prepare_scene(w.scene).scene;
+    p.solver = solver_options(w);
     p.recorded_steps = p.row.steps + p.row.steps / 10;
   }
   std::vector<std::size_t> order(rows.size());

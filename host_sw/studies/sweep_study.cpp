@@ -13,6 +13,7 @@
 #include "host_sw/studies/study_json.h"
 #include "host_sw/studies/sweep_pareto.h"
 #include "host_sw/studies/timing_study.h"
+#include "host_sw/studies/workload.h"
 
 namespace rc {
 
@@ -22,10 +23,10 @@ using Progress = std::function<void(const std::string&)>;
 
 // ---- the workload ---------------------------------------------------------------------------------
 
-// Table 2's step count when the scene is one of the paper's (our Cornell Box refined to 70 faces,
-// then split); 0 otherwise.
-int paper_steps(const SceneOptions& o, const Scene& scene) {
-  if (!o.file.empty() || o.face_target != 70) return 0;
+// Table 2's step count when the scene is one of the paper's, built the paper's way (workload.h:
+// our Cornell Box refined to 70 faces, then split); 0 otherwise.
+int paper_steps(const Workload& w, const Scene& scene) {
+  if (check_construction(w, scene.faces.size(), scene.patches.size()).kind != Construction::paper) return 0;
   for (const PaperRow& row : load_paper_table(default_paper_table_path())) {
     if (static_cast<std::size_t>(row.faces) == scene.faces.size() &&
         static_cast<std::size_t>(row.patches) == scene.patches.size())
@@ -34,20 +35,14 @@ int paper_steps(const SceneOptions& o, const Scene& scene) {
   return 0;
 }
 
-SolverOptions base_solver(const Study& s, const StudyScene& scene) {
-  SolverOptions o;
-  o.cull_receivers = !s.paper_faithful;
-  o.convergence = s.convergence;
-  o.form_factor = parse_form_factor_kind(s.form_factor_of(scene));
-  return o;
-}
+SolverOptions base_solver(const Study& s, const StudyScene& scene) { return solver_options(study_workload(s, scene)); }
 
 // The steps every configuration of a scene replays: fixed, the paper's, or 0 (to convergence).
 int fixed_steps(const Study& s, const StudyScene& study_scene, const Scene& scene) {
   const StepsChoice steps = s.steps;
   if (steps.kind == StepsChoice::Kind::fixed) return steps.steps;
   if (steps.kind == StepsChoice::Kind::converge) return 0;
-  const int paper = paper_steps(study_scene.options, scene);
+  const int paper = paper_steps(study_workload(s, study_scene), scene);
   if (paper == 0) {
     std::fprintf(stderr, "note: scene %s is not one of Table 2's; steps \"paper\" falls back to converge\n",
                  study_scene.name.c_str());
@@ -262,7 +257,14 @@ ShardResult run_study_shard(const Study& study, const Shard& shard, const Progre
   result.shard = shard;
   // Every shard prepares every scene: the deal needs their sizes (loading is not solving).
   std::vector<Scene> scenes;
-  for (const StudyScene& s : study.scenes) scenes.push_back(prepare_scene(s.options, progress).scene);
+  for (const StudyScene& s : study.scenes) {
+    scenes.push_back(prepare_scene(s.options, progress).scene);
+    // Once per scene: counts of a paper scene built another way (sweep.json's workload says it too).
+    const ConstructionCheck c =
+        check_construction(study_workload(study, s), scenes.back().faces.size(), scenes.back().patches.size());
+    if (c.kind == Construction::other && shard.index == 0)
+      std::fprintf(stderr, "note: scene %s: %s\n", s.name.c_str(), c.note.c_str());
+  }
   const std::vector<Group> groups = all_groups(study);
   result.groups_in_study = groups.size();
   std::vector<double> costs;

@@ -1,0 +1,115 @@
+// One workload definition (host_sw/studies/workload.h): each command's workload, the solver options
+// it gives, and the paper's construction told apart from another one with the same counts.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "host_sw/studies/paper_workload.h"
+#include "host_sw/studies/study_file.h"
+#include "host_sw/studies/workload.h"
+#include "host_sw/studies/workload_json.h"
+
+namespace rc {
+namespace {
+
+SceneOptions built(int face_target, int face_levels, int patch_levels) {
+  SceneOptions o;
+  o.face_target = face_target;
+  o.face_levels = face_levels;
+  o.patch_levels = patch_levels;
+  return o;
+}
+
+Workload of(const SceneOptions& scene) {
+  Workload w;
+  w.scene = scene;
+  return w;
+}
+
+TEST(Workload, ThePapersConstructionIsToldFromAnotherWithTheSameCounts) {
+  const ConstructionCheck paper = check_construction(of(built(70, 1, 2)), 280, 4480);
+  EXPECT_EQ(paper.kind, Construction::paper);
+  EXPECT_EQ(paper.note, "");
+  const ConstructionCheck other = check_construction(of(built(280, 0, 2)), 280, 4480);
+  EXPECT_EQ(other.kind, Construction::other);
+  EXPECT_EQ(construction_text(other.paper), "--faces 70 --face-levels 1 --patch-levels 2");
+  EXPECT_EQ(other.note.rfind("280 faces and 4480 patches built as --faces 280 --patch-levels 2, not as the paper's "
+                             "--faces 70 --face-levels 1 --patch-levels 2",
+                             0),
+            0u)
+      << other.note;
+  EXPECT_EQ(check_construction(of(built(0, 0, 1)), 38, 152).kind, Construction::no_paper);  // the 38-face box
+  SceneOptions by_size = built(70, 1, 0);
+  by_size.patch_size = 0.1;  // patches by size: not the paper's split even when the counts agree
+  EXPECT_EQ(check_construction(of(by_size), 280, 4480).kind, Construction::other);
+  SceneOptions file = built(70, 1, 2);
+  file.file = "room.scene";
+  EXPECT_EQ(check_construction(of(file), 280, 4480).kind, Construction::scene_file);
+}
+
+// The two constructions really are two meshes: the same counts, other faces.
+TEST(Workload, TheTwoConstructionsOfTheSameCountsAreDifferentMeshes) {
+  const Scene paper = prepare_scene(built(70, 1, 0)).scene;
+  const Scene direct = prepare_scene(built(280, 0, 0)).scene;
+  ASSERT_EQ(paper.faces.size(), 280u);
+  ASSERT_EQ(direct.faces.size(), 280u);
+  auto areas = [](const Scene& s) {
+    std::vector<double> a;
+    for (const Patch& p : s.patches) a.push_back(p.area);
+    std::sort(a.begin(), a.end());
+    return a;
+  };
+  EXPECT_NE(areas(paper), areas(direct));
+}
+
+TEST(Workload, EachCommandsWorkloadGivesItsSolverOptions) {
+  SolverOptions run;
+  run.fixed_steps = 40;
+  run.form_factor = FormFactorKind::PointToPoint;
+  const Workload r = run_workload(built(70, 0, 1), run);
+  EXPECT_EQ(r.source, "embedded:cornell-box");
+  EXPECT_EQ(r.steps.kind, StepsChoice::Kind::fixed);
+  EXPECT_FALSE(r.paper_faithful);  // `run` culls receivers
+  const SolverOptions back = solver_options(r);
+  EXPECT_EQ(back.fixed_steps, 40);
+  EXPECT_TRUE(back.cull_receivers);
+  EXPECT_EQ(back.form_factor, FormFactorKind::PointToPoint);
+  EXPECT_EQ(back.convergence, run.convergence);
+  EXPECT_EQ(solver_options(run_workload(built(70, 0, 1), SolverOptions{})).fixed_steps, 0);  // to convergence
+
+  PaperRow row;
+  row.faces = 280;
+  row.patches = 4480;
+  row.steps = 5889;
+  const Workload p = paper_workload(row);
+  EXPECT_EQ(construction_text(p.scene), "--faces 70 --face-levels 1 --patch-levels 2");
+  const SolverOptions ps = solver_options(p);
+  EXPECT_EQ(ps.fixed_steps, 5889);
+  EXPECT_FALSE(ps.cull_receivers);  // every segment, as the paper
+  EXPECT_EQ(ps.form_factor, FormFactorKind::PointToPoint);
+
+  const Study study = default_study_settings();
+  const Workload s = study_workload(study, study.scenes.front());
+  EXPECT_EQ(s.steps.kind, StepsChoice::Kind::paper);
+  EXPECT_TRUE(s.paper_faithful);
+  EXPECT_EQ(s.form_factor, FormFactorKind::PointToPoint);
+  EXPECT_EQ(solver_options(s, 1488).fixed_steps, 1488);  // the paper's count, resolved by the study
+}
+
+TEST(Workload, TheRecordNamesTheConstructionAndTheNoteOnlyWhenItDiffers) {
+  SolverOptions converge;
+  const nlohmann::ordered_json other = workload_json(run_workload(built(280, 0, 2), converge), 280, 4480, 1307);
+  EXPECT_EQ(other["scene"]["paper_construction"], "other");
+  EXPECT_EQ(other["scene"]["paper_options"], "--faces 70 --face-levels 1 --patch-levels 2");
+  EXPECT_EQ(other["steps"]["policy"], "converge");
+  EXPECT_TRUE(other["steps"]["count"].is_null());
+  EXPECT_EQ(other["steps"]["solved"], 1307);
+  EXPECT_EQ(other["segments"], "culled");
+  const nlohmann::ordered_json paper = workload_json(run_workload(built(70, 1, 2), converge), 280, 4480, 5999);
+  EXPECT_EQ(paper["scene"]["paper_construction"], "paper");
+  EXPECT_FALSE(paper["scene"].contains("note"));
+}
+
+}  // namespace
+}  // namespace rc

@@ -124,6 +124,25 @@ TEST(RunBounds, RolesModesTiesAndSoftwareRuns) {
   EXPECT_THROW(run_bounds(RunReport{}), std::invalid_argument);
 }
 
+// Several cards: the FPGA's figures stay sums over sums (a card's average), PCI is the busiest bus
+// and the driver the busiest card's thread; the summary says "per card".
+TEST(RunBounds, SeveralCardsArePerCardOnTheFpgaAndTheBusiestBusAndDriver) {
+  RunReport r = hand_report();
+  r.board.cards.count = 2;
+  r.board.cards.buses = {{{0}, 0.75, 0.075}, {{1}, 0.25, 0.025}};
+  CardReport a, b;
+  a.driver_cpu_seconds = 1.5;
+  b.driver_cpu_seconds = 2.5;
+  r.board.cards.per_card = {a, b};
+  r.time.driver_cpu = 0;  // the solver thread drives no card itself
+  const RunBounds m = run_bounds(r);
+  EXPECT_EQ(m.cards, 2u);
+  EXPECT_DOUBLE_EQ(*m.resources[3].tests_per_second_ceiling, 3e8 / 4.0);  // unchanged: sums over sums
+  EXPECT_DOUBLE_EQ(m.resources[5].busy_seconds, 0.75);                   // the busier bus
+  EXPECT_DOUBLE_EQ(m.resources[7].busy_seconds, 2.5);                    // the busier driver thread
+  EXPECT_NE(m.summary().find("7.5e+07 tests/s per card"), std::string::npos) << m.summary();
+}
+
 // Two boards simulated side by side: one lane (its stream bound by the lanes, sec 4.1's three banks
 // a cycle) and two lanes sharing result words (bound by the result bank's read-modify-write, sec 4.2).
 TEST(RunBounds, AgreeWithTheSimulatedBoards) {

@@ -21,7 +21,7 @@
 #include "apps/plot.h"
 #include "apps/progress.h"
 #include "apps/report.h"
-#include "board/profile_reader.h"
+#include "host_sw/profiles/profile_json.h"
 #include "host_sw/studies/study_file.h"
 #include "host_sw/studies/sweep_study.h"
 #include "host_sw/visibility/visibility_factory.h"
@@ -391,27 +391,21 @@ int run_sweep(const SweepOptions& o, const Study& study) {
 
 // ---- --list-fields --------------------------------------------------------------------------------
 
-void list_fields(const std::string& title, const std::string& prefix, const nlohmann::ordered_json& profile) {
+void list_fields(const std::string& title, const std::string& prefix, const profiles::ProfileDocument& profile) {
   std::printf("%s\n", title.c_str());
-  for (const std::string& f : sourced_fields(profile)) {
-    const nlohmann::ordered_json* node = &profile;
-    for (std::size_t from = 0, dot = 0; dot != std::string::npos; from = dot + 1) {
-      dot = f.find('.', from);
-      node = &(*node)[f.substr(from, dot == std::string::npos ? std::string::npos : dot - from)];
-    }
-    std::printf("  %-48s %s\n", (prefix + f).c_str(), (*node)["value"].dump().c_str());
-  }
+  for (const std::string& f : profile.sourced_fields())
+    std::printf("  %-48s %s\n", (prefix + f).c_str(), profile.value_text(f).c_str());
 }
 
 // Every field a study can sweep or fix, with its value in each profile (a path's home in one step).
 int run_list_fields(const Study& s) {
   for (const std::string& d : s.axes.devices) {
     const board::DeviceProfile p = board::find_device_profile(d);
-    list_fields("device profile " + p.file + " (paths as written in [axes] or [fixed]):", "", p.json);
+    list_fields("device profile " + p.file + " (paths as written in [axes] or [fixed]):", "", p.document);
   }
   for (const std::string& h : s.axes.hosts) {
     const HostProfile p = find_host_profile(h);
-    list_fields("host profile " + p.file + ":", "host.", p.json);
+    list_fields("host profile " + p.file + ":", "host.", p.document);
   }
   std::printf("A leaf name that is unique within its profile may stand for its path (host.segment_pack).\n");
   return 0;
@@ -455,7 +449,7 @@ int run_merge(const MergeOptions& o) {
   const std::vector<std::string> files = shard_files(o.inputs);
   std::vector<ShardResult> shards;
   for (const std::string& f : files)
-    shards.push_back(shard_from_json(board::read_json_file(f, kShardLimitBytes, "a shard file"), f));
+    shards.push_back(shard_from_json(profiles::read_json_file(f, kShardLimitBytes, "a shard file"), f));
   const StudyResult result = merge_shards(shards, files);
   expect_study_outputs(result.study, o.out_dir);
   std::printf("rc2000sim sweep merge: study %s, %zu shard(s)\n", result.study.name.c_str(), shards.size());

@@ -7,11 +7,11 @@
 #include "apps/cli_options.h"
 #include "apps/outputs.h"
 #include "apps/report.h"
-#include "board/profile_reader.h"
+#include "host_sw/profiles/profile_document.h"
 #include "host_sw/studies/paper_workload.h"
 #include "apps/progress.h"
-#include "host_sw/studies/calibration.h"
-#include "host_sw/studies/calibration_variants.h"
+#include "host_sw/studies/calibration_json.h"
+#include "host_sw/studies/calibration_variants_json.h"
 #include "host_sw/studies/paper_calibration.h"
 #include "host_sw/visibility/visibility_factory.h"
 
@@ -22,7 +22,7 @@ namespace {
 struct CalibrateOptions {
   std::string table = default_paper_table_path();
   std::string base = "athlon-mp-2600";
-  std::string out = board::default_config_dir() + "/hosts/athlon-mp-2600-calibrated.json";
+  std::string out = profiles::default_config_dir() + "/hosts/athlon-mp-2600-calibrated.json";
   std::string variants_out = default_variants_path();
   std::string name = "athlon-mp-2600-calibrated";
   std::string visibility = "fast";
@@ -110,7 +110,7 @@ void add_calibrate_command(CLI::App& app, int& exit_code) {
   cmd->callback([o, cmd, &exit_code] {
     // Defaults in the config folder chosen at run time (--configs, after these defaults were made).
     if (!given(*cmd, "--table")) o->table = default_paper_table_path();
-    if (!given(*cmd, "--out")) o->out = board::default_config_dir() + "/hosts/athlon-mp-2600-calibrated.json";
+    if (!given(*cmd, "--out")) o->out = profiles::default_config_dir() + "/hosts/athlon-mp-2600-calibrated.json";
     if (!given(*cmd, "--variants-out")) o->variants_out = default_variants_path();
     if (o->name.empty()) refuse_option("--name", "must not be empty (it names the calibrated profile)");
     if (o->out == o->variants_out) refuse_option("--variants-out", "is the same file as --out");

@@ -17,7 +17,7 @@
 #include "apps/plot.h"
 #include "apps/progress.h"
 #include "apps/report.h"
-#include "host_sw/platform/run_report.h"
+#include "host_sw/platform/run_report_json.h"
 #include "host_sw/studies/calibration_variants.h"
 #include "host_sw/studies/paper_prediction.h"
 #include "host_sw/visibility/visibility_factory.h"
@@ -234,7 +234,7 @@ std::vector<energy::FullRateEnergy> full_rate_energy_rows(const std::vector<boar
   std::vector<energy::FullRateEnergy> rows;
   for (const board::PaperEstimate& e : designs) {
     const board::DeviceProfile device = board::find_device_profile(e.device);
-    rows.push_back(energy::full_rate_energy(e, device, energy::load_energy_tables(&device, host.json, host.file), kBits));
+    rows.push_back(energy::full_rate_energy(e, device, energy::load_energy_tables(&device, host.document, host.file), kBits));
   }
   return rows;
 }

@@ -19,6 +19,7 @@
 #include "pipeline/float_format.h"
 #include "host_sw/visibility/fixed_visibility.h"
 #include "host_sw/visibility/visibility_factory.h"
+#include "host_sw/platform/run_report_json.h"
 
 namespace rc {
 
@@ -35,7 +36,7 @@ struct RunOutcome {
   std::string trace_json;                                   // board runs with --trace
 };
 
-bool float_arith(const RunOptions& o) { return pipeline::names_float_format(o.arith); }
+bool float_arith(const RunOptions& o) { return o.arith.is_float(); }
 // Whether the run's visibility has a fractional width (--bits): the board's fixed lanes and the
 // bit-exact software backends do; float formats and double precision do not.
 bool uses_fixed_width(const RunOptions& o) { return !float_arith(o) && (o.impl == Impl::board || o.visibility != SoftwareVisibility::float_double); }
@@ -56,7 +57,7 @@ std::optional<std::string> faces_lost_at_width(const Scene& scene, int bits) {
 
 RunOutcome run_software(const RunOptions& o, const Scene& scene, ProgressLine& progress) {
   // A float pipeline (--arith float:E,M) answers as the backend of that name (pipeline/float_mt.h).
-  auto visibility = make_software_visibility(float_arith(o) ? o.arith : choice_name(o.visibility), o.bits);
+  auto visibility = make_software_visibility(float_arith(o) ? o.arith.name() : choice_name(o.visibility), o.bits);
   HostWorkCounter work;
   ProgressiveRadiosity solver(scene, *visibility, o.solver, &work);
   solver.on_progress([&](const StepProgress& p) {
@@ -92,7 +93,7 @@ BoardRunOptions board_options(const RunOptions& o) {
   board.vcd_path.clear();  // --vcd: the final path; SystemC writes a temporary file (run_board)
   board.trace = !o.trace_path.empty();
   board.bits = o.bits;
-  if (float_arith(o)) board.float_format = pipeline::parse_float_format(o.arith);  // float lanes
+  if (float_arith(o)) board.float_format = o.arith.float_format();  // float lanes
   return board;
 }
 
@@ -103,7 +104,7 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   // float lanes copy the `float:E,M` software backend's (tests BoardSystem.FloatLanes*).
   std::unique_ptr<VisibilityBackend> oracle;
   if (!o.lanes_compute) {
-    oracle = make_functional_answer(float_arith(o) ? o.arith : "fast", o.bits);
+    oracle = make_functional_answer(float_arith(o) ? o.arith.name() : "fast", o.bits);
     board.oracle = oracle.get();
   }
   if (board.trace) parse_trace_steps(o.trace_steps, board);
@@ -114,13 +115,13 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   // Estimated before the simulation: a profile that cannot give the estimate is said so by an
   // exception caught here, and once SystemC has switched stacks AddressSanitizer cannot follow a
   // throw (docs/reliability.md, "Sanitizers").
-  LanesThatFit fit = float_arith(o) ? lanes_that_fit(*board.device_profile, *board.host_profile, pipeline::parse_float_format(o.arith))
+  LanesThatFit fit = float_arith(o) ? lanes_that_fit(*board.device_profile, *board.host_profile, o.arith.float_format())
                                     : lanes_that_fit(*board.device_profile, *board.host_profile, o.bits);
   BoardRunResult r = run_radiosity_on_board(scene, o.solver, board);
   RunOutcome out;
   out.solver = std::move(r.solver);
   out.visibility_name = "board " + board.device + ", " + std::to_string(board.lanes.value()) + " lane(s), " +
-                        (float_arith(o) ? o.arith : std::to_string(o.bits) + "-bit") + (board.concurrent ? ", concurrent" : ", serial") +
+                        (float_arith(o) ? o.arith.name() : std::to_string(o.bits) + "-bit") + (board.concurrent ? ", concurrent" : ", serial") +
                         (o.board.cards > 1 ? ", " + std::to_string(o.board.cards) + " cards (split " + choice_name(o.board.card_split) + ", " +
                                            choice_name(o.board.card_bus) + " bus)"
                                      : "");
@@ -212,8 +213,8 @@ nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& pre
                         {"convergence", o.solver.convergence},
                         {"fixed_steps", o.solver.fixed_steps},
                         {"form_factor", to_string(o.solver.form_factor)},
-                        {"visibility", o.impl == Impl::board ? "board" : float_arith(o) ? o.arith : choice_name(o.visibility)},
-                        {"arith", o.arith},
+                        {"visibility", o.impl == Impl::board ? "board" : float_arith(o) ? o.arith.name() : choice_name(o.visibility)},
+                        {"arith", o.arith.name()},
                         {"cards", o.impl == Impl::board ? nlohmann::ordered_json(o.board.cards.value()) : nlohmann::ordered_json()},
                         {"card_split", o.impl == Impl::board && o.board.cards > 1 ? nlohmann::ordered_json(choice_name(o.board.card_split))
                                                                         : nlohmann::ordered_json()},
@@ -254,6 +255,14 @@ std::vector<std::string> output_paths(const RunOptions& o) {
 
 }  // namespace
 
+pipeline::Arithmetic parse_arith_option(const std::string& text) {
+  try {
+    return pipeline::Arithmetic::parse(text);  // a bad format names the value and the limits
+  } catch (const std::invalid_argument& e) {
+    refuse_option("--arith", text + ": " + e.what());
+  }
+}
+
 void check_run_options(const CLI::App& cmd, const RunOptions& o) {
   if (o.impl != Impl::board) {
     refuse_given(cmd, {"--device", "--lanes", "--banks", "--concurrent", "--cards", "--card-split", "--card-bus",
@@ -264,14 +273,9 @@ void check_run_options(const CLI::App& cmd, const RunOptions& o) {
                                         "visibility (bit-exact at --bits, or --arith float:E,M)");
   }
   if (o.board.cards == 1) refuse_given(cmd, {"--card-split", "--card-bus"}, "applies only with more than one card (--cards)");
-  if (o.arith != "fixed") {
-    try {
-      (void)pipeline::parse_float_format(o.arith);  // a bad format names the value and the limits
-    } catch (const std::invalid_argument& e) {
-      refuse_option("--arith", o.arith + ": " + e.what());
-    }
+  if (o.arith.is_float()) {
     refuse_given(cmd, {"--bits", "--visibility"},
-                 "does not apply with --arith " + o.arith +
+                 "does not apply with --arith " + o.arith.name() +
                      " (the float pipeline has no fractional width and is its own backend)");
   } else if (o.impl != Impl::board && o.visibility == SoftwareVisibility::float_double) {
     refuse_given(cmd, {"--bits"}, "does not apply with --visibility float (double precision has no fractional width); "
@@ -342,7 +346,8 @@ void add_run_command(CLI::App& app, int& exit_code) {
   add_choice_option(*cmd, "--visibility", options->visibility,
                     "Software backend: float, fixed (bit-exact, brute force) or fast (bit-exact, culled, all cores)");
   add_bits_option(*cmd, options->bits);
-  cmd->add_option("--arith", options->arith,
+  auto arith = std::make_shared<std::string>(options->arith.name());  // parsed once, in the callback
+  cmd->add_option("--arith", *arith,
                   "The pipeline's arithmetic: fixed (fractional bits: --bits) or float:E,M (exponent and fraction bits, "
                   "e.g. float:8,23 single, float:5,10 half; round to nearest even per operation, no subnormals; "
                   "docs/pipeline.md; with --impl board, float lanes: docs/board.md, Float lanes)")
@@ -373,8 +378,9 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--image-size", options->render.width, "Image width and height in pixels")
       ->check(CLI::Range(16, 8192))->capture_default_str();
   cmd->add_flag("--quiet", options->quiet, "No progress output");
-  cmd->callback([options, solver, cmd, &exit_code] {
+  cmd->callback([options, solver, arith, cmd, &exit_code] {
     options->solver = solver->resolved(*cmd);
+    options->arith = parse_arith_option(*arith);
     options->render.height = options->render.width;
     check_run_options(*cmd, *options);
     std::vector<std::string> where = {options->out_dir + "/"};

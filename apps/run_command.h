@@ -11,6 +11,7 @@
 #include "host_sw/radiosity/render.h"
 #include "host_sw/visibility/visibility_factory.h"
 #include "io/choice.h"
+#include "pipeline/arithmetic.h"
 #include "scenes/prepare.h"
 
 namespace rc {
@@ -33,7 +34,7 @@ struct RunOptions {
   SolverOptions solver;              // resolved from SolverCli
   Impl impl = Impl::software;
   SoftwareVisibility visibility = SoftwareVisibility::float_double;  // software runs' backend
-  std::string arith = "fixed";       // the pipeline's arithmetic: fixed (--bits) or float:E,M (software only)
+  pipeline::Arithmetic arith;        // --arith, parsed once: fixed (width --bits) or float:E,M (float lanes on the board)
   bool lanes_compute = false;        // board: the lanes test every ray against every face themselves
   int bits = 15;                     // fractional bits of the fixed-point pipeline
   // --impl board: device, host, lanes, banks, cards and their split and bus, --vcd (board.vcd_path:
@@ -45,6 +46,9 @@ struct RunOptions {
   RenderOptions render;
   bool quiet = false;
 };
+
+// `--arith TEXT` parsed (pipeline::Arithmetic::parse); a bad text is refused naming the option.
+pipeline::Arithmetic parse_arith_option(const std::string& text);
 
 // Checks `options` against what `cmd` was given: options that do not apply to this run are refused
 // (CLI::ValidationError naming the option and why; docs/outputs.md, "Which options apply where").

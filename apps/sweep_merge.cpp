@@ -13,7 +13,7 @@
 #include "apps/outputs.h"
 #include "apps/progress.h"
 #include "apps/sweep_writer.h"
-#include "board/profile_reader.h"
+#include "host_sw/profiles/profile_json.h"
 #include "host_sw/studies/shard_json.h"
 
 namespace rc {
@@ -62,7 +62,7 @@ int run_merge(const MergeOptions& o) {
   const std::vector<std::string> files = shard_files(o.inputs);
   std::vector<ShardResult> shards;
   for (const std::string& f : files)
-    shards.push_back(shard_from_json(board::read_json_file(f, kShardLimitBytes, "a shard file"), f));
+    shards.push_back(shard_from_json(profiles::read_json_file(f, kShardLimitBytes, "a shard file"), f));
   const StudyResult result = merge_shards(shards, files);
   expect_study_outputs(result.study, o.out_dir);
   std::printf("rc2000sim sweep merge: study %s, %zu shard(s)\n", result.study.name.c_str(), shards.size());

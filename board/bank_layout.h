@@ -55,7 +55,9 @@ struct RayGroup {
 };
 
 struct BankLayout {
-  unsigned lanes = 0;
+  // The lane count's fourth and last hand-off, still a LaneCount (docs/architecture.md, "The lane
+  // count"): --lanes -> BoardRunOptions -> BoardChoices -> BoardParams -> here, read by the wrapper.
+  LaneCount lanes = 1;
   unsigned banks_available = 0;
   pipeline::FracBits bits = 15;  // set by make_bank_layout (fixed point; unused by float lanes)
   std::optional<pipeline::FloatFormat> float_format;  // set: float lanes in this format (docs/board.md)

@@ -1,8 +1,10 @@
 #include "board/device_profile.h"
 
+#include <map>
+#include <mutex>
 #include <stdexcept>
 
-#include "board/profile_reader.h"
+#include "host_sw/profiles/profile_reader.h"
 #include "io/parse_number.h"
 #include "pipeline/fixed_format.h"
 
@@ -19,13 +21,12 @@ double DeviceProfile::clock_mhz(int lanes) const {
 
 namespace {
 
-void read_clock(const ProfileReader& r, DeviceProfile& p) {
-  if (const auto* by_lanes = r.find("clock.mhz_by_lanes")) {
-    if (!by_lanes->is_object()) r.fail("clock.mhz_by_lanes", "must be an object keyed by lane count");
-    for (const auto& item : by_lanes->items()) {
-      const std::string path = "clock.mhz_by_lanes." + item.key();
+void read_clock(const profiles::ProfileReader& r, DeviceProfile& p) {
+  {
+    for (const std::string& key : r.keys("clock.mhz_by_lanes", "must be an object keyed by lane count")) {
+      const std::string path = "clock.mhz_by_lanes." + key;
       // The whole key must be the count: "2abc" or " 2" is no lane count (std::stoi read them as 2).
-      const std::optional<std::uint64_t> lanes = io::parse_unsigned(item.key());
+      const std::optional<std::uint64_t> lanes = io::parse_unsigned(key);
       if (!lanes || *lanes < 1 || *lanes > LaneCount::kMax) {
         r.fail(path, "key must be a lane count, a whole number 1.." + std::to_string(LaneCount::kMax) +
                          " (a design has at most " + std::to_string(LaneCount::kMax) + " lanes: the CONFIG register holds 8 bits)");
@@ -46,7 +47,7 @@ void read_clock(const ProfileReader& r, DeviceProfile& p) {
 }
 
 // The banks, each value checked against what the wrapper and its registers can use (bank_layout.h).
-void read_banks(const ProfileReader& r, DeviceProfile& p) {
+void read_banks(const profiles::ProfileReader& r, DeviceProfile& p) {
   const std::uint64_t count = r.integer("banks.count", 0, 1u << 20);
   if (count < kMinBanks) {
     r.refuse("banks.count", std::to_string(count),
@@ -70,14 +71,14 @@ void read_banks(const ProfileReader& r, DeviceProfile& p) {
 }  // namespace
 
 DeviceProfile load_device_profile(const std::string& path) {
-  return device_profile_from_json(read_json_file(path, io::kProfileLimitBytes, "a device profile"), path);
+  return device_profile_from_document(profiles::read_profile_document(path, "a device profile"), path);
 }
 
-DeviceProfile device_profile_from_json(const nlohmann::ordered_json& json, const std::string& origin) {
+DeviceProfile device_profile_from_document(const profiles::ProfileDocument& document, const std::string& origin) {
   DeviceProfile p;
-  p.json = json;
+  p.document = document;
   p.file = origin;
-  const ProfileReader r(p.json, origin);
+  const profiles::ProfileReader r(p.document, origin);
   r.schema("rc2000sim.device/1");
   p.name = r.text("name");
   if (p.name.empty()) r.fail("name", "must not be empty");
@@ -110,8 +111,18 @@ DeviceProfile device_profile_from_json(const nlohmann::ordered_json& json, const
   return p;
 }
 
+// A profile named from the config folder is read once per process: no command writes device profiles,
+// and a run asks for its own device and, for sec 5.6's bandwidth, the RC2000's xc2v6000 again
+// (tests/scripts/profile_reads_test.sh). A path is read each time (tests rewrite their own files).
 DeviceProfile find_device_profile(const std::string& name_or_path) {
-  return load_device_profile(resolve_profile_path(name_or_path, "devices"));
+  const std::string path = profiles::resolve_profile_path(name_or_path, "devices");
+  if (path == name_or_path) return load_device_profile(path);
+  static std::mutex guard;
+  static std::map<std::string, DeviceProfile> loaded;
+  const std::lock_guard<std::mutex> lock(guard);
+  auto it = loaded.find(path);
+  if (it == loaded.end()) it = loaded.emplace(path, load_device_profile(path)).first;
+  return it->second;
 }
 
 }  // namespace rc::board

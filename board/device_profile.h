@@ -8,9 +8,8 @@
 #include <optional>
 #include <string>
 
-#include <nlohmann/json.hpp>
-
 #include "board/bank_layout.h"
+#include "host_sw/profiles/profile_document.h"
 
 namespace rc::board {
 
@@ -47,7 +46,9 @@ struct DeviceProfile {
   unsigned register_access_cycles = 1;  // device cycles per control/status register access
   ResultStore results = ResultStore::bank;  // wrapper.results: where a pass's blocked bits accumulate
 
-  nlohmann::ordered_json json;  // the file as loaded, sources included (for reports)
+  // The file as loaded, sources included: the energy table reads its section from it, and a study
+  // sets fields on it by their dotted paths (host_sw/profiles/profile_document.h).
+  profiles::ProfileDocument document;
 
   // The device clock for `lanes` pipelines; throws std::invalid_argument if the profile has none.
   double clock_mhz(int lanes) const;
@@ -57,8 +58,8 @@ struct DeviceProfile {
 DeviceProfile load_device_profile(const std::string& path);
 // The same checks on a profile already in memory (a study's profile with settings applied);
 // `origin` names it in errors and becomes its `file`.
-DeviceProfile device_profile_from_json(const nlohmann::ordered_json& json, const std::string& origin);
-// By name (configs/devices/NAME.json) or by path.
+DeviceProfile device_profile_from_document(const profiles::ProfileDocument& document, const std::string& origin);
+// By name (configs/devices/NAME.json: read once per process) or by path (read each time).
 DeviceProfile find_device_profile(const std::string& name_or_path);
 
 }  // namespace rc::board

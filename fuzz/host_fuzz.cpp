@@ -14,9 +14,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string path = rc::fuzz::write_input("host.json", data, size);
   try {
     const rc::HostProfile profile = rc::load_host_profile(path);
-    (void)rc::energy::host_energy_table(profile.json, path);
+    (void)rc::energy::host_energy_table(profile.document, path);
   } catch (const std::invalid_argument&) {
-    // The documented error (board/profile_reader.h).
+    // The documented error (host_sw/profiles/profile_reader.h).
   }
   return 0;
 }

@@ -7,11 +7,8 @@
 #include <mutex>
 #include <stdexcept>
 
-#include <nlohmann/json.hpp>
-
+#include "host_sw/profiles/resource_table.h"
 #include "io/config_dir.h"
-#include "io/input_file.h"
-#include "io/json_text.h"
 #include "pipeline/bit_bounds.h"
 #include "pipeline/fixed_format.h"
 #include "pipeline/hardware_blocks.h"
@@ -20,43 +17,16 @@ namespace rc::pipeline {
 
 namespace {
 
-using nlohmann::json;
-
 [[noreturn]] void fail(const std::string& origin, const std::string& what) {
   throw std::runtime_error("pipeline resources " + origin + ": " + what);
 }
 
-const json& field(const json& j, const char* key, const std::string& origin) {
-  if (!j.is_object() || !j.contains(key)) fail(origin, std::string("missing \"") + key + "\"");
-  return j.at(key);
-}
-
-double number(const json& j, const char* key, const std::string& origin) {
-  const json& v = field(j, key, origin);
-  if (!v.is_number()) fail(origin, std::string("\"") + key + "\" is not a number");
-  return v.get<double>();
-}
-
-int integer(const json& j, const char* key, const std::string& origin) {
-  const json& v = field(j, key, origin);
-  if (!v.is_number_integer()) fail(origin, std::string("\"") + key + "\" is not an integer");
-  return v.get<int>();
-}
-
-// Every figure must say where it comes from.
-void require_source(const json& j, const std::string& origin) {
-  const json& s = field(j, "source", origin);
-  if (!s.is_string() || s.get<std::string>().empty()) fail(origin, "empty \"source\"");
-}
-
 }  // namespace
 
-ResourceModel ResourceModel::load(const std::string& path) {
-  try {
-    return from_json_text(io::read_file(path, io::kProfileLimitBytes, "the pipeline resources"), path);
-  } catch (const io::InputFileError& e) {
-    throw std::runtime_error(e.what());
-  }
+ResourceModel ResourceModel::load(const std::string& path) { return from_table(profiles::read_resource_table(path), path); }
+
+ResourceModel ResourceModel::from_text(const std::string& text, const std::string& origin) {
+  return from_table(profiles::parse_resource_table(text, origin), origin);
 }
 
 std::string ResourceModel::default_path() { return io::config_dir() + "/pipeline_resources.json"; }
@@ -73,102 +43,70 @@ ResourceModel ResourceModel::load_default() {
   return it->second;
 }
 
-ResourceModel ResourceModel::from_json_text(const std::string& text, const std::string& origin) {
-  json j;
-  try {
-    j = io::parse_json_text(text, origin);  // depth, duplicate keys, comments, UTF-8 (io/json_text.h)
-  } catch (const io::InputFileError& e) {
-    throw std::runtime_error(e.what());
-  }
+ResourceModel ResourceModel::from_table(const profiles::ResourceTable& t, const std::string& origin) {
   ResourceModel m;
+  m.device_ = {t.device_name, t.device_slices, t.device_block_multipliers};
+  m.block_bits_ = t.block_operand_bits;
+  m.block_synthesis_limit_ = t.synthesis_limit_bits;
 
-  const json& device = field(j, "device", origin);
-  require_source(device, origin);
-  m.device_ = {field(device, "name", origin).get<std::string>(), integer(device, "slices", origin),
-               integer(device, "block_multipliers", origin)};
-  const json& block = field(j, "block_multiplier", origin);
-  require_source(block, origin);
-  m.block_bits_ = integer(block, "operand_bits", origin);
-  const json& limit = field(j, "block_multiplier_synthesis_limit", origin);
-  require_source(limit, origin);
-  m.block_synthesis_limit_ = integer(limit, "max_frac_bits", origin);
-
-  const auto points = [&](const char* key, std::size_t at_least) {
+  const auto points = [&](const std::vector<profiles::ResourcePoint>& rows, const char* key, std::size_t at_least) {
     std::vector<Point> out;
-    for (const json& p : field(j, key, origin)) {
-      require_source(p, origin);
-      const int bits = integer(p, "frac_bits", origin);
-      if (!is_valid_frac_bits(bits)) fail(origin, std::string(key) + " has width " + std::to_string(bits));
-      out.push_back({bits, number(p, "clock_mhz", origin), number(p, "slices", origin)});
+    for (const profiles::ResourcePoint& p : rows) {
+      if (!is_valid_frac_bits(p.frac_bits)) fail(origin, std::string(key) + " has width " + std::to_string(p.frac_bits));
+      out.push_back({p.frac_bits, p.clock_mhz, p.slices});
     }
     std::sort(out.begin(), out.end(), [](const Point& a, const Point& b) { return a.frac_bits < b.frac_bits; });
     if (out.size() < at_least) fail(origin, std::string(key) + " needs at least " + std::to_string(at_least) + " points");
     return out;
   };
-  m.soft_ = points("pipeline_without_block_multipliers", 3);
-  m.hard_ = points("pipeline_with_block_multipliers", 2);
+  m.soft_ = points(t.soft, "pipeline_without_block_multipliers", 3);
+  m.hard_ = points(t.hard, "pipeline_with_block_multipliers", 2);
   m.soft_slices_ = fit(m.soft_, &Point::slices);
   m.soft_clock_ = fit(m.soft_, &Point::clock_mhz);
   // The block multiplier counts in the file are checked against the 18x18 splitting model.
-  for (const json& p : field(j, "pipeline_with_block_multipliers", origin)) {
-    const int bits = integer(p, "frac_bits", origin);
-    if (integer(p, "block_multipliers", origin) != block_multipliers_needed(bits, m.block_bits_)) {
-      fail(origin, "block multiplier count at " + std::to_string(bits) + " bits disagrees with the 18x18 model");
+  for (const profiles::ResourcePoint& p : t.hard) {
+    if (p.block_multipliers != block_multipliers_needed(p.frac_bits, m.block_bits_)) {
+      fail(origin, "block multiplier count at " + std::to_string(p.frac_bits) + " bits disagrees with the 18x18 model");
     }
   }
 
   // Designs: wrapper + L pipelines. With one and two lanes of the same pipeline,
   //   slices(L) = fixed + L * (pipeline + per_lane)
   // gives per_lane = slices(2) - slices(1) - pipeline and fixed = slices(1) - (pipeline + per_lane).
-  const json* lane[2] = {nullptr, nullptr};
-  for (const json& d : field(j, "designs", origin)) {
-    require_source(d, origin);
-    const int lanes = integer(d, "lanes", origin);
-    if (lanes == 1 || lanes == 2) lane[lanes - 1] = &d;
-  }
+  const profiles::ResourceDesign* lane[2] = {nullptr, nullptr};
+  for (const profiles::ResourceDesign& d : t.designs)
+    if (d.lanes == 1 || d.lanes == 2) lane[d.lanes - 1] = &d;
   if (!lane[0] || !lane[1]) fail(origin, "designs need a 1-lane and a 2-lane entry");
-  const int bits = integer(*lane[0], "frac_bits", origin);
-  const bool hard = field(*lane[0], "block_multipliers_used", origin).get<bool>();
-  if (integer(*lane[1], "frac_bits", origin) != bits ||
-      field(*lane[1], "block_multipliers_used", origin).get<bool>() != hard) {
+  const int bits = lane[0]->frac_bits;
+  const bool hard = lane[0]->block_multipliers_used;
+  if (lane[1]->frac_bits != bits || lane[1]->block_multipliers_used != hard) {
     fail(origin, "the 1-lane and 2-lane designs use different pipelines");
   }
   m.design_bits_ = bits;
   m.design_block_multipliers_ = hard;
   const PipelineResources p = m.pipeline(bits, hard);
-  const int s1 = integer(*lane[0], "slices", origin), s2 = integer(*lane[1], "slices", origin);
+  const int s1 = lane[0]->slices, s2 = lane[1]->slices;
   m.wrapper_.per_lane_slices = s2 - s1 - p.slices;
   m.wrapper_.fixed_slices = s1 - (p.slices + m.wrapper_.per_lane_slices);
-  m.wrapper_.block_multipliers = integer(*lane[0], "block_multipliers", origin) - p.block_multipliers;
-  if (integer(*lane[1], "block_multipliers", origin) !=
-      m.wrapper_.block_multipliers + 2 * p.block_multipliers) {
+  m.wrapper_.block_multipliers = lane[0]->block_multipliers - p.block_multipliers;
+  if (lane[1]->block_multipliers != m.wrapper_.block_multipliers + 2 * p.block_multipliers) {
     fail(origin, "block multipliers of the 1-lane and 2-lane designs are inconsistent");
   }
   // The design clocks are far below the pipeline's own: they are the wrapper's clock.
-  m.wrapper_clock_ = {number(*lane[0], "clock_mhz", origin), number(*lane[1], "clock_mhz", origin)};
+  m.wrapper_clock_ = {lane[0]->clock_mhz, lane[1]->clock_mhz};
 
-  // Floating point: constants of the counting rules, each {"value", "source"}.
-  const json& fp = field(j, "float_pipeline", origin);
-  const auto sourced = [&](const char* key) {
-    const json& v = field(fp, key, origin);
-    require_source(v, origin);
-    const int x = integer(v, "value", origin);
-    if (x < 0) fail(origin, std::string("float_pipeline.") + key + " is negative");
-    return x;
-  };
-  m.float_multipliers_ = sourced("multipliers");
-  m.float_sign_flips_ = sourced("sign_flips");
-  m.float_add_subs_ = sourced("add_subs");
-  m.float_comparators_ = sourced("comparators");
-  m.guard_bits_ = sourced("guard_bits");
-  m.luts_per_slice_ = sourced("luts_per_slice");
-  m.flip_flops_per_slice_ = sourced("flip_flops_per_slice");
+  // Floating point: constants of the counting rules, each with its source (checked at the edge).
+  m.float_multipliers_ = t.multipliers.value;
+  m.float_sign_flips_ = t.sign_flips.value;
+  m.float_add_subs_ = t.add_subs.value;
+  m.float_comparators_ = t.comparators.value;
+  m.guard_bits_ = t.guard_bits.value;
+  m.luts_per_slice_ = t.luts_per_slice.value;
+  m.flip_flops_per_slice_ = t.flip_flops_per_slice.value;
   if (m.luts_per_slice_ < 1 || m.flip_flops_per_slice_ < 1) fail(origin, "a slice needs at least one LUT and one flip-flop");
   if (m.float_comparators_ % 2 != 0) fail(origin, "float_pipeline.comparators: three against 0 and three against |det|");
-  for (const json& f : field(fp, "families", origin)) {
-    require_source(f, origin);
-    FloatFamily family{field(f, "name", origin).get<std::string>(), field(f, "part_prefix", origin).get<std::string>(),
-                       field(f, "block_multiplier", origin).get<std::string>(), integer(f, "operand_bits", origin)};
+  for (const profiles::FloatFamilyRow& f : t.families) {
+    FloatFamily family{f.name, f.part_prefix, f.block_multiplier, f.operand_bits};
     if (family.operand_bits < 2) fail(origin, "family " + family.name + ": operand_bits below 2");
     m.families_.push_back(family);
   }

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "host_sw/profiles/resource_table.h"
 #include "pipeline/fixed_format.h"
 #include "pipeline/float_format.h"
 
@@ -97,9 +98,12 @@ struct FloatPipelineResources {
 
 class ResourceModel {
  public:
-  // Reads the JSON file; throws std::runtime_error naming the file and the problem.
+  // Reads the file through the profile edge (host_sw/profiles/resource_table.h); throws
+  // std::runtime_error naming the file and the problem.
   static ResourceModel load(const std::string& path);
-  static ResourceModel from_json_text(const std::string& text, const std::string& origin = "<text>");
+  static ResourceModel from_text(const std::string& text, const std::string& origin = "<text>");
+  // The model of a table already read; `origin` names it in errors.
+  static ResourceModel from_table(const profiles::ResourceTable& table, const std::string& origin);
   // pipeline_resources.json in io::config_dir() (io/config_dir.h).
   static ResourceModel load_default();
   static std::string default_path();

@@ -1,11 +1,13 @@
 #include "scenes/scene_source.h"
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <optional>
+#include <vector>
 
-#include <nlohmann/json.hpp>
-
-#include "io/json_text.h"
+#include "io/input_file.h"
+#include "io/json_keys.h"
 #include "io/text_encoding.h"
 #include "scenes/scene_file.h"
 
@@ -45,15 +47,16 @@ bool is_gltf_name(const std::string& path) {
 }
 
 SceneFormat json_format(std::string_view text, const std::string& path) {
-  nlohmann::json j;
+  std::optional<std::vector<std::string>> keys;
   try {
-    j = io::parse_json_text(text, path);
+    keys = io::json_object_keys(text, path);
   } catch (const io::InputFileError& e) {
     if (is_gltf_name(path)) return SceneFormat::mesh;  // Assimp's glTF reader has its own errors
     throw SceneFileError(std::string(e.what()) + " (a composition is JSON; docs/scenes.md)");
   }
-  if (j.is_object() && j.contains("schema")) return SceneFormat::composition;
-  if (j.is_object() && j.contains("asset")) return SceneFormat::mesh;
+  const auto has = [&](const char* key) { return keys && std::find(keys->begin(), keys->end(), key) != keys->end(); };
+  if (has("schema")) return SceneFormat::composition;
+  if (has("asset")) return SceneFormat::mesh;
   throw SceneFileError(path + ": JSON, but neither a composition (an object with \"schema\": "
                               "\"rc2000sim.composition/1\") nor glTF (an object with \"asset\"); docs/scenes.md");
 }

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "board/profile_reader.h"
+#include "host_sw/profiles/profile_reader.h"
 #include "host_sw/driver/trace_writer.h"
 
 namespace rc {
@@ -52,7 +52,7 @@ namespace {
 
 // A named choice {"value": "dma", "source": "..."} that must be one of `names` (index = enum value).
 template <class Enum, std::size_t N>
-Enum choice(const board::ProfileReader& r, const std::string& field, const char* const (&names)[N]) {
+Enum choice(const profiles::ProfileReader& r, const std::string& field, const char* const (&names)[N]) {
   const std::string value = r.text(field + ".value");
   if (r.text(field + ".source").empty()) r.fail(field + ".source", "empty: say where the choice comes from");
   for (std::size_t i = 0; i < N; ++i) {
@@ -63,7 +63,7 @@ Enum choice(const board::ProfileReader& r, const std::string& field, const char*
   r.fail(field + ".value", "'" + value + "' is not one of " + allowed);
 }
 
-DriverModel read_driver_model(const board::ProfileReader& r) {
+DriverModel read_driver_model(const profiles::ProfileReader& r) {
   DriverModel m;
   m.cost_unit = choice<DriverModel::CostUnit>(r, "driver_model.cost_unit", kCostUnits);
   m.transfer = choice<DriverModel::Transfer>(r, "driver_model.transfer", kTransfers);
@@ -76,31 +76,34 @@ DriverModel read_driver_model(const board::ProfileReader& r) {
 
 }  // namespace
 
-nlohmann::ordered_json with_driver_model(const nlohmann::ordered_json& profile, const DriverModel& model,
-                                         const std::string& source) {
-  nlohmann::ordered_json j = profile;
-  nlohmann::ordered_json& d = j["driver_model"];
-  d["cost_unit"] = {{"value", to_string(model.cost_unit)}, {"source", source}};
-  d["transfer"] = {{"value", to_string(model.transfer)}, {"source", source}};
-  d["face_upload"] = {{"value", to_string(model.face_upload)}, {"source", source}};
-  d["overlap"] = {{"value", to_string(model.overlap)}, {"source", source}};
-  return j;
+profiles::ProfileDocument with_driver_model(const profiles::ProfileDocument& profile, const DriverModel& model,
+                                            const std::string& source) {
+  return profile.with_field("driver_model.cost_unit", to_string(model.cost_unit), source)
+      .with_field("driver_model.transfer", to_string(model.transfer), source)
+      .with_field("driver_model.face_upload", to_string(model.face_upload), source)
+      .with_field("driver_model.overlap", to_string(model.overlap), source);
 }
 
 HostProfile with_driver_model(const HostProfile& base, const DriverModel& model) {
   const std::string source = "variant " + model.name() + " (docs/calibration.md, Variants)";
-  return host_profile_from_json(with_driver_model(base.json, model, source), base.file);
+  HostProfile p = base;
+  p.driver_model.cost_unit = model.cost_unit;
+  p.driver_model.transfer = model.transfer;
+  p.driver_model.face_upload = model.face_upload;
+  p.driver_model.overlap = model.overlap;
+  p.document = with_driver_model(base.document, model, source);
+  return p;
 }
 
 HostProfile load_host_profile(const std::string& path) {
-  return host_profile_from_json(board::read_json_file(path, io::kProfileLimitBytes, "a host profile"), path);
+  return host_profile_from_document(profiles::read_profile_document(path, "a host profile"), path);
 }
 
-HostProfile host_profile_from_json(const nlohmann::ordered_json& json, const std::string& origin) {
+HostProfile host_profile_from_document(const profiles::ProfileDocument& document, const std::string& origin) {
   HostProfile p;
-  p.json = json;
+  p.document = document;
   p.file = origin;
-  const board::ProfileReader r(p.json, origin);
+  const profiles::ProfileReader r(p.document, origin);
   r.schema("rc2000sim.host/1");
   p.name = r.text("name");
   if (p.name.empty()) r.fail("name", "must not be empty");
@@ -117,7 +120,7 @@ HostProfile host_profile_from_json(const nlohmann::ordered_json& json, const std
 }
 
 HostProfile find_host_profile(const std::string& name_or_path) {
-  return load_host_profile(board::resolve_profile_path(name_or_path, "hosts"));
+  return load_host_profile(profiles::resolve_profile_path(name_or_path, "hosts"));
 }
 
 HostCpuModel::HostCpuModel(const HostProfile& profile) : profile_(profile) { keeper_.reset(); }

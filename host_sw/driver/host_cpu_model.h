@@ -11,10 +11,10 @@
 #include <utility>
 #include <vector>
 
-#include <nlohmann/json.hpp>
 #include <systemc>
 #include <tlm_utils/tlm_quantumkeeper.h>
 
+#include "host_sw/profiles/profile_document.h"
 #include "host_sw/radiosity/host_cost.h"
 
 namespace rc {
@@ -73,16 +73,19 @@ struct HostProfile {
   std::array<sc_core::sc_time, kDriverWorkKinds> driver{};  // per unit of DriverWork
   sc_core::sc_time interrupt_latency = sc_core::SC_ZERO_TIME;  // device raises -> waiting thread runs
   DriverModel driver_model;
-  nlohmann::ordered_json json;  // the file as loaded (a calibrated profile: as written)
+  // The file as loaded, sources included (a calibrated profile: as written; a variant: with its driver
+  // model written in), for the energy table, a study's settings and the calibrated profile's writer.
+  profiles::ProfileDocument document;
 };
 
-// The profile's JSON with `model` written into its driver_model section (each choice with `source`).
-nlohmann::ordered_json with_driver_model(const nlohmann::ordered_json& profile, const DriverModel& model,
-                                         const std::string& source);
-// `base` (its costs) with `model` as its driver model, each choice sourced to the variant.
+// The document with `model`'s four choices written into its driver_model section (each with `source`).
+profiles::ProfileDocument with_driver_model(const profiles::ProfileDocument& profile, const DriverModel& model,
+                                            const std::string& source);
+// `base` (its costs and pio round trip) with `model`'s choices as its driver model, each sourced to the
+// variant: the typed profile is set directly (the choices are valid by type), its document alongside.
 HostProfile with_driver_model(const HostProfile& base, const DriverModel& model);
-// Re-reads a profile from JSON (checks it as load_host_profile does); `origin` names it in errors.
-HostProfile host_profile_from_json(const nlohmann::ordered_json& json, const std::string& origin);
+// Reads a profile from its document (checks it as load_host_profile does); `origin` names it in errors.
+HostProfile host_profile_from_document(const profiles::ProfileDocument& document, const std::string& origin);
 
 // Errors name the file and the field ("work_seconds.form_factor: missing").
 HostProfile load_host_profile(const std::string& path);

@@ -1,6 +1,6 @@
 #include "host_sw/energy/energy_table.h"
 
-#include "board/profile_reader.h"
+#include "host_sw/profiles/profile_reader.h"
 
 namespace rc::energy {
 
@@ -25,12 +25,12 @@ const Unit& unit_of(const std::string& path) {
   throw std::logic_error("energy table key without a unit suffix: " + path);
 }
 
-Figure figure(const board::ProfileReader& r, const std::string& path) {
+Figure figure(const profiles::ProfileReader& r, const std::string& path) {
   const Unit& u = unit_of(path);
   return {r.number(path, 0, u.max), path, u.name, r.source(path)};
 }
 
-void require_section(const board::ProfileReader& r, const char* what) {
+void require_section(const profiles::ProfileReader& r, const char* what) {
   if (!r.has("energy")) {
     throw MissingEnergyTable(r.file() + " has no energy table (an \"energy\" section: docs/energy.md), so " + what +
                              " has no energy figures; its times are unaffected");
@@ -42,7 +42,7 @@ void require_section(const board::ProfileReader& r, const char* what) {
 double Figure::si() const { return value * unit_of(path).si; }
 
 DeviceEnergyTable device_energy_table(const board::DeviceProfile& profile) {
-  const board::ProfileReader r(profile.json, profile.file);
+  const profiles::ProfileReader r(profile.document, profile.file);
   require_section(r, "the board");
   DeviceEnergyTable t;
   t.file = profile.file;
@@ -53,24 +53,24 @@ DeviceEnergyTable device_energy_table(const board::DeviceProfile& profile) {
            figure(r, "energy.pci.bridge_w")};
   // The rest of the profile is the device loader's; here only the energy section is checked whole.
   std::vector<std::string> elsewhere;
-  for (const auto& item : profile.json.items())
-    if (item.key() != "energy") elsewhere.push_back(item.key());
+  for (const std::string& key : profile.document.top_keys())
+    if (key != "energy") elsewhere.push_back(key);
   r.refuse_unknown_keys(elsewhere);
   return t;
 }
 
-HostEnergyTable host_energy_table(const nlohmann::ordered_json& host_profile, const std::string& file) {
-  const board::ProfileReader r(host_profile, file);
+HostEnergyTable host_energy_table(const profiles::ProfileDocument& host_profile, const std::string& file) {
+  const profiles::ProfileReader r(host_profile, file);
   require_section(r, "the host");
   HostEnergyTable t{file, figure(r, "energy.busy_w"), figure(r, "energy.wait_w")};
   std::vector<std::string> elsewhere;
-  for (const auto& item : host_profile.items())
-    if (item.key() != "energy") elsewhere.push_back(item.key());
+  for (const std::string& key : host_profile.top_keys())
+    if (key != "energy") elsewhere.push_back(key);
   r.refuse_unknown_keys(elsewhere);
   return t;
 }
 
-EnergyTables load_energy_tables(const board::DeviceProfile* device, const nlohmann::ordered_json& host_profile,
+EnergyTables load_energy_tables(const board::DeviceProfile* device, const profiles::ProfileDocument& host_profile,
                                 const std::string& host_file) {
   EnergyTables t;
   std::string missing;

@@ -8,7 +8,6 @@
 #include <stdexcept>
 #include <string>
 
-#include <nlohmann/json.hpp>
 
 #include "board/device_profile.h"
 
@@ -64,7 +63,7 @@ class MissingEnergyTable : public std::invalid_argument {
 
 // Both throw MissingEnergyTable or std::invalid_argument naming the file and the key.
 DeviceEnergyTable device_energy_table(const board::DeviceProfile& profile);
-HostEnergyTable host_energy_table(const nlohmann::ordered_json& host_profile, const std::string& file);
+HostEnergyTable host_energy_table(const profiles::ProfileDocument& host_profile, const std::string& file);
 
 // The tables of one run, or why there are none.
 struct EnergyTables {
@@ -74,7 +73,7 @@ struct EnergyTables {
 };
 
 // Loads what the run needs (a software run: no device); a missing section becomes `missing`.
-EnergyTables load_energy_tables(const board::DeviceProfile* device, const nlohmann::ordered_json& host_profile,
+EnergyTables load_energy_tables(const board::DeviceProfile* device, const profiles::ProfileDocument& host_profile,
                                 const std::string& host_file);
 
 }  // namespace rc::energy

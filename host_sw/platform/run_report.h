@@ -1,7 +1,7 @@
 // What one run of a SystemC system reports, as typed data: the code passes a RunReport around and
-// reads its fields; JSON exists only at the edge, in one writer (to_json: the rc2000sim.board/1 and
-// rc2000sim.software/1 documents of docs/outputs.md). The timing study's worker processes send
-// reports to their parent with encode/decode, an internal format of the same fields.
+// reads its fields; JSON exists only at the output edge, host_sw/platform/run_report_json.h (to_json:
+// the rc2000sim.board/1 and rc2000sim.software/1 documents of docs/outputs.md; encode/decode: the
+// internal format of the same fields the timing study's worker processes send to their parent).
 #pragma once
 
 #include <array>
@@ -9,8 +9,6 @@
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "host_sw/energy/energy_model.h"
 #include "host_sw/driver/host_cpu_model.h"
@@ -164,19 +162,7 @@ struct RunReport {
 
 // What the run counted, as the energy model takes it; `steps` from the solver's result.
 energy::Activity activity_of(const RunReport& report, std::uint64_t steps);
-// An estimate as report.json writes it (board.energy): totals, tables, components and every term
-// with its counter, count and profile figure (key, value, unit, source). docs/outputs.md.
-nlohmann::ordered_json energy_report_json(const energy::EnergyReport& e);
 // Sets report.energy (or report.energy_missing, when a table is missing) from `tables`.
 void attach_energy(RunReport& report, const energy::EnergyTables& tables, std::uint64_t steps);
-
-// The one writer: the report document of docs/outputs.md.
-nlohmann::ordered_json to_json(const RunReport& report);
-// The host work part of it ({"step": {"count", "seconds"}, ...}).
-nlohmann::ordered_json work_json(const std::array<WorkTally, kHostWorkKinds>& work);
-
-// Between processes of one timing study: every field, exactly (doubles round-trip).
-std::string encode(const RunReport& report);
-RunReport decode(const std::string& text);  // throws std::invalid_argument on a malformed text
 
 }  // namespace rc

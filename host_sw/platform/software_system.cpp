@@ -50,7 +50,7 @@ RunReport SoftwareSystem::report() const {
   r.host_profile = m_cpu.profile().name;
   for (int k = 0; k < kHostWorkKinds; ++k) r.work[k] = {m_cpu.count(HostWork(k)), m_cpu.time(HostWork(k)).to_seconds()};
   const HostProfile& host = m_cpu.profile();
-  attach_energy(r, energy::load_energy_tables(nullptr, host.json, host.file), static_cast<std::uint64_t>(m_result.steps));
+  attach_energy(r, energy::load_energy_tables(nullptr, host.document, host.file), static_cast<std::uint64_t>(m_result.steps));
   return r;
 }
 

@@ -6,7 +6,6 @@
 
 #include <exception>
 
-#include <nlohmann/json.hpp>
 #include <systemc>
 
 #include "host_sw/driver/host_cpu_model.h"

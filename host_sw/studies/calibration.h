@@ -9,8 +9,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "host_sw/driver/host_cpu_model.h"
 #include "host_sw/platform/run_report.h"
 
@@ -27,6 +25,9 @@ enum class CostGroup : int {
 };
 constexpr int kCostGroups = static_cast<int>(CostGroup::Count);
 std::string to_string(CostGroup group);
+// The group each cost is fitted in (docs/calibration.md says why these groups).
+CostGroup group_of(HostWork work);
+CostGroup group_of(DriverWork work);
 
 struct CalibrationObservation {
   std::string label;
@@ -77,12 +78,5 @@ struct CrossValidation {
 };
 // Needs at least two observations (throws std::invalid_argument).
 CrossValidation cross_validate(const std::vector<CalibrationObservation>& observations);
-
-// The profile with every cost scaled by its group's factor, each value's source saying so, and
-// the fit (method, observations, residuals, and the cross-validation if given) recorded beside it.
-// `base` is the profile the observations were simulated with, driver model included.
-nlohmann::ordered_json calibrated_profile(const HostProfile& base, const CalibrationFit& fit,
-                                          const std::vector<CalibrationObservation>& observations,
-                                          const std::string& name, const CrossValidation* cv = nullptr);
 
 }  // namespace rc

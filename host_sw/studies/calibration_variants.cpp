@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "board/profile_reader.h"
+#include "host_sw/profiles/variants_file.h"
 
 namespace rc {
 
@@ -52,48 +52,16 @@ bool within_tolerance(const VariantCalibration& variant, const VariantCalibratio
   return variant.cv.mean_absolute <= (1 + kVariantTolerance) * best.cv.mean_absolute;
 }
 
-nlohmann::ordered_json variants_document(const std::vector<VariantCalibration>& variants, const std::string& base_name) {
-  const std::size_t best = best_by_cross_validation(variants);
-  nlohmann::ordered_json list = nlohmann::ordered_json::array();
-  for (std::size_t i = 0; i < variants.size(); ++i) {
-    const VariantCalibration& v = variants[i];
-    list.push_back({{"driver_model", v.used.driver_model.name()},
-                    {"chosen", i == best},
-                    {"in_spread", within_tolerance(v, variants[best])},
-                    {"fit_rms_relative_residual", v.fit.rms_relative_residual},
-                    {"cv_mean_absolute_relative_error", v.cv.mean_absolute},
-                    {"cv_rms_relative_error", v.cv.rms},
-                    {"cv_worst_relative_error", v.cv.worst},
-                    {"profile", calibrated_profile(v.used, v.fit, v.observations, base_name + "-calibrated", &v.cv)}});
-  }
-  return {{"schema", "rc2000sim.host-variants/1"},
-          {"description", "Every driver-model variant of " + base_name +
-                              ".json calibrated on Table 2's software and single-pipeline columns, with its "
-                              "leave-one-out cross-validated error. Written by `rc2000sim calibrate`; read by "
-                              "`rc2000sim paper` for the prediction spread (docs/calibration.md, Variants)."},
-          {"choice", "least cross-validated mean absolute relative error"},
-          {"spread_tolerance", kVariantTolerance},
-          {"variants", list}};
-}
-
 std::vector<CalibratedVariant> load_calibrated_variants(const std::string& path) {
-  const nlohmann::ordered_json j = board::read_json_file(path, io::kProfileLimitBytes, "a variants file");
   std::vector<CalibratedVariant> out;
-  try {
-    if (j.at("schema") != "rc2000sim.host-variants/1") {
-      throw std::invalid_argument(path + ": schema is not rc2000sim.host-variants/1 (rerun `rc2000sim calibrate`)");
-    }
-    for (const auto& v : j.at("variants")) {
-      CalibratedVariant c;
-      c.profile = host_profile_from_json(v.at("profile"), path + " (variant " + v.at("driver_model").get<std::string>() + ")");
-      c.cv_error = v.at("cv_mean_absolute_relative_error").get<double>();
-      c.fit_rms = v.at("fit_rms_relative_residual").get<double>();
-      c.chosen = v.at("chosen").get<bool>();
-      c.in_spread = v.at("in_spread").get<bool>();
-      out.push_back(std::move(c));
-    }
-  } catch (const nlohmann::json::exception& e) {
-    throw std::invalid_argument(path + ": " + e.what());
+  for (const profiles::VariantRecord& v : profiles::read_variants_file(path)) {
+    CalibratedVariant c;
+    c.profile = host_profile_from_document(v.profile, path + " (variant " + v.driver_model + ")");
+    c.cv_error = v.cv_error;
+    c.fit_rms = v.fit_rms;
+    c.chosen = v.chosen;
+    c.in_spread = v.in_spread;
+    out.push_back(std::move(c));
   }
   if (out.empty()) throw std::invalid_argument(path + ": no variants");
   // The file is written by `calibrate`; an edited or mixed-up copy must still say one coherent thing.
@@ -113,6 +81,6 @@ std::vector<CalibratedVariant> load_calibrated_variants(const std::string& path)
   return out;
 }
 
-std::string default_variants_path() { return board::default_config_dir() + "/calibration/athlon-mp-2600-variants.json"; }
+std::string default_variants_path() { return profiles::default_config_dir() + "/calibration/athlon-mp-2600-variants.json"; }
 
 }  // namespace rc

@@ -9,8 +9,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "host_sw/studies/calibration.h"
 #include "host_sw/driver/host_cpu_model.h"
 
@@ -49,10 +47,9 @@ struct CalibratedVariant {
   bool in_spread = false;    // within kVariantTolerance of the chosen one
 };
 
-// The variants file (schema rc2000sim.host-variants/1): every variant's calibrated profile, its fit
-// and cross-validation, which one is the default and which make the spread.
-nlohmann::ordered_json variants_document(const std::vector<VariantCalibration>& variants, const std::string& base_name);
-// Reads it back (throws std::invalid_argument naming the file and the problem).
+// The variants file (schema rc2000sim.host-variants/1, written by calibration_variants_json.h) read
+// back through the profile edge (host_sw/profiles/variants_file.h); throws std::invalid_argument naming
+// the file and the problem.
 std::vector<CalibratedVariant> load_calibrated_variants(const std::string& path);
 std::string default_variants_path();  // configs/calibration/athlon-mp-2600-variants.json
 

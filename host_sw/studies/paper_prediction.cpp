@@ -21,7 +21,7 @@ std::vector<SpreadCase> spread_cases(const std::vector<PaperScene>& scenes, cons
         for (PaperImplementation impl : {PaperImplementation::TwoPipes, PaperImplementation::Concurrent}) {
           if (impl == PaperImplementation::TwoPipes && m.overlap != DriverModel::Overlap::FormFactors) continue;
           SpreadCase spread{i, static_cast<int>(impl), m.name()};
-          if (profile.json == host.json) {
+          if (profile.document == host.document) {
             spread.main_index = i * kPaperImplementations + static_cast<std::size_t>(impl);
           } else {
             TimingCase c = paper_timing_case(scenes[i], impl, host.name);

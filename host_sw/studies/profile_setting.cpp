@@ -1,39 +1,19 @@
 #include "host_sw/studies/profile_setting.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <stdexcept>
 
 namespace rc {
 
 namespace {
 
-bool is_sourced(const nlohmann::ordered_json& node) { return node.is_object() && node.contains("value"); }
-
-void collect_fields(const nlohmann::ordered_json& node, const std::string& prefix, std::vector<std::string>& out) {
-  if (!node.is_object()) return;
-  for (auto it = node.begin(); it != node.end(); ++it) {
-    const std::string path = prefix.empty() ? it.key() : prefix + "." + it.key();
-    if (is_sourced(it.value())) {
-      out.push_back(path);
-    } else {
-      collect_fields(it.value(), path, out);
-    }
-  }
-}
-
-// The node at a dotted path, or nullptr; Json is const or not.
-template <class Json>
-Json* find_field(Json& profile, const std::string& field) {
-  Json* node = &profile;
-  std::size_t from = 0;
-  while (true) {
-    const std::size_t dot = field.find('.', from);
-    const std::string key = field.substr(from, dot == std::string::npos ? std::string::npos : dot - from);
-    if (!node->is_object() || !node->contains(key)) return nullptr;
-    node = &(*node)[key];
-    if (dot == std::string::npos) return node;
-    from = dot + 1;
-  }
+// The study codec's value as the profile edge writes it: a whole number stays whole.
+profiles::FieldValue field_value(const nlohmann::ordered_json& value) {
+  if (value.is_string()) return value.get<std::string>();
+  if (value.is_number_integer() && (!value.is_number_unsigned() || value.get<std::uint64_t>() <= INT64_MAX))
+    return value.get<std::int64_t>();
+  return value.get<double>();
 }
 
 std::string last_part(const std::string& path) {
@@ -57,9 +37,9 @@ std::vector<std::string> nearby_fields(const std::vector<std::string>& fields, c
   return near.empty() ? fields : near;
 }
 
-std::string resolve_field(const std::string& path, const std::string& wanted, const nlohmann::ordered_json& profile,
+std::string resolve_field(const std::string& path, const std::string& wanted, const profiles::ProfileDocument& profile,
                           const std::string& file) {
-  const std::vector<std::string> fields = sourced_fields(profile);
+  const std::vector<std::string> fields = profile.sourced_fields();
   if (std::find(fields.begin(), fields.end(), wanted) != fields.end()) return wanted;
   std::vector<std::string> by_leaf;
   if (wanted.find('.') == std::string::npos) {
@@ -76,21 +56,20 @@ std::string resolve_field(const std::string& path, const std::string& wanted, co
                               (path.rfind("host.", 0) == 0 ? "" : " (host profile fields start with \"host.\")"));
 }
 
-nlohmann::ordered_json applied(nlohmann::ordered_json json, const std::vector<ProfileSetting>& settings,
-                               ProfileKind kind, const std::string& study, const std::string& file) {
+profiles::ProfileDocument applied(profiles::ProfileDocument document, const std::vector<ProfileSetting>& settings,
+                                  ProfileKind kind, const std::string& study, const std::string& file) {
   for (const ProfileSetting& s : settings) {
     if (s.field.kind != kind) continue;
-    nlohmann::ordered_json* node = find_field(json, s.field.field);
-    if (node == nullptr || !is_sourced(*node)) {
+    if (!document.is_sourced(s.field.field)) {
       throw std::invalid_argument("profile path '" + s.field.path + "': " + file + " has no sourced field '" +
                                   s.field.field + "' (study " + study + ")");
     }
     check_setting_value(s.field, s.value, "study " + study);
-    const std::string was = (*node)["value"].dump();
-    (*node)["value"] = s.value;
-    (*node)["source"] = "study " + study + ": " + s.text() + " (the profile's value: " + was + ")";
+    const std::string was = document.value_text(s.field.field);
+    document = document.with_field(s.field.field, field_value(s.value),
+                                   "study " + study + ": " + s.text() + " (the profile's value: " + was + ")");
   }
-  return json;
+  return document;
 }
 
 // "file with a=1, b=2 (study s)" for error messages; just `file` without settings of this kind.
@@ -106,14 +85,8 @@ std::string origin(const std::string& file, const std::vector<ProfileSetting>& s
 
 const char* to_string(ProfileKind kind) { return kind == ProfileKind::host ? "host" : "device"; }
 
-std::vector<std::string> sourced_fields(const nlohmann::ordered_json& profile) {
-  std::vector<std::string> fields;
-  collect_fields(profile, "", fields);
-  return fields;
-}
-
-ProfileField resolve_profile_field(const std::string& path, const nlohmann::ordered_json& device_profile,
-                                   const std::string& device_file, const nlohmann::ordered_json& host_profile,
+ProfileField resolve_profile_field(const std::string& path, const profiles::ProfileDocument& device_profile,
+                                   const std::string& device_file, const profiles::ProfileDocument& host_profile,
                                    const std::string& host_file) {
   ProfileField f;
   f.path = path;
@@ -127,7 +100,7 @@ ProfileField resolve_profile_field(const std::string& path, const nlohmann::orde
   if (wanted.empty()) throw std::invalid_argument("profile path '" + path + "': names no field");
   const bool host = f.kind == ProfileKind::host;
   f.field = resolve_field(path, wanted, host ? host_profile : device_profile, host ? host_file : device_file);
-  f.numeric = find_field(host ? host_profile : device_profile, f.field)->at("value").is_number();
+  f.numeric = (host ? host_profile : device_profile).holds_number(f.field);
   return f;
 }
 
@@ -150,12 +123,12 @@ void check_setting_value(const ProfileField& field, const nlohmann::ordered_json
 
 board::DeviceProfile with_settings(const board::DeviceProfile& base, const std::vector<ProfileSetting>& settings,
                                    const std::string& study) {
-  return board::device_profile_from_json(applied(base.json, settings, ProfileKind::device, study, base.file),
+  return board::device_profile_from_document(applied(base.document, settings, ProfileKind::device, study, base.file),
                                          origin(base.file, settings, ProfileKind::device, study));
 }
 
 HostProfile with_settings(const HostProfile& base, const std::vector<ProfileSetting>& settings, const std::string& study) {
-  return host_profile_from_json(applied(base.json, settings, ProfileKind::host, study, base.file),
+  return host_profile_from_document(applied(base.document, settings, ProfileKind::host, study, base.file),
                                 origin(base.file, settings, ProfileKind::host, study));
 }
 

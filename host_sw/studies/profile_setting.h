@@ -9,7 +9,11 @@
 // A path is checked against the profile itself: it must name a sourced field ({"value", "source"}),
 // and a value must have the field's type (a number for a number, a name for a name). The profile
 // with its settings is then read by the profile's own loader, so ranges and relations are checked
-// in one place (board::device_profile_from_json, host_profile_from_json).
+// in one place (board::device_profile_from_document, host_profile_from_document). The settings are
+// applied to the profile's document at the profile edge (profiles::ProfileDocument::with_field).
+//
+// ProfileSetting::value is still the study codec's JSON value (study.*, study_file.*, config_sweep.*
+// read and write it): this header is on the JSON-edge check's allow-list until that codec is typed.
 #pragma once
 
 #include <string>
@@ -32,15 +36,12 @@ struct ProfileField {
   bool numeric = true;  // the field holds a number (else a name)
 };
 
-// Resolves `path` against `profile` (a device profile's JSON when the path has no "host." prefix,
+// Resolves `path` against `profile` (a device profile's document when the path has no "host." prefix,
 // else a host profile's). Throws std::invalid_argument naming the path, the profile's file
 // (`profile_file`) and the fields that do exist nearby.
-ProfileField resolve_profile_field(const std::string& path, const nlohmann::ordered_json& device_profile,
-                                   const std::string& device_file, const nlohmann::ordered_json& host_profile,
+ProfileField resolve_profile_field(const std::string& path, const profiles::ProfileDocument& device_profile,
+                                   const std::string& device_file, const profiles::ProfileDocument& host_profile,
                                    const std::string& host_file);
-
-// Every sourced field of a profile, as dotted paths in file order.
-std::vector<std::string> sourced_fields(const nlohmann::ordered_json& profile);
 
 struct ProfileSetting {
   ProfileField field;

@@ -7,6 +7,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "host_sw/profiles/profile_json.h"
 #include "io/parse_number.h"
 #include "rc_version.h"
 #include "host_sw/studies/paper_workload.h"
@@ -76,7 +77,7 @@ std::set<std::string> driver_choices(const Study& s, const std::string& choice) 
   for (const ProfileSetting& f : s.fixed)
     if (f.field.kind == ProfileKind::host && f.field.field == field) values = {f.value.get<std::string>()};
   if (!values.empty()) return values;
-  for (const std::string& h : s.axes.hosts) values.insert(find_host_profile(h).json["driver_model"][choice]["value"].get<std::string>());
+  for (const std::string& h : s.axes.hosts) values.insert(profiles::json_of(find_host_profile(h).document).at("driver_model").at(choice).at("value").get<std::string>());
   return values;
 }
 
@@ -134,7 +135,7 @@ ProfileField resolve_study_field(const std::string& path, const std::vector<std:
   if (devices.empty() || hosts.empty()) throw std::invalid_argument("profile path '" + path + "': no profile to resolve it in");
   const board::DeviceProfile d = board::find_device_profile(devices.front());
   const HostProfile h = find_host_profile(hosts.front());
-  return resolve_profile_field(path, d.json, d.file, h.json, h.file);
+  return resolve_profile_field(path, d.document, d.file, h.document, h.file);
 }
 
 std::string default_scene_name(const SceneOptions& o) {

@@ -14,6 +14,7 @@
 #include "host_sw/platform/software_system.h"
 #include "host_sw/studies/child_guard.h"
 #include "host_sw/visibility/visibility_factory.h"
+#include "host_sw/platform/run_report_json.h"
 
 namespace rc {
 

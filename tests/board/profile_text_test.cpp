@@ -15,7 +15,7 @@
 #include <unistd.h>
 
 #include "board/device_profile.h"
-#include "board/profile_reader.h"
+#include "host_sw/profiles/profile_json.h"
 
 namespace rc::board::test {
 namespace {
@@ -29,7 +29,7 @@ class ProfileText : public ::testing::Test {
                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
-    std::ifstream in(default_config_dir() + "/devices/xc2v6000.json", std::ios::binary);
+    std::ifstream in(profiles::default_config_dir() + "/devices/xc2v6000.json", std::ios::binary);
     std::ostringstream text;
     text << in.rdbuf();
     shipped_ = text.str();

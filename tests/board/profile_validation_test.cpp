@@ -12,7 +12,7 @@
 #include "board/bank_layout.h"
 #include "board/board_params.h"
 #include "board/device_profile.h"
-#include "board/profile_reader.h"
+#include "host_sw/profiles/profile_json.h"
 
 namespace rc::board::test {
 namespace {
@@ -26,10 +26,10 @@ std::string error_of(const std::function<void()>& f) {
   return "(no error)";
 }
 
-nlohmann::ordered_json xc2v6000() { return find_device_profile("xc2v6000").json; }
+nlohmann::ordered_json xc2v6000() { return rc::profiles::json_of(find_device_profile("xc2v6000").document); }
 
 std::string device_error(const nlohmann::ordered_json& j) {
-  return error_of([&] { (void)device_profile_from_json(j, "configs/devices/x.json"); });
+  return error_of([&] { (void)device_profile_from_document(rc::profiles::document_of(j), "configs/devices/x.json"); });
 }
 
 nlohmann::ordered_json sourced(const nlohmann::ordered_json& value) { return {{"value", value}, {"source", "test"}}; }
@@ -42,7 +42,7 @@ TEST(ProfileValidation, ShippedProfilesPass) {
 // folder) says that, not "no profile".
 TEST(ProfileValidation, MissingAndNonFileProfilesAreNamed) {
   EXPECT_EQ(error_of([] { (void)find_device_profile("no-such-board"); }),
-            "no devices profile 'no-such-board' (looked for " + default_config_dir() + "/devices/no-such-board.json)");
+            "no devices profile 'no-such-board' (looked for " + profiles::default_config_dir() + "/devices/no-such-board.json)");
   EXPECT_EQ(error_of([] { (void)find_device_profile("/dev/null"); }),
             "/dev/null: is a character device, not a regular file (a device profile must be one)");
   EXPECT_EQ(error_of([] { (void)find_device_profile("/tmp/"); }), "/tmp/: is a directory, not a file");
@@ -59,7 +59,7 @@ TEST(ProfileValidation, BankSmallerThanAFaceRecordAndItsTableEntry) {
   }
   nlohmann::ordered_json j = xc2v6000();
   j["banks"]["capacity_bytes"]["value"] = 40;
-  EXPECT_EQ(device_profile_from_json(j, "x.json").bank_capacity_bytes, 40u);
+  EXPECT_EQ(device_profile_from_document(rc::profiles::document_of(j), "x.json").bank_capacity_bytes, 40u);
   j["banks"]["word_bits"]["value"] = 64;  // 10 words of 8 bytes
   EXPECT_EQ(device_error(j), "configs/devices/x.json: banks.capacity_bytes = 40 is smaller than one face record and "
                              "its own-face table entry (80 bytes: 10 words of 8 bytes; a pass needs both in the face "
@@ -82,7 +82,7 @@ TEST(ProfileValidation, BankLargerThanTheRegistersReach) {
                              "can address (171798691800 bytes: 42949672950 words of 4 bytes, 2^32 - 1 face records and "
                              "their own-face table entries, the most the 32-bit FACE_COUNT register reaches)");
   j["banks"]["capacity_bytes"]["value"] = limit;
-  EXPECT_EQ(device_profile_from_json(j, "x.json").bank_capacity_bytes, limit);
+  EXPECT_EQ(device_profile_from_document(rc::profiles::document_of(j), "x.json").bank_capacity_bytes, limit);
 }
 
 // A bank so large that it holds more faces or rays than the 32-bit registers count: the layout's
@@ -119,7 +119,7 @@ TEST(ProfileValidation, LaneClockKeysAreWholeLaneCounts) {
   }
   nlohmann::ordered_json j = xc2v6000();
   j["clock"]["mhz_by_lanes"]["255"] = sourced(50);
-  EXPECT_EQ(device_profile_from_json(j, "x.json").clock_mhz(255), 50);
+  EXPECT_EQ(device_profile_from_document(rc::profiles::document_of(j), "x.json").clock_mhz(255), 50);
 }
 
 TEST(ProfileValidation, ClocksArePositiveAndFinite) {

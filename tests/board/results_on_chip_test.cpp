@@ -15,6 +15,7 @@
 #include "board/cycle_wrapper.h"
 #include "board/device_profile.h"
 #include "tests/board/board_test_support.h"
+#include "host_sw/profiles/profile_json.h"
 
 namespace rc::board::test {
 namespace {
@@ -221,10 +222,10 @@ TEST(ResultsOnChip, SameResultWordsAsResultsInTheBank) {
 // A pass of 101 rays is refused (kTooManyRays); split into 100 + 1 it gives the bits of one pass of
 // 101 rays on the board that keeps its results in the bank.
 TEST(ResultsOnChip, BatchesSplitWhenTheBlockRamIsTooSmall) {
-  nlohmann::ordered_json j = find_device_profile("xc2v6000").json;
+  nlohmann::ordered_json j = rc::profiles::json_of(find_device_profile("xc2v6000").document);
   j["fpga"]["block_ram_bits"] = {{"value", 101}, {"source", "test: a block RAM too small for one batch"}};
   j["wrapper"]["results"] = {{"value", "on_chip"}, {"source", "test"}};
-  const DeviceProfile tiny = device_profile_from_json(j, "tiny-bram.json");
+  const DeviceProfile tiny = device_profile_from_document(rc::profiles::document_of(j), "tiny-bram.json");
   EXPECT_EQ(tiny.block_ram_bits, 101u);
   EXPECT_EQ(tiny.results, ResultStore::on_chip);
   BoardChoices choices;
@@ -302,29 +303,29 @@ TEST(ResultsOnChip, ProfileFieldsAreReadAndChecked) {
   EXPECT_EQ(find_device_profile("virtex4-sx55").block_ram_bits, 320u * 18432);
   EXPECT_EQ(find_device_profile("spartan3-5000").block_ram_bits, 104u * 18432);
 
-  const nlohmann::ordered_json good = find_device_profile("xc2v6000").json;
+  const nlohmann::ordered_json good = rc::profiles::json_of(find_device_profile("xc2v6000").document);
   nlohmann::ordered_json j = good;
   j["fpga"].erase("block_ram_bits");
-  expect_invalid([&] { device_profile_from_json(j, "p.json"); }, {"p.json", "fpga.block_ram_bits: missing"});
+  expect_invalid([&] { device_profile_from_document(rc::profiles::document_of(j), "p.json"); }, {"p.json", "fpga.block_ram_bits: missing"});
   j = good;
   j["wrapper"].erase("results");
-  expect_invalid([&] { device_profile_from_json(j, "p.json"); }, {"p.json", "wrapper.results", "missing", "bank, on_chip"});
+  expect_invalid([&] { device_profile_from_document(rc::profiles::document_of(j), "p.json"); }, {"p.json", "wrapper.results", "missing", "bank, on_chip"});
   j = good;
   j["wrapper"]["results"]["value"] = "bram";
-  expect_invalid([&] { device_profile_from_json(j, "p.json"); },
+  expect_invalid([&] { device_profile_from_document(rc::profiles::document_of(j), "p.json"); },
                  {"p.json", "wrapper.results", "'bram' is not one of bank, on_chip"});
   j = good;
   j["wrapper"]["results"] = "on_chip";
-  expect_invalid([&] { device_profile_from_json(j, "p.json"); }, {"p.json", "wrapper.results", "source"});
+  expect_invalid([&] { device_profile_from_document(rc::profiles::document_of(j), "p.json"); }, {"p.json", "wrapper.results", "source"});
   j = good;
   j["wrapper"]["results"]["source"] = "";
-  expect_invalid([&] { device_profile_from_json(j, "p.json"); }, {"p.json", "wrapper.results", "source"});
+  expect_invalid([&] { device_profile_from_document(rc::profiles::document_of(j), "p.json"); }, {"p.json", "wrapper.results", "source"});
 
   // Results on chip on a device with no block RAM left: an error before any board is made.
   j = good;
   j["fpga"]["block_ram_bits"]["value"] = 0;
   j["wrapper"]["results"]["value"] = "on_chip";
-  const DeviceProfile none = device_profile_from_json(j, "none.json");
+  const DeviceProfile none = device_profile_from_document(rc::profiles::document_of(j), "none.json");
   expect_invalid([&] { make_board_params(none, BoardChoices{}); }, {"none.json", "on_chip", "0 block RAM bits"});
   expect_invalid([&] { place_results(make_bank_layout(1, 6, 15, 32, 1u << 20), ResultStore::on_chip, 0); },
                  {"block RAM"});

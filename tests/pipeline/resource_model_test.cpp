@@ -127,9 +127,9 @@ TEST(PipelineResources, RejectsBadWidthsAndBadFiles) {
   EXPECT_THROW(model().pipeline(6, false), std::invalid_argument);
   EXPECT_THROW(model().pipeline(32, true), std::invalid_argument);
   EXPECT_THROW(ResourceModel::load("/nonexistent/resources.json"), std::runtime_error);
-  EXPECT_THROW(ResourceModel::from_json_text("{ not json"), std::runtime_error);
+  EXPECT_THROW(ResourceModel::from_text("{ not json"), std::runtime_error);
   try {
-    ResourceModel::from_json_text(R"({"device": {"name": "x", "slices": 1, "block_multipliers": 1}})");
+    ResourceModel::from_text(R"({"device": {"name": "x", "slices": 1, "block_multipliers": 1}})");
     FAIL() << "accepted a device without a source";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("source"), std::string::npos) << e.what();

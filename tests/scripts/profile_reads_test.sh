@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # `rc2000sim run --impl board` reads each profile once (issue 24): the device and host profiles, the
 # pipeline resources and the paper's table, counted by the reader's own log (RC2000SIM_LOG_READS:
-# io/input_file.cpp names every file it reads). Fixed-point lanes only: with float lanes, sec 5.6's
-# full-rate estimate still reads the RC2000's own xc2v6000 profile again for its bank bandwidth
-# (board/throughput_estimates.cpp, rc2000_bandwidth; issue 24, what remains).
+# io/input_file.cpp names every file it reads). Fixed-point and float lanes: sec 5.6's full-rate
+# estimate asks for the RC2000's own xc2v6000 profile again for its bank bandwidth
+# (board/throughput_estimates.cpp, rc2000_bandwidth), which a device named from the config folder
+# answers from the process's one read (board::find_device_profile).
 #   profile_reads_test.sh RC2000SIM
 set -euo pipefail
 sim="$1"
@@ -25,3 +26,5 @@ check() {  # NAME ARGS...: one run, its reads counted
 }
 check fixed --lanes 2
 check concurrent --lanes 2 --concurrent --bits 12
+check float --lanes 2 --arith float:8,23
+check float-other-device --device virtex4-sx55 --arith float:5,10

@@ -7,13 +7,14 @@
 #include <string>
 
 #include "host_sw/driver/host_cpu_model.h"
+#include "host_sw/profiles/profile_json.h"
 
 namespace rc {
 namespace {
 
 std::string error_of(const nlohmann::ordered_json& profile) {
   try {
-    host_profile_from_json(profile, "test.json");
+    host_profile_from_document(rc::profiles::document_of(profile), "test.json");
   } catch (const std::invalid_argument& e) {
     return e.what();
   }
@@ -23,16 +24,16 @@ std::string error_of(const nlohmann::ordered_json& profile) {
 TEST(HostProfile, DriverModelChoicesAreReadStrictly) {
   const HostProfile base = find_host_profile("athlon-mp-2600");
   EXPECT_EQ(base.driver_model.name(), "per_segment/dma/once/form_factors");
-  nlohmann::ordered_json bad = base.json;
+  nlohmann::ordered_json bad = profiles::json_of(base.document);
   bad["driver_model"]["transfer"]["value"] = "pcie";
   EXPECT_EQ(error_of(bad), "test.json: driver_model.transfer.value: 'pcie' is not one of dma, pio");
-  bad = base.json;
+  bad = profiles::json_of(base.document);
   bad["driver_model"]["face_upload"]["source"] = "";
   EXPECT_NE(error_of(bad).find("driver_model.face_upload.source"), std::string::npos);
-  bad = base.json;
+  bad = profiles::json_of(base.document);
   bad["driver_model"].erase("overlap");
   EXPECT_EQ(error_of(bad), "test.json: driver_model.overlap.value: missing");
-  bad = base.json;
+  bad = profiles::json_of(base.document);
   bad["driver_seconds"].erase("word_store");
   EXPECT_NE(error_of(bad).find("driver_seconds.word_store"), std::string::npos);
 }
@@ -44,9 +45,19 @@ TEST(HostProfile, WithDriverModelRoundTrips) {
   m.transfer = DriverModel::Transfer::Pio;
   m.face_upload = DriverModel::FaceUpload::EveryPass;
   m.overlap = DriverModel::Overlap::DualCpu;
-  const HostProfile back = host_profile_from_json(with_driver_model(base.json, m, "test"), "test.json");
+  const HostProfile back = host_profile_from_document(with_driver_model(base.document, m, "test"), "test.json");
   EXPECT_TRUE(back.driver_model == m);
   EXPECT_EQ(back.driver_model.name(), "per_word/pio/every_pass/dual_cpu");
+  // The typed variant (set directly, no re-read) equals its own document read again by the loader.
+  const HostProfile typed = with_driver_model(base, m);
+  const HostProfile reread = host_profile_from_document(typed.document, base.file);
+  EXPECT_TRUE(typed.driver_model == reread.driver_model);
+  EXPECT_EQ(typed.work, reread.work);
+  EXPECT_EQ(typed.driver, reread.driver);
+  EXPECT_EQ(typed.interrupt_latency, reread.interrupt_latency);
+  EXPECT_EQ(typed.clock_hz, reread.clock_hz);
+  EXPECT_TRUE(typed.document == reread.document);
+  EXPECT_EQ(typed.document.value_text("driver_model.transfer"), "\"pio\"");
 }
 
 }  // namespace

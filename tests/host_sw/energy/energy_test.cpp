@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "board/device_profile.h"
-#include "board/profile_reader.h"
+#include "host_sw/profiles/profile_json.h"
 #include "board/design_fit.h"
 #include "host_sw/energy/energy_model.h"
 #include "host_sw/energy/full_rate_energy.h"
@@ -16,7 +16,7 @@ namespace {
 nlohmann::ordered_json sourced(double v) { return {{"value", v}, {"source", "test figure"}}; }
 
 nlohmann::ordered_json device_json_with_energy() {
-  nlohmann::ordered_json j = board::read_json_file(board::resolve_profile_path("xc2v6000", "devices"));
+  nlohmann::ordered_json j = profiles::read_json_file(profiles::resolve_profile_path("xc2v6000", "devices"));
   j["energy"] = {{"fpga",
                   {{"static_w", sourced(1.5)},
                    {"slice_pj_per_cycle", sourced(2.0)},
@@ -28,14 +28,14 @@ nlohmann::ordered_json device_json_with_energy() {
 }
 
 nlohmann::ordered_json host_json_with_energy() {
-  nlohmann::ordered_json j = board::read_json_file(board::resolve_profile_path("athlon-mp-2600", "hosts"));
+  nlohmann::ordered_json j = profiles::read_json_file(profiles::resolve_profile_path("athlon-mp-2600", "hosts"));
   j["energy"] = {{"busy_w", sourced(60.0)}, {"wait_w", sourced(10.0)}};
   return j;
 }
 
 EnergyTables tables() {
-  const board::DeviceProfile device = board::device_profile_from_json(device_json_with_energy(), "dev.json");
-  return load_energy_tables(&device, host_json_with_energy(), "host.json");
+  const board::DeviceProfile device = board::device_profile_from_document(rc::profiles::document_of(device_json_with_energy()), "dev.json");
+  return load_energy_tables(&device, rc::profiles::document_of(host_json_with_energy()), "host.json");
 }
 
 Activity board_activity() {
@@ -141,7 +141,7 @@ TEST(Energy, SoftwareRunsCountOnlyTheHost) {
   a.host_busy_cpu_seconds = 3;
   a.steps = 3;
   const nlohmann::ordered_json host = host_json_with_energy();
-  const EnergyReport r = estimate(load_energy_tables(nullptr, host, "host.json"), a);
+  const EnergyReport r = estimate(load_energy_tables(nullptr, rc::profiles::document_of(host), "host.json"), a);
   ASSERT_EQ(r.components.size(), 1u);
   EXPECT_EQ(r.joules, 3 * 60.0 + 0 * 10.0);
   EXPECT_EQ(r.joules_per_intersection, 0.0);  // none were made
@@ -152,13 +152,13 @@ TEST(Energy, AProfileWithoutATableSaysSo) {
   const board::DeviceProfile bare = board::find_device_profile("xc2v6000");
   nlohmann::ordered_json host = host_json_with_energy();
   host.erase("energy");
-  EXPECT_EQ(error_of([&] { (void)host_energy_table(host, "h.json"); }),
+  EXPECT_EQ(error_of([&] { (void)host_energy_table(rc::profiles::document_of(host), "h.json"); }),
             "h.json has no energy table (an \"energy\" section: docs/energy.md), so the host has no energy figures; "
             "its times are unaffected");
   nlohmann::ordered_json device = device_json_with_energy();
   device.erase("energy");
-  const board::DeviceProfile no_table = board::device_profile_from_json(device, "d.json");
-  const EnergyTables t = load_energy_tables(&no_table, host_json_with_energy(), "host.json");
+  const board::DeviceProfile no_table = board::device_profile_from_document(rc::profiles::document_of(device), "d.json");
+  const EnergyTables t = load_energy_tables(&no_table, rc::profiles::document_of(host_json_with_energy()), "host.json");
   EXPECT_FALSE(t.device.has_value());
   EXPECT_TRUE(t.host.has_value());
   EXPECT_EQ(t.missing, "d.json has no energy table (an \"energy\" section: docs/energy.md), so the board has no "
@@ -171,7 +171,7 @@ TEST(Energy, ABrokenTableNamesTheKey) {
   nlohmann::ordered_json j = device_json_with_energy();
   j["energy"]["sram"]["read_nj"]["value"] = -1;
   auto device_error = [](const nlohmann::ordered_json& json) {
-    return error_of([&] { (void)device_energy_table(board::device_profile_from_json(json, "d.json")); });
+    return error_of([&] { (void)device_energy_table(board::device_profile_from_document(rc::profiles::document_of(json), "d.json")); });
   };
   EXPECT_EQ(device_error(j), "d.json: energy.sram.read_nj: value -1 is outside [0, 1000000]");
   j = device_json_with_energy();
@@ -212,8 +212,8 @@ TEST(Energy, ShippedProfilesHaveSourcedTables) {
     }
   }
   for (const char* name : {"athlon-mp-2600", "athlon-mp-2600-calibrated"}) {
-    const std::string path = board::resolve_profile_path(name, "hosts");
-    const HostEnergyTable t = host_energy_table(board::read_json_file(path), path);
+    const std::string path = profiles::resolve_profile_path(name, "hosts");
+    const HostEnergyTable t = host_energy_table(rc::profiles::read_profile_document(path), path);
     EXPECT_GT(t.busy_w.value, t.wait_w.value) << name;
   }
 }
@@ -227,7 +227,7 @@ namespace {
 // Sec 5.6 in joules: one second at full rate, by hand with the test tables above. 2 lanes at 50 MHz,
 // 1e8 intersections a second moving 8 bytes each (2e8 words, half priced as reads, half as writes).
 TEST(FullRateEnergy, OneSecondAtFullRateByHand) {
-  const board::DeviceProfile device = board::device_profile_from_json(device_json_with_energy(), "dev.json");
+  const board::DeviceProfile device = board::device_profile_from_document(rc::profiles::document_of(device_json_with_energy()), "dev.json");
   board::PaperEstimate e;
   e.estimate = "a test design";
   e.rule = board::EstimateRule::Model;
@@ -257,7 +257,7 @@ TEST(FullRateEnergy, OneSecondAtFullRateByHand) {
 TEST(FullRateEnergy, AProfileWithoutATableGivesNoFiguresAndSaysWhy) {
   nlohmann::ordered_json j = device_json_with_energy();
   j.erase("energy");
-  const board::DeviceProfile device = board::device_profile_from_json(j, "bare.json");
+  const board::DeviceProfile device = board::device_profile_from_document(rc::profiles::document_of(j), "bare.json");
   board::PaperEstimate e;
   e.estimate = "lanes that fit";
   e.device = device.name;
@@ -265,7 +265,7 @@ TEST(FullRateEnergy, AProfileWithoutATableGivesNoFiguresAndSaysWhy) {
   e.clock_mhz = 50;
   e.intersections_per_s = 1e8;
   e.bytes_per_intersection = 8;
-  const FullRateEnergy f = full_rate_energy(e, device, load_energy_tables(&device, host_json_with_energy(), "h.json"), 15);
+  const FullRateEnergy f = full_rate_energy(e, device, load_energy_tables(&device, rc::profiles::document_of(host_json_with_energy()), "h.json"), 15);
   EXPECT_NE(f.missing.find("bare.json has no energy table"), std::string::npos) << f.missing;
   EXPECT_TRUE(std::isnan(f.card_nj));
   EXPECT_TRUE(std::isnan(f.software_nj));

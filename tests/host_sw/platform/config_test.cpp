@@ -11,6 +11,7 @@
 #include "board/device_profile.h"
 #include "host_sw/platform/board_run.h"
 #include "tests/host_sw/platform/system_support.h"
+#include "host_sw/profiles/profile_json.h"
 
 namespace rc::board {
 namespace {
@@ -44,8 +45,8 @@ TEST(DeviceProfiles, ShippedProfilesLoadWithThePapersNumbers) {
     EXPECT_EQ(p.clock_mhz(9), 176.9) << name;
     EXPECT_EQ(p.bank_clock_mhz, 100.0) << name;
   }
-  EXPECT_EQ(find_device_profile("virtex4-sx55").json["fpga"]["block_multipliers"]["value"], 512);
-  EXPECT_EQ(find_device_profile("spartan3-5000").json["fpga"]["slices"]["value"], 33280);
+  EXPECT_EQ(rc::profiles::json_of(find_device_profile("virtex4-sx55").document)["fpga"]["block_multipliers"]["value"], 512);
+  EXPECT_EQ(rc::profiles::json_of(find_device_profile("spartan3-5000").document)["fpga"]["slices"]["value"], 33280);
   const HostProfile host = find_host_profile("athlon-mp-2600");
   EXPECT_EQ(host.clock_hz, 2133e6);
   EXPECT_GT(host.work[static_cast<int>(HostWork::FormFactor)], sc_core::SC_ZERO_TIME);
@@ -103,7 +104,7 @@ TEST(BankLayouts, BadConfigurationsFailClearly) {
 
 TEST(DeviceProfiles, BrokenProfilesNameFileAndField) {
   const std::string path = (std::filesystem::temp_directory_path() / ("rc_profile_" + std::to_string(getpid()) + ".json")).string();
-  nlohmann::ordered_json good = find_device_profile("xc2v6000").json;
+  nlohmann::ordered_json good = rc::profiles::json_of(find_device_profile("xc2v6000").document);
   auto check = [&](nlohmann::ordered_json j, std::initializer_list<const char*> parts) {
     std::ofstream(path) << j.dump();
     expect_error([&] { load_device_profile(path); }, parts);

@@ -12,10 +12,11 @@
 
 #include <unistd.h>
 
-#include "host_sw/driver/trace_writer.h"
+#include "host_sw/driver/trace_json.h"
 #include "host_sw/visibility/visibility_factory.h"
 #include "host_sw/visibility/visibility_recording.h"
 #include "tests/host_sw/platform/system_support.h"
+#include "host_sw/platform/run_report_json.h"
 
 namespace rc::test {
 namespace {
@@ -316,7 +317,7 @@ TEST(MultiCard, ReportHasPerCardFiguresAndTheTraceATrackPerCard) {
               j["simulated_seconds"].get<double>(), 1e-12);
 
   const std::filesystem::path file = std::filesystem::temp_directory_path() / ("rc_cards_" + std::to_string(getpid()) + ".json");
-  s.trace_writer().write(file.string());
+  write_trace_json(s.trace_writer(), file.string());
   std::ifstream in(file);
   const nlohmann::json trace = nlohmann::json::parse(in);
   std::filesystem::remove(file);

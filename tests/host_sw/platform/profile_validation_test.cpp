@@ -12,6 +12,7 @@
 #include "host_sw/driver/host_cpu_model.h"
 #include "host_sw/platform/board_run.h"
 #include "tests/host_sw/platform/system_support.h"
+#include "host_sw/profiles/profile_json.h"
 
 namespace rc::test {
 namespace {
@@ -32,30 +33,30 @@ TEST(HostProfileValidation, ShippedProfilesPass) {
 }
 
 TEST(HostProfileValidation, UnknownKeysAreRefused) {
-  nlohmann::ordered_json j = find_host_profile("athlon-mp-2600").json;
+  nlohmann::ordered_json j = rc::profiles::json_of(find_host_profile("athlon-mp-2600").document);
   j["driver_seconds"]["word_stor"] = sourced(1e-9);
-  EXPECT_EQ(error_of([&] { (void)host_profile_from_json(j, "h.json"); }),
+  EXPECT_EQ(error_of([&] { (void)host_profile_from_document(rc::profiles::document_of(j), "h.json"); }),
             "h.json: driver_seconds.word_stor: unknown key (known in driver_seconds: coordinate_convert, driver_call, "
             "face_pack, interrupt_latency, result_unpack, segment_pack, word_load, word_store)");
-  j = find_host_profile("athlon-mp-2600").json;
+  j = rc::profiles::json_of(find_host_profile("athlon-mp-2600").document);
   j["driver_model"]["transfer"]["note"] = "x";
-  EXPECT_EQ(error_of([&] { (void)host_profile_from_json(j, "h.json"); }),
+  EXPECT_EQ(error_of([&] { (void)host_profile_from_document(rc::profiles::document_of(j), "h.json"); }),
             "h.json: driver_model.transfer.note: unknown key (a sourced field has only \"value\" and \"source\")");
-  j = find_host_profile("athlon-mp-2600").json;
+  j = rc::profiles::json_of(find_host_profile("athlon-mp-2600").document);
   j["schema"] = "rc2000sim.device/1";
-  EXPECT_EQ(error_of([&] { (void)host_profile_from_json(j, "h.json"); }),
+  EXPECT_EQ(error_of([&] { (void)host_profile_from_document(rc::profiles::document_of(j), "h.json"); }),
             "h.json: schema: is \"rc2000sim.device/1\"; this reader takes \"rc2000sim.host/1\"");
   // A calibrated profile's record of its fit is free-form.
-  j = find_host_profile("athlon-mp-2600").json;
+  j = rc::profiles::json_of(find_host_profile("athlon-mp-2600").document);
   j["calibration"] = {{"anything", {1, 2, 3}}};
-  EXPECT_NO_THROW((void)host_profile_from_json(j, "h.json"));
+  EXPECT_NO_THROW((void)host_profile_from_document(rc::profiles::document_of(j), "h.json"));
 }
 
 // The SIGFPE of issue 15: a 16-byte bank went through to the driver's division by the faces per set.
 TEST(BoardRunner, TooSmallBanksAreRefusedBeforeElaboration) {
-  nlohmann::ordered_json j = board::find_device_profile("xc2v6000").json;
+  nlohmann::ordered_json j = rc::profiles::json_of(board::find_device_profile("xc2v6000").document);
   j["banks"]["capacity_bytes"]["value"] = 16;
-  EXPECT_EQ(error_of([&] { (void)board::device_profile_from_json(j, "configs/devices/x.json"); }),
+  EXPECT_EQ(error_of([&] { (void)board::device_profile_from_document(rc::profiles::document_of(j), "configs/devices/x.json"); }),
             "configs/devices/x.json: banks.capacity_bytes = 16 is smaller than one face record and its own-face table "
             "entry (40 bytes: 10 words of 4 bytes; a pass needs both in the face bank when no spare bank holds the "
             "table)");

@@ -9,6 +9,7 @@
 
 #include "scenes/prepare.h"
 #include "tests/host_sw/platform/system_support.h"
+#include "host_sw/platform/run_report_json.h"
 
 namespace rc::test {
 namespace {

@@ -7,8 +7,9 @@
 #include <functional>
 #include <string>
 
-#include "host_sw/studies/calibration.h"
-#include "host_sw/studies/calibration_variants.h"
+#include "host_sw/studies/calibration_json.h"
+#include "host_sw/studies/calibration_variants_json.h"
+#include "host_sw/profiles/profile_json.h"
 
 namespace rc {
 namespace {
@@ -38,7 +39,7 @@ TEST(Calibration, RecoversKnownFactorsOnASyntheticCase) {
 
   HostProfile base = find_host_profile("athlon-mp-2600");
   const nlohmann::ordered_json j = calibrated_profile(base, fit, obs, "synthetic-calibrated");
-  const double test_estimate = base.json["work_seconds"]["intersection_test"]["value"].get<double>();
+  const double test_estimate = profiles::json_of(base.document).at("work_seconds").at("intersection_test").at("value").get<double>();
   EXPECT_NEAR(j["work_seconds"]["intersection_test"]["value"].get<double>(), truth[0] * test_estimate, 1e-6 * test_estimate);
   EXPECT_NE(j["work_seconds"]["intersection_test"]["source"].get<std::string>().find("fitted"), std::string::npos);
   EXPECT_EQ(j["calibration"]["observations"].size(), obs.size());

@@ -9,7 +9,7 @@
 #include <string>
 #include <unistd.h>
 
-#include "board/profile_reader.h"
+#include "host_sw/profiles/profile_json.h"
 #include "host_sw/studies/study_file.h"
 #include "host_sw/studies/sweep_study.h"
 
@@ -18,7 +18,7 @@ namespace {
 
 const std::string kSource = RC_SOURCE_DIR;
 const std::string kInline = kSource + "/tests/host_sw/studies/data/inline.toml";
-const std::string kDevice = board::default_config_dir() + "/devices/xc2v6000.json";
+const std::string kDevice = profiles::default_config_dir() + "/devices/xc2v6000.json";
 
 std::string error_of(const std::string& text) {
   try {

@@ -1,7 +1,8 @@
-// Reads the profile files of configs/ (devices, hosts): every number is an object
-// {"value": x, "source": "where it came from"}, and a missing, mistyped, out-of-range or unsourced
-// number is an error that names the file and the field path (e.g. "xc2v6000.json: banks.clock_mhz:
-// missing"). Also finds a profile by name in the source tree's configs/ folder.
+// The one field-checking dialect of the profile files of configs/ (devices, hosts, energy sections):
+// every number is an object {"value": x, "source": "where it came from"}, and a missing, mistyped,
+// out-of-range or unsourced number is an error that names the file and the field path (e.g.
+// "xc2v6000.json: banks.clock_mhz: missing"). Reads a ProfileDocument (profile_document.h) into the
+// typed values the models take; no JSON crosses this header.
 #pragma once
 
 #include <cstdint>
@@ -10,32 +11,15 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include "host_sw/profiles/profile_document.h"
 
-#include "io/input_file.h"
-
-namespace rc::board {
-
-// Where profiles are found by name: io::config_dir() (RC2000SIM_CONFIGS, else this source tree's
-// configs/, else the installed share folder; io/config_dir.h).
-std::string default_config_dir();
-
-// A path (contains '/' or ends in ".json") is returned unchanged; a bare name becomes
-// <config dir>/<kind>/<name>.json ("devices", "hosts"). Throws std::invalid_argument if the file does
-// not exist, naming what was looked for.
-std::string resolve_profile_path(const std::string& name_or_path, const std::string& kind);
-
-// Parses a JSON file of at most `limit_bytes` (io/input_file.h; `what` names the kind of file in the
-// error) through io/json_text.h (depth limit, duplicate keys, comments, UTF-8); throws
-// std::invalid_argument with the file name on I/O, text or syntax errors.
-nlohmann::ordered_json read_json_file(const std::string& path, std::uint64_t limit_bytes = io::kProfileLimitBytes,
-                                      const std::string& what = "a profile");
+namespace rc::profiles {
 
 // Every path a loader reads is remembered, so that refuse_unknown_keys() can refuse the keys it never
 // read: a misspelt field ("banks.clock_mhzz") is an error, not a silent default.
 class ProfileReader {
  public:
-  ProfileReader(const nlohmann::ordered_json& root, std::string file) : root_(root), file_(std::move(file)) {}
+  ProfileReader(const ProfileDocument& document, std::string file) : document_(document), file_(std::move(file)) {}
 
   // A sourced number at a dotted path ("banks.clock_mhz"), checked to lie in [min, max] and, if
   // `integer`, to be a whole number.
@@ -47,8 +31,9 @@ class ProfileReader {
   // A sourced name {"value": "bank", "source": "..."} that must be one of `allowed`; returns its index.
   // Errors name the file, the field and the allowed names.
   std::size_t choice(const std::string& path, const std::vector<std::string>& allowed) const;
-  bool has(const std::string& path) const { return find(path) != nullptr; }
-  const nlohmann::ordered_json* find(const std::string& path) const;
+  bool has(const std::string& path) const;
+  // The keys of the object at `path`, in file order; fails with `problem` if it is not an object.
+  std::vector<std::string> keys(const std::string& path, const std::string& problem) const;
 
   // The profile's "schema" string, when present, must be `expected` ("rc2000sim.device/1").
   void schema(const std::string& expected) const;
@@ -64,14 +49,12 @@ class ProfileReader {
   const std::string& file() const { return file_; }
 
  private:
-  const nlohmann::ordered_json& sourced(const std::string& path) const;
+  friend struct ReaderAccess;  // profile_reader.cpp: the lookups on the document's tree
   bool was_read(const std::string& path) const { return read_.count(path) > 0; }
-  void check_known(const nlohmann::ordered_json& node, const std::string& path,
-                   const std::vector<std::string>& free_form) const;
 
-  const nlohmann::ordered_json& root_;
+  const ProfileDocument& document_;
   std::string file_;
   mutable std::set<std::string> read_;  // every path looked up
 };
 
-}  // namespace rc::board
+}  // namespace rc::profiles

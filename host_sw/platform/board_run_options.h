@@ -1,0 +1,56 @@
+// What a caller chooses for a board run (host_sw/platform/board_run.h): device, lanes, width, driver,
+// host, outputs. Every default is the command's, field by field.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "board/board_params.h"
+#include "board/device_profile.h"
+#include "host_sw/driver/host_cpu_model.h"
+#include "host_sw/platform/card_options.h"
+#include "host_sw/radiosity/radiosity.h"
+#include "host_sw/radiosity/visibility.h"
+
+namespace rc {
+
+// Every default is `rc2000sim run --impl board`'s with no other option (apps/run_command.cpp;
+// tests/scripts/library_defaults_test.sh): same device, host, lanes, banks, width and driver.
+struct BoardRunOptions {
+  std::string device = "xc2v6000";      // configs/devices/NAME.json, or a path to a profile
+  std::optional<board::DeviceProfile> device_profile;  // when set, this profile instead of `device` (studies)
+  board::LaneCount lanes = 1;           // pipeline instances (1..255, checked when set)
+  unsigned banks = 0;                   // 0: the profile's bank count
+  pipeline::FracBits bits = 15;         // fractional bits (7..31), checked when set
+  // Set: float lanes in this format instead (docs/board.md, "Float lanes"); `bits` is then unused.
+  // The oracle, if any, must then be the `float:E,M` software backend of the same format.
+  std::optional<pipeline::FloatFormat> float_format;
+  bool concurrent = false;              // paper sec 4.3
+  // configs/hosts/NAME.json, or a path. The command's default: the profile fitted to the paper's
+  // measurements (docs/calibration.md), so a library call gives `rc2000sim run --impl board`'s times.
+  std::string host = "athlon-mp-2600-calibrated";
+  std::optional<HostProfile> host_profile;  // when set, this profile instead of `host` (calibration variants)
+  // Record a Chrome/Perfetto trace of steps trace_first..trace_last: BoardRunResult::trace_json (the
+  // caller writes it, with its other outputs).
+  bool trace = false;
+  int trace_first_step = 1, trace_last_step = 3;
+  // Where SystemC writes a VCD of start/busy/done/irq while the run simulates (empty: none). It is
+  // written as the simulation goes, so the run command points it at a temporary file and moves that
+  // into place with its other outputs when the run has succeeded.
+  std::string vcd_path;
+  std::uint64_t bank_capacity_bytes = 0;  // 0: the profile's (tests force batching with small banks)
+  bool allow_batching = true;
+  board::WrapperModel model = board::WrapperModel::fast;  // cycle: tests on small scenes only
+  VisibilityBackend* oracle = nullptr;  // lanes' answer from a bit-identical host model (BoardVisibilityOptions)
+  bool print_summaries = false;         // the tlm parts' one-line summaries at the end
+  std::function<void(const StepProgress&)> on_progress;  // after every step (host thread)
+  // Several identical cards (docs/board.md, "Several cards"): how many (1..16, checked when set),
+  // how a step is split over them, and whether they share one PCI bus.
+  CardCount cards = 1;
+  CardSplit card_split = CardSplit::rays;
+  CardBus card_bus = CardBus::shared;
+};
+
+}  // namespace rc

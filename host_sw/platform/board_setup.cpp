@@ -1,0 +1,36 @@
+#include "host_sw/platform/board_setup.h"
+
+namespace rc {
+
+BoardSetup make_board_setup(const BoardRunOptions& o) {
+  const board::DeviceProfile device = o.device_profile ? *o.device_profile : board::find_device_profile(o.device);
+  BoardSetup s;
+  s.host = o.host_profile ? *o.host_profile : find_host_profile(o.host);
+  board::BoardChoices c;
+  c.lanes = o.lanes;
+  c.banks = o.banks;
+  c.bits = o.bits;
+  c.float_format = o.float_format;
+  c.bank_capacity_bytes = o.bank_capacity_bytes;
+  c.model = o.model;
+  c.irq_latency = s.host.interrupt_latency;
+  s.board = board::make_board_params(device, c);
+  s.board.report_at_end = o.print_summaries;
+  // The layout, made once: a bad configuration fails here, before elaboration, and the board uses it.
+  s.layout = board::make_bank_layout(s.board);  // results placed as the profile says (bank or on chip)
+  s.driver.concurrent = o.concurrent;
+  s.driver.allow_batching = o.allow_batching;
+  s.driver.oracle = o.oracle;
+  if (o.trace) {
+    s.trace_first_step = o.trace_first_step;
+    s.trace_last_step = o.trace_last_step;
+  }
+  s.on_progress = o.on_progress;
+  s.cards = o.cards;
+  s.card_split = o.card_split;
+  s.card_bus = o.card_bus;
+  s.energy = energy::load_energy_tables(&device, s.host.document, s.host.file);
+  return s;
+}
+
+}  // namespace rc

@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# The JSON edge (issue 24): outside the tests, a file may include nlohmann/json only if it lies in io/
+# (the JSON text checks), host_sw/profiles/ (the profile-reading edge), apps/ (the command line), or
+# its name ends in _json.h / _json.cpp (an output writer or codec). Models see typed values only.
+#   json_edge_test.sh SOURCE_DIR
+# Exit 0 when every include is at an edge; 1 naming each file that is not (and each allow-listed file
+# that no longer needs its place, so the list only shrinks).
+set -euo pipefail
+root="$1"
+cd "$root"
+
+# Allowed for now (shell patterns), each with its reason; remove a line when its files are done.
+# Owned by helper d25 this session (issue 25 splits them and moves their codecs to *_json.cpp): not
+# checked for staleness, as that split renames them.
+elsewhere=(
+  'host_sw/studies/config_sweep*' 'host_sw/studies/sweep_study*' 'host_sw/studies/study.*'
+  'host_sw/studies/study_file*' 'host_sw/studies/timing_study*'
+)
+allowed=(
+  # ProfileSetting::value is the study codec's JSON value, read and written by the d25 files above;
+  # typed (profiles::FieldValue) once that codec is.
+  'host_sw/studies/profile_setting.h'
+)
+
+is_allowed() {
+  local pattern
+  for pattern in "${elsewhere[@]}" "${allowed[@]}"; do
+    # shellcheck disable=SC2254
+    case "$1" in $pattern) return 0 ;; esac
+  done
+  return 1
+}
+at_edge() {
+  case "$1" in
+    io/*|host_sw/profiles/*|apps/*|*_json.h|*_json.cpp) return 0 ;;
+  esac
+  return 1
+}
+
+status=0
+mapfile -t includers < <(grep -rlE '#include[[:space:]]*[<"]nlohmann/json' \
+  --include='*.h' --include='*.hpp' --include='*.cpp' \
+  io scenes pipeline tlm board host_sw apps bench fuzz examples 2>/dev/null | sort)
+for f in "${includers[@]}"; do
+  at_edge "$f" && continue
+  is_allowed "$f" && continue
+  echo "FAIL: $f includes nlohmann/json outside the JSON edges (io/, host_sw/profiles/, apps/, *_json.h/.cpp)" >&2
+  status=1
+done
+for pattern in "${allowed[@]}"; do
+  used=0
+  for f in "${includers[@]}"; do
+    # shellcheck disable=SC2254
+    case "$f" in $pattern) used=1 ;; esac
+  done
+  if [ $used -eq 0 ]; then
+    echo "FAIL: allow-list entry $pattern matches no file that includes nlohmann/json: take it off the list" >&2
+    status=1
+  fi
+done
+[ $status -eq 0 ] && echo "json edge: ${#includers[@]} files include nlohmann/json, all at an edge or allow-listed (${#elsewhere[@]} + ${#allowed[@]} patterns)"
+exit $status

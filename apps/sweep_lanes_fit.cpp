@@ -2,7 +2,8 @@
 
 #include <algorithm>
 
-#include "board/profile_reader.h"
+#include "board/device_profile.h"
+#include "host_sw/studies/profile_setting.h"
 
 namespace rc {
 

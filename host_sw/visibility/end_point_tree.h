@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "host_sw/visibility/end_point_catalogue.h"
@@ -32,6 +33,16 @@ class EndPointTree {
   template <class Point>
   void query(const pipeline::HitRegion& region, int face, Point&& point) const;
 
+  // query() for up to kWidth regions at once (region k asking about faces[k], for every k set in
+  // `members`), walking the tree once: a node is loaded once for every region still interested
+  // in it, and the regions' box tests are independent, so they overlap in the CPU instead of
+  // waiting on one another. Calls point(k, id) for exactly the points query(*regions[k],
+  // faces[k], ...) would visit (in another order); point() returning false stops region k only.
+  template <class Point>
+  void query_packet(const pipeline::HitRegion* const* regions, const int* faces, unsigned members,
+                    Point&& point) const;
+
+
  private:
   // kWidth children tested at once (HitRegion::may_hit_boxes); a child is an inner node or a
   // single point, whose box is the point itself rounded outwards to float.
@@ -44,6 +55,7 @@ class EndPointTree {
     // `face` is the face all of those segments end on, kMixedFaces if several, kNoFace if none.
     unsigned active;
     int face;
+    std::uint64_t active_bytes;  // `active` spread out: byte j all ones if bit j is set
   };
   static constexpr std::uint32_t kPoint = 0x80000000u;
   // Below this many levels nodes split by the surface area heuristic, deeper ones at the middle
@@ -86,6 +98,61 @@ template <class Point>
         if (!point(c & ~kPoint)) return;
       } else {
         stack[top++] = c;
+      }
+    }
+  }
+}
+
+// Always inlined, as query() is. The stack holds (node, regions) pairs: a node pops one and
+// pushes at most kWidth, as in query(), so the same depth bound holds.
+template <class Point>
+[[gnu::always_inline]] inline void EndPointTree::query_packet(const pipeline::HitRegion* const* regions,
+                                                              const int* faces, unsigned members,
+                                                              Point&& point) const {
+  static_assert(kWidth == 8, "a packet is one byte of regions per child");
+  for (unsigned m = members; m; m &= m - 1) {
+    if (regions[__builtin_ctz(m)]->empty()) members &= ~(1u << __builtin_ctz(m));
+  }
+  if (nodes_.empty() || members == 0) return;
+  struct Entry {
+    std::uint32_t node, regions;
+  };
+  Entry stack[kStackSize];
+  int top = 0;
+  stack[top++] = {0, members};
+  unsigned live = members;  // regions whose point() has not yet returned false
+  while (top > 0) {
+    const Entry entry = stack[--top];
+    const Node& node = nodes_[entry.node];
+    unsigned asking = entry.regions & live;
+    if (node.active == 0 || asking == 0) continue;
+    // Lane j: bit k set if region k may hit child j (query()'s test, including its own-face
+    // skip), gathered lane by lane; then one byte per child.
+    using Lanes = pipeline::HitRegion::IntLanes;
+    Lanes which_regions{};
+    for (unsigned m = asking; m; m &= m - 1) {
+      const int k = __builtin_ctz(m);
+      if (node.face == faces[k]) continue;
+      regions[k]->add_box_lanes(node.bound, 1 << k, which_regions);
+    }
+    using ByteLanes = std::uint8_t __attribute__((vector_size(kWidth)));
+    const ByteLanes bytes = __builtin_convertvector(which_regions, ByteLanes);
+    std::uint64_t columns;
+    std::memcpy(&columns, &bytes, sizeof columns);
+    columns &= node.active_bytes;
+    while (columns) {
+      const int bit = __builtin_ctzll(columns);
+      const int j = bit >> 3;
+      const auto which = static_cast<unsigned>(columns >> (8 * j) & 0xffu);
+      columns &= ~(std::uint64_t{0xffu} << (8 * j));
+      const std::uint32_t c = node.child[j];
+      if (c & kPoint) {
+        for (unsigned m = which & live; m; m &= m - 1) {
+          const int k = __builtin_ctz(m);
+          if (!point(k, c & ~kPoint)) live &= ~(1u << k);
+        }
+      } else {
+        stack[top++] = {c, which};
       }
     }
   }

@@ -68,12 +68,19 @@ class FastFixedVisibility : public VisibilityBackend {
   int threads() const { return pool_.size(); }
 
  private:
+  // Faces a worker claims at a time: enough to amortise the atomic, few enough to balance a step
+  // whose faces cost very different amounts; they walk the end-point tree together
+  // (EndPointTree::query_packet, one region per face).
+  static constexpr std::size_t kFacesPerClaim = 8;
+
   // One cache line each, so that workers never write to a line another one uses.
   struct alignas(64) WorkerOutput {
     std::vector<std::uint8_t> blocked;  // indexed by batch segment
     std::uint64_t tests = 0, dense_faces = 0, dense_tests = 0;
-    // Scratch for one face: its candidate end points, and the own-face mask of a dense face.
-    std::vector<std::uint32_t> candidates;
+    // Scratch for the faces of one claim: their candidate end points, and whether each has too
+    // many to test one by one (a dense face).
+    std::vector<std::uint32_t> candidates[kFacesPerClaim];
+    bool dense[kFacesPerClaim] = {};
     std::vector<std::uint8_t> saved;  // a dense face's own segments' flags
     // The candidates' end points (structure of arrays) and the kernel's answers.
     std::vector<std::int64_t> candidate_x, candidate_y, candidate_z;
@@ -81,7 +88,9 @@ class FastFixedVisibility : public VisibilityBackend {
   };
 
   void run_worker(int worker);
-  std::uint64_t test_face(int face, WorkerOutput& out) const;
+  std::uint64_t test_faces(std::size_t first, std::size_t last, WorkerOutput& out) const;
+  std::uint64_t test_candidates(int face, int sheet, const std::vector<std::uint32_t>& candidates,
+                                WorkerOutput& out) const;
   std::uint64_t test_every_segment(int face, WorkerOutput& out) const;
   void block_segments_ending_at(std::uint32_t point, int sheet, WorkerOutput& out) const;
   void finish_batch();

@@ -98,11 +98,16 @@ class HitRegion {
   [[gnu::always_inline]] unsigned may_hit_boxes(const float bound[2][3][kBoxes]) const {
     IntLanes inside;
     box_lanes(bound, inside);
-    // Lane j (all ones or all zeros) to bit j: narrow to bytes, keep bit j of byte j, and sum
-    // the bytes into the top byte with one multiplication.
+    return lane_mask(inside);
+  }
+
+  // Bit j set where lane j is all ones; every lane must be all ones or zero (a comparison's result).
+  [[gnu::always_inline]] static unsigned lane_mask(IntLanes lanes) {
+    // Narrow to bytes, keep bit j of byte j, and sum the bytes into the top byte with one
+    // multiplication.
     static_assert(kBoxes == 8, "the lane mask packs one byte per box into 64 bits");
     using ByteLanes = std::int8_t __attribute__((vector_size(kBoxes)));
-    const ByteLanes bytes = __builtin_convertvector(inside, ByteLanes);
+    const ByteLanes bytes = __builtin_convertvector(lanes, ByteLanes);
     std::uint64_t packed;
     std::memcpy(&packed, &bytes, sizeof packed);
     return static_cast<unsigned>(((packed & 0x8040201008040201ull) * 0x0101010101010101ull) >> 56);

@@ -80,8 +80,6 @@ void EndPointTree::mark_batch(const EndPointCatalogue& points, const int* end_fa
     }
     node.active = active;
     node.face = face;
-    node.active_bytes = 0;
-    for (int j = 0; j < kWidth; ++j) node.active_bytes |= std::uint64_t{(active >> j & 1) * 0xffu} << (8 * j);
   }
 }
 

@@ -33,7 +33,10 @@ class EndPointTree {
   template <class Point>
   void query(const pipeline::HitRegion& region, int face, Point&& point) const;
 
-  // query() for up to kWidth regions at once (region k asking about faces[k], for every k set in
+  // Regions one query_packet() takes at most (bit k of a lane names region k).
+  static constexpr int kPacket = 16;
+
+  // query() for up to kPacket regions at once (region k asking about faces[k], for every k set in
   // `members`), walking the tree once: a node is loaded once for every region still interested
   // in it, and the regions' box tests are independent, so they overlap in the CPU instead of
   // waiting on one another. Calls point(k, id) for exactly the points query(*regions[k],
@@ -55,7 +58,6 @@ class EndPointTree {
     // `face` is the face all of those segments end on, kMixedFaces if several, kNoFace if none.
     unsigned active;
     int face;
-    std::uint64_t active_bytes;  // `active` spread out: byte j all ones if bit j is set
   };
   static constexpr std::uint32_t kPoint = 0x80000000u;
   // Below this many levels nodes split by the surface area heuristic, deeper ones at the middle
@@ -109,7 +111,7 @@ template <class Point>
 [[gnu::always_inline]] inline void EndPointTree::query_packet(const pipeline::HitRegion* const* regions,
                                                               const int* faces, unsigned members,
                                                               Point&& point) const {
-  static_assert(kWidth == 8, "a packet is one byte of regions per child");
+  static_assert(kPacket <= 31, "a lane holds one bit per region");
   for (unsigned m = members; m; m &= m - 1) {
     if (regions[__builtin_ctz(m)]->empty()) members &= ~(1u << __builtin_ctz(m));
   }
@@ -127,7 +129,7 @@ template <class Point>
     unsigned asking = entry.regions & live;
     if (node.active == 0 || asking == 0) continue;
     // Lane j: bit k set if region k may hit child j (query()'s test, including its own-face
-    // skip), gathered lane by lane; then one byte per child.
+    // skip), gathered lane by lane.
     using Lanes = pipeline::HitRegion::IntLanes;
     Lanes which_regions{};
     for (unsigned m = asking; m; m &= m - 1) {
@@ -135,16 +137,13 @@ template <class Point>
       if (node.face == faces[k]) continue;
       regions[k]->add_box_lanes(node.bound, 1 << k, which_regions);
     }
-    using ByteLanes = std::uint8_t __attribute__((vector_size(kWidth)));
-    const ByteLanes bytes = __builtin_convertvector(which_regions, ByteLanes);
-    std::uint64_t columns;
-    std::memcpy(&columns, &bytes, sizeof columns);
-    columns &= node.active_bytes;
-    while (columns) {
-      const int bit = __builtin_ctzll(columns);
-      const int j = bit >> 3;
-      const auto which = static_cast<unsigned>(columns >> (8 * j) & 0xffu);
-      columns &= ~(std::uint64_t{0xffu} << (8 * j));
+    std::int32_t lane[kWidth];
+    std::memcpy(lane, &which_regions, sizeof lane);
+    unsigned children = pipeline::HitRegion::lane_mask(which_regions != 0) & node.active;
+    while (children) {
+      const int j = __builtin_ctz(children);
+      children &= children - 1;
+      const auto which = static_cast<unsigned>(lane[j]);
       const std::uint32_t c = node.child[j];
       if (c & kPoint) {
         for (unsigned m = which & live; m; m &= m - 1) {

@@ -71,7 +71,7 @@ class FastFixedVisibility : public VisibilityBackend {
   // Faces a worker claims at a time: enough to amortise the atomic, few enough to balance a step
   // whose faces cost very different amounts; they walk the end-point tree together
   // (EndPointTree::query_packet, one region per face).
-  static constexpr std::size_t kFacesPerClaim = 8;
+  static constexpr std::size_t kFacesPerClaim = EndPointTree::kPacket;
 
   // One cache line each, so that workers never write to a line another one uses.
   struct alignas(64) WorkerOutput {

@@ -92,7 +92,7 @@ TEST(EndPointTree, QueryVisitsEveryPointTheRegionMayHold) {
   }
 }
 
-// Packets of up to eight random faces (some asking about the source's own face, some regions
+// Packets of up to kPacket random faces (some asking about the source's own face, some regions
 // stopped after a few points, some slots left out) visit, region by region, the very points
 // query() visits, each once; a stopped region gets exactly its first points.
 TEST(EndPointTree, PacketQueryVisitsWhatEachRegionAloneVisits) {
@@ -106,13 +106,14 @@ TEST(EndPointTree, PacketQueryVisitsWhatEachRegionAloneVisits) {
       if (cat.assign(batch, bits)) tree.build(cat);
       tree.mark_batch(cat, batch.end_faces.data());
       const pipeline::FixedVec3 start = pipeline::quantize_point(batch.start, bits);
-      for (int first = 0; first < static_cast<int>(w.faces.size()); first += 8) {
-        std::optional<pipeline::HitRegion> regions[8];
-        const pipeline::HitRegion* region_of[8] = {};
-        int faces[8] = {};
-        std::size_t limit[8] = {};
+      constexpr int kPacket = EndPointTree::kPacket;
+      for (int first = 0; first < static_cast<int>(w.faces.size()); first += kPacket) {
+        std::optional<pipeline::HitRegion> regions[kPacket];
+        const pipeline::HitRegion* region_of[kPacket] = {};
+        int faces[kPacket] = {};
+        std::size_t limit[kPacket] = {};
         unsigned members = 0;
-        for (int k = 0; k < 8 && first + k < static_cast<int>(w.faces.size()); ++k) {
+        for (int k = 0; k < kPacket && first + k < static_cast<int>(w.faces.size()); ++k) {
           if (rng.uniform() < 0.15) continue;  // a slot the packet leaves out
           faces[k] = first + k;
           regions[k].emplace(pipeline::make_face_record(w.faces[first + k], bits), start, bits);
@@ -126,7 +127,7 @@ TEST(EndPointTree, PacketQueryVisitsWhatEachRegionAloneVisits) {
           visited[k].push_back(id);
           return visited[k].size() < limit[k];
         });
-        for (int k = 0; k < 8; ++k) {
+        for (int k = 0; k < kPacket; ++k) {
           if (!(members >> k & 1)) continue;
           std::set<std::uint32_t> alone;
           tree.query(*region_of[k], faces[k], [&](std::uint32_t id) { return alone.insert(id), true; });

@@ -102,7 +102,7 @@ class HitRegion {
   }
 
   // Bit j set where lane j is all ones; every lane must be all ones or zero (a comparison's result).
-  [[gnu::always_inline]] static unsigned lane_mask(IntLanes lanes) {
+  [[gnu::always_inline]] static unsigned lane_mask(const IntLanes& lanes) {
     // Narrow to bytes, keep bit j of byte j, and sum the bytes into the top byte with one
     // multiplication.
     static_assert(kBoxes == 8, "the lane mask packs one byte per box into 64 bits");

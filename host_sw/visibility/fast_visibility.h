@@ -9,8 +9,9 @@
 //     point the pipeline could report as a hit (the face's shadow frustum widened by the proven
 //     truncation error); a bounding-volume tree (EndPointTree) over every distinct end point seen
 //     so far (EndPointCatalogue: built during a run's first steps, not per step) is queried with
-//     it, and only the end points inside run the pipeline's own kernel, once per end point, for
-//     every segment of the batch ending there;
+//     it (the faces a worker claims together, in one walk: EndPointTree::query_packet), and only
+//     the end points inside run the pipeline's own kernel, once per end point, for every segment
+//     of the batch ending there;
 //   * a face whose region holds more than an eighth of the batch (narrow widths, where the
 //     truncation error is a large part of the scene, or a face close to the start) runs the
 //     vectorised streaming kernel over every segment instead, exactly as the brute force does.

@@ -12,7 +12,7 @@
 //     it (the faces a worker claims together, in one walk: EndPointTree::query_packet), and only
 //     the end points inside run the pipeline's own kernel, once per end point, for every segment
 //     of the batch ending there;
-//   * a face whose region holds more than an eighth of the batch (narrow widths, where the
+//   * a face whose region holds more than 1/128 of the batch (narrow widths, where the
 //     truncation error is a large part of the scene, or a face close to the start) runs the
 //     vectorised streaming kernel over every segment instead, exactly as the brute force does.
 // Nothing a region excludes can be a hit, so the blocked flags are those of the brute force

@@ -82,9 +82,45 @@ class HitRegion {
   // within [0, 2^bits]. The float thresholds carry a wider margin than the double ones (2^-20
   // instead of 2^-44 of the same scale), which covers single-precision rounding.
   static constexpr int kBoxes = 8;  // one AVX register of floats; the lane mask packs 8 bytes
+  // One 32-bit lane per box (GCC/Clang vector extensions: one AVX register, two SSE registers,
+  // or NEON, whichever the caller is compiled for).
+  using IntLanes = std::int32_t __attribute__((vector_size(4 * kBoxes)));
+
+  // The same test with the answer as lanes, for callers that combine several regions' answers
+  // lane by lane: ORs `flag` into lane j of `lanes` where may_hit_boxes would set bit j.
+  [[gnu::always_inline]] void add_box_lanes(const float bound[2][3][kBoxes], std::int32_t flag,
+                                            IntLanes& lanes) const {
+    IntLanes inside;
+    box_lanes(bound, inside);
+    lanes |= inside & flag;
+  }
+
   [[gnu::always_inline]] unsigned may_hit_boxes(const float bound[2][3][kBoxes]) const {
+    IntLanes inside;
+    box_lanes(bound, inside);
+    return lane_mask(inside);
+  }
+
+  // Bit j set where lane j is all ones; every lane must be all ones or zero (a comparison's result).
+  [[gnu::always_inline]] static unsigned lane_mask(const IntLanes& lanes) {
+    // Narrow to bytes, keep bit j of byte j, and sum the bytes into the top byte with one
+    // multiplication.
+    static_assert(kBoxes == 8, "the lane mask packs one byte per box into 64 bits");
+    using ByteLanes = std::int8_t __attribute__((vector_size(kBoxes)));
+    const ByteLanes bytes = __builtin_convertvector(lanes, ByteLanes);
+    std::uint64_t packed;
+    std::memcpy(&packed, &bytes, sizeof packed);
+    return static_cast<unsigned>(((packed & 0x8040201008040201ull) * 0x0101010101010101ull) >> 56);
+  }
+
+ private:
+  using FloatLanes = float __attribute__((vector_size(4 * kBoxes)));  // one float lane per box
+
+  // Lane j of `inside` all ones, unless no hit can end in box j (then zero). An output
+  // parameter, not a return value: a vector return would change the ABI between the clones.
+  [[gnu::always_inline]] void box_lanes(const float bound[2][3][kBoxes], IntLanes& inside) const {
     const float* base = &bound[0][0][0];
-    IntLanes inside = IntLanes{} - 1;
+    inside = IntLanes{} - 1;
     for (int k = 0; k < 4; ++k) {
       FloatLanes x, y, z;  // the maximising corner's coordinates of every box
       std::memcpy(&x, base + offset_[k][0], sizeof x);
@@ -92,21 +128,7 @@ class HitRegion {
       std::memcpy(&z, base + offset_[k][2], sizeof z);
       inside &= a_float_[k][0] * x + a_float_[k][1] * y + a_float_[k][2] * z >= threshold_float_[k];
     }
-    // Lane j (all ones or all zeros) to bit j: narrow to bytes, keep bit j of byte j, and sum
-    // the bytes into the top byte with one multiplication.
-    static_assert(kBoxes == 8, "the lane mask packs one byte per box into 64 bits");
-    using ByteLanes = std::int8_t __attribute__((vector_size(kBoxes)));
-    const ByteLanes bytes = __builtin_convertvector(inside, ByteLanes);
-    std::uint64_t packed;
-    std::memcpy(&packed, &bytes, sizeof packed);
-    return static_cast<unsigned>(((packed & 0x8040201008040201ull) * 0x0101010101010101ull) >> 56);
   }
-
- private:
-  // One float lane per box (GCC/Clang vector extensions: one AVX register, two SSE registers, or
-  // NEON, whichever the function is compiled for).
-  using FloatLanes = float __attribute__((vector_size(4 * kBoxes)));
-  using IntLanes = std::int32_t __attribute__((vector_size(4 * kBoxes)));
 
   bool empty_ = false;
   // Plane k: ax_[k] * x + ay_[k] * y + az_[k] * z >= threshold_[k] for every possible hit.

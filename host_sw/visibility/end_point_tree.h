@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "host_sw/visibility/end_point_catalogue.h"
@@ -31,6 +32,19 @@ class EndPointTree {
   // false. Visits nothing if the region is empty.
   template <class Point>
   void query(const pipeline::HitRegion& region, int face, Point&& point) const;
+
+  // Regions one query_packet() takes at most (bit k of a lane names region k).
+  static constexpr int kPacket = 16;
+
+  // query() for up to kPacket regions at once (region k asking about faces[k], for every k set in
+  // `members`), walking the tree once: a node is loaded once for every region still interested
+  // in it, and the regions' box tests are independent, so they overlap in the CPU instead of
+  // waiting on one another. Calls point(k, id) for exactly the points query(*regions[k],
+  // faces[k], ...) would visit (in another order); point() returning false stops region k only.
+  template <class Point>
+  void query_packet(const pipeline::HitRegion* const* regions, const int* faces, unsigned members,
+                    Point&& point) const;
+
 
  private:
   // kWidth children tested at once (HitRegion::may_hit_boxes); a child is an inner node or a
@@ -86,6 +100,58 @@ template <class Point>
         if (!point(c & ~kPoint)) return;
       } else {
         stack[top++] = c;
+      }
+    }
+  }
+}
+
+// Always inlined, as query() is. The stack holds (node, regions) pairs: a node pops one and
+// pushes at most kWidth, as in query(), so the same depth bound holds.
+template <class Point>
+[[gnu::always_inline]] inline void EndPointTree::query_packet(const pipeline::HitRegion* const* regions,
+                                                              const int* faces, unsigned members,
+                                                              Point&& point) const {
+  static_assert(kPacket <= 31, "a lane holds one bit per region");
+  for (unsigned m = members; m; m &= m - 1) {
+    if (regions[__builtin_ctz(m)]->empty()) members &= ~(1u << __builtin_ctz(m));
+  }
+  if (nodes_.empty() || members == 0) return;
+  struct Entry {
+    std::uint32_t node, regions;
+  };
+  Entry stack[kStackSize];
+  int top = 0;
+  stack[top++] = {0, members};
+  unsigned live = members;  // regions whose point() has not yet returned false
+  while (top > 0) {
+    const Entry entry = stack[--top];
+    const Node& node = nodes_[entry.node];
+    unsigned asking = entry.regions & live;
+    if (node.active == 0 || asking == 0) continue;
+    // Lane j: bit k set if region k may hit child j (query()'s test, including its own-face
+    // skip), gathered lane by lane.
+    using Lanes = pipeline::HitRegion::IntLanes;
+    Lanes which_regions{};
+    for (unsigned m = asking; m; m &= m - 1) {
+      const int k = __builtin_ctz(m);
+      if (node.face == faces[k]) continue;
+      regions[k]->add_box_lanes(node.bound, 1 << k, which_regions);
+    }
+    std::int32_t lane[kWidth];
+    std::memcpy(lane, &which_regions, sizeof lane);
+    unsigned children = pipeline::HitRegion::lane_mask(which_regions != 0) & node.active;
+    while (children) {
+      const int j = __builtin_ctz(children);
+      children &= children - 1;
+      const auto which = static_cast<unsigned>(lane[j]);
+      const std::uint32_t c = node.child[j];
+      if (c & kPoint) {
+        for (unsigned m = which & live; m; m &= m - 1) {
+          const int k = __builtin_ctz(m);
+          if (!point(k, c & ~kPoint)) live &= ~(1u << k);
+        }
+      } else {
+        stack[top++] = {c, which};
       }
     }
   }

@@ -1,6 +1,7 @@
 #include "host_sw/visibility/fast_visibility.h"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -11,10 +12,6 @@
 namespace rc {
 
 namespace {
-
-// Faces a worker claims at a time: enough to amortise the atomic, few enough to balance a step
-// whose faces cost very different amounts.
-constexpr std::size_t kFacesPerClaim = 8;
 
 // A face whose hit region holds more than 1/kDenseShare of the batch's segments runs the
 // streaming kernel (16 or 8 lanes) over all of them: one pass of the kernel over a batch costs
@@ -29,7 +26,7 @@ constexpr std::size_t kVectorCandidates = 16;
 
 }  // namespace
 
-// test_face is compiled for AVX-512 and AVX2 as well as the baseline, and the best the CPU runs
+// test_faces is compiled for AVX-512 and AVX2 as well as the baseline, and the best the CPU runs
 // is picked when the program loads: the end-point tree's eight-box test (always inlined into it)
 // then runs on one vector register. Integer and rounding-safe code only, so every variant gives
 // the same answers (docs/fast-visibility.md, "Floating point").
@@ -146,36 +143,54 @@ void FastFixedVisibility::run_worker(int worker) {
   for (;;) {
     const std::size_t first = next_face_.value.fetch_add(kFacesPerClaim, std::memory_order_relaxed);
     if (first >= faces_.size()) return;
-    const std::size_t last = std::min(first + kFacesPerClaim, faces_.size());
-    std::uint64_t tests = 0;
-    for (std::size_t f = first; f < last; ++f) tests += test_face(static_cast<int>(f), out);
-    out.tests += tests;
+    out.tests += test_faces(first, std::min(first + kFacesPerClaim, faces_.size()), out);
   }
 }
 
-// One face against the end points its hit region may contain, in the pipeline's arithmetic.
-// Returns the number of tests run.
-RC_FAST_TARGETS std::uint64_t FastFixedVisibility::test_face(int face, WorkerOutput& out) const {
-  const int sheet = sheets().first(face);
-  if (sheet == source_sheet_) return 0;  // every segment's own surface
-  const pipeline::FaceRecord& record = faces_[static_cast<std::size_t>(face)];
-  const pipeline::HitRegion region(record, face_terms_[static_cast<std::size_t>(face)], start_, bits_);
-  // Candidates: end points inside the region with a segment that does not end on this face's sheet.
-  std::vector<std::uint32_t>& candidates = out.candidates;
-  candidates.clear();
+// Faces [first, last) (at most kFacesPerClaim) against the end points their hit regions may
+// contain, in the pipeline's arithmetic. Returns the number of tests run.
+RC_FAST_TARGETS std::uint64_t FastFixedVisibility::test_faces(std::size_t first, std::size_t last,
+                                                              WorkerOutput& out) const {
+  std::optional<pipeline::HitRegion> regions[kFacesPerClaim];
+  const pipeline::HitRegion* region_of[kFacesPerClaim] = {};
+  int sheet_of[kFacesPerClaim] = {};
+  unsigned members = 0;
+  for (std::size_t f = first; f < last; ++f) {
+    const std::size_t k = f - first;
+    out.candidates[k].clear();
+    out.dense[k] = false;
+    sheet_of[k] = sheets().first(static_cast<int>(f));
+    if (sheet_of[k] == source_sheet_) continue;  // every segment's own surface
+    regions[k].emplace(faces_[f], face_terms_[f], start_, bits_);
+    region_of[k] = &*regions[k];
+    members |= 1u << k;
+  }
+  // Candidates: end points inside a face's region with a segment that does not end on its sheet.
   const std::size_t dense = segments_ / kDenseShare;
-  bool too_many = false;
-  tree_.query(region, sheet, [&](std::uint32_t point) {
+  tree_.query_packet(region_of, sheet_of, members, [&](int k, std::uint32_t point) {
+    const int sheet = sheet_of[k];
     std::uint32_t s = points_.first_segment(point);
     while (s != EndPointCatalogue::kNone && end_sheets_[s] == sheet) s = points_.next_segment(s);
     if (s == EndPointCatalogue::kNone) return true;
     const double* p = points_.coords(point);
-    if (!region.may_hit(p[0], p[1], p[2])) return true;
-    candidates.push_back(point);
-    too_many = candidates.size() > dense;
-    return !too_many;
+    if (!region_of[k]->may_hit(p[0], p[1], p[2])) return true;
+    out.candidates[k].push_back(point);
+    out.dense[k] = out.candidates[k].size() > dense;
+    return !out.dense[k];
   });
-  if (too_many) return test_every_segment(face, out);
+  std::uint64_t tests = 0;
+  for (unsigned m = members; m; m &= m - 1) {
+    const int k = __builtin_ctz(m);
+    const int face = static_cast<int>(first) + k;
+    tests += out.dense[k] ? test_every_segment(face, out) : test_candidates(face, sheet_of[k], out.candidates[k], out);
+  }
+  return tests;
+}
+
+// One face against its candidate end points (few enough: not a dense face).
+std::uint64_t FastFixedVisibility::test_candidates(int face, int sheet, const std::vector<std::uint32_t>& candidates,
+                                                   WorkerOutput& out) const {
+  const pipeline::FaceRecord& record = faces_[static_cast<std::size_t>(face)];
   const std::size_t n = candidates.size();
   if (n < kVectorCandidates) {
     for (const std::uint32_t point : candidates) {

@@ -9,9 +9,10 @@
 //     point the pipeline could report as a hit (the face's shadow frustum widened by the proven
 //     truncation error); a bounding-volume tree (EndPointTree) over every distinct end point seen
 //     so far (EndPointCatalogue: built during a run's first steps, not per step) is queried with
-//     it, and only the end points inside run the pipeline's own kernel, once per end point, for
-//     every segment of the batch ending there;
-//   * a face whose region holds more than an eighth of the batch (narrow widths, where the
+//     it (the faces a worker claims together, in one walk: EndPointTree::query_packet), and only
+//     the end points inside run the pipeline's own kernel, once per end point, for every segment
+//     of the batch ending there;
+//   * a face whose region holds more than 1/128 of the batch (narrow widths, where the
 //     truncation error is a large part of the scene, or a face close to the start) runs the
 //     vectorised streaming kernel over every segment instead, exactly as the brute force does.
 // Nothing a region excludes can be a hit, so the blocked flags are those of the brute force
@@ -68,12 +69,19 @@ class FastFixedVisibility : public VisibilityBackend {
   int threads() const { return pool_.size(); }
 
  private:
+  // Faces a worker claims at a time: enough to amortise the atomic, few enough to balance a step
+  // whose faces cost very different amounts; they walk the end-point tree together
+  // (EndPointTree::query_packet, one region per face).
+  static constexpr std::size_t kFacesPerClaim = EndPointTree::kPacket;
+
   // One cache line each, so that workers never write to a line another one uses.
   struct alignas(64) WorkerOutput {
     std::vector<std::uint8_t> blocked;  // indexed by batch segment
     std::uint64_t tests = 0, dense_faces = 0, dense_tests = 0;
-    // Scratch for one face: its candidate end points, and the own-face mask of a dense face.
-    std::vector<std::uint32_t> candidates;
+    // Scratch for the faces of one claim: their candidate end points, and whether each has too
+    // many to test one by one (a dense face).
+    std::vector<std::uint32_t> candidates[kFacesPerClaim];
+    bool dense[kFacesPerClaim] = {};
     std::vector<std::uint8_t> saved;  // a dense face's own segments' flags
     // The candidates' end points (structure of arrays) and the kernel's answers.
     std::vector<std::int64_t> candidate_x, candidate_y, candidate_z;
@@ -81,7 +89,9 @@ class FastFixedVisibility : public VisibilityBackend {
   };
 
   void run_worker(int worker);
-  std::uint64_t test_face(int face, WorkerOutput& out) const;
+  std::uint64_t test_faces(std::size_t first, std::size_t last, WorkerOutput& out) const;
+  std::uint64_t test_candidates(int face, int sheet, const std::vector<std::uint32_t>& candidates,
+                                WorkerOutput& out) const;
   std::uint64_t test_every_segment(int face, WorkerOutput& out) const;
   void block_segments_ending_at(std::uint32_t point, int sheet, WorkerOutput& out) const;
   void finish_batch();

@@ -1,7 +1,10 @@
-// EndPointCatalogue keeps end points and their segments straight across batches, and
-// EndPointTree::query visits every end point a hit region may contain.
+// EndPointCatalogue keeps end points and their segments straight across batches,
+// EndPointTree::query visits every end point a hit region may contain, and query_packet visits
+// for each of its regions exactly what query visits for that region alone.
 #include <gtest/gtest.h>
 
+#include <map>
+#include <optional>
 #include <set>
 
 #include "tests/host_sw/visibility/fast_test_support.h"
@@ -87,6 +90,64 @@ TEST(EndPointTree, QueryVisitsEveryPointTheRegionMayHold) {
       EXPECT_GT(inside, 100u) << bits;
     }
   }
+}
+
+// Packets of up to kPacket random faces (some asking about the source's own face, some regions
+// stopped after a few points, some slots left out) visit, region by region, the very points
+// query() visits, each once; a stopped region gets exactly its first points.
+TEST(EndPointTree, PacketQueryVisitsWhatEachRegionAloneVisits) {
+  test::Rng rng(5);
+  std::size_t compared = 0, stopped = 0;
+  for (int bits : {7, 11, 15, 23, 31}) {
+    const test::Workload w = test::random_workload(60, 3, 2000, 0.4, 50 + bits);
+    EndPointCatalogue cat;
+    EndPointTree tree;
+    for (const SegmentBatch& batch : w.batches) {
+      if (cat.assign(batch, bits)) tree.build(cat);
+      tree.mark_batch(cat, batch.end_faces.data());
+      const pipeline::FixedVec3 start = pipeline::quantize_point(batch.start, bits);
+      constexpr int kPacket = EndPointTree::kPacket;
+      for (int first = 0; first < static_cast<int>(w.faces.size()); first += kPacket) {
+        std::optional<pipeline::HitRegion> regions[kPacket];
+        const pipeline::HitRegion* region_of[kPacket] = {};
+        int faces[kPacket] = {};
+        std::size_t limit[kPacket] = {};
+        unsigned members = 0;
+        for (int k = 0; k < kPacket && first + k < static_cast<int>(w.faces.size()); ++k) {
+          if (rng.uniform() < 0.15) continue;  // a slot the packet leaves out
+          faces[k] = first + k;
+          regions[k].emplace(pipeline::make_face_record(w.faces[first + k], bits), start, bits);
+          region_of[k] = &*regions[k];
+          limit[k] = rng.uniform() < 0.3 ? 1 + static_cast<std::size_t>(rng.uniform() * 4) : SIZE_MAX;
+          members |= 1u << k;
+        }
+        std::map<int, std::vector<std::uint32_t>> visited;
+        tree.query_packet(region_of, faces, members, [&](int k, std::uint32_t id) {
+          EXPECT_TRUE(members >> k & 1) << "a region outside the packet";
+          visited[k].push_back(id);
+          return visited[k].size() < limit[k];
+        });
+        for (int k = 0; k < kPacket; ++k) {
+          if (!(members >> k & 1)) continue;
+          std::set<std::uint32_t> alone;
+          tree.query(*region_of[k], faces[k], [&](std::uint32_t id) { return alone.insert(id), true; });
+          const std::vector<std::uint32_t>& got = visited[k];
+          const std::set<std::uint32_t> got_set(got.begin(), got.end());
+          EXPECT_EQ(got_set.size(), got.size()) << "a point twice, face " << faces[k];
+          if (limit[k] < alone.size()) {
+            ++stopped;
+            EXPECT_EQ(got.size(), limit[k]) << "face " << faces[k];
+            for (std::uint32_t id : got) EXPECT_EQ(alone.count(id), 1u) << "face " << faces[k];
+          } else {
+            EXPECT_EQ(got_set, alone) << "face " << faces[k] << ", " << bits << " bits";
+            compared += alone.size();
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 1000u);
+  EXPECT_GT(stopped, 20u);
 }
 
 }  // namespace

@@ -28,7 +28,20 @@ struct DesignOptions {
   std::string form_factor = "point";
   bool culled = false, exhaustive = false, quiet = false;
   std::string out_dir = "out/design";
+  std::string command = "rc2000sim design";  // as given, for design.md
 };
+
+// The command line as given (every option that was), for the page that records it.
+std::string given_command(const CLI::App& cmd) {
+  std::string text = "rc2000sim design";
+  for (const CLI::Option* opt : cmd.get_options()) {
+    if (opt->count() == 0 || opt->get_name() == "--help" || opt->get_name() == "--quiet") continue;
+    text += " " + opt->get_name();
+    if (opt->get_expected_min() > 0)
+      for (const std::string& value : opt->results()) text += " " + value;
+  }
+  return text;
+}
 
 std::vector<double> parse_clocks(const std::string& text) {
   std::vector<double> clocks;
@@ -81,7 +94,7 @@ int run_design(const DesignOptions& o) {
   progress.finish();
   const double paper_rate = measured_peak_software_rate(load_paper_table(default_paper_table_path()));
   const Roofline roofline = design_roofline(r, paper_rate);
-  const DesignDocument doc{r, o.space, o.constraints, roofline, dir};
+  const DesignDocument doc{r, o.space, o.constraints, roofline, dir, o.command};
   PlotProcess plotter("design.py");
   outputs.add(dir + "/design.json", pretty_json(design_json(doc)));
   outputs.add(dir + "/design.csv", design_csv(r));
@@ -133,7 +146,8 @@ void add_design_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--exhaustive", o->exhaustive, "Simulate every feasible design (no pruning of spare banks)");
   cmd->add_option("--out", o->out_dir, "Output folder")->check(output_path())->capture_default_str();
   cmd->add_flag("--quiet", o->quiet, "No progress output");
-  cmd->callback([o, &exit_code] {
+  cmd->callback([o, cmd, &exit_code] {
+    o->command = given_command(*cmd);
     resolve(*o);
     exit_code = run_guarded("design", o->out_dir + "/", [&] { return run_design(*o); });
   });

@@ -20,6 +20,7 @@ struct DesignDocument {
   const DesignConstraints& constraints;
   const Roofline& roofline;
   std::string out_dir;
+  std::string command;  // the command line that made it
 };
 
 // The `rc2000sim run --impl board` command that simulates `point` on the search's workload and gives its

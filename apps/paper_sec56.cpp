@@ -139,12 +139,12 @@ ordered_json sec56_devices_json(const std::vector<Sec56DeviceRow>& rows) {
 void print_sec56_devices(const std::vector<Sec56DeviceRow>& rows) {
   std::printf("\nSec 5.6 per device: the paper's rule (its clock stated) and the model's best design from its own search\n"
               "(simulated on the 280-face, 4480-patch workload; intersections/s while the FPGA streams)\n");
-  std::printf("  %-14s %-5s %5s %7s %11s %7s %7s %9s %9s %8s  %s\n", "device", "rule", "lanes", "MHz", "int/s", "B/int",
-              "GB/s", "speedup", "run s", "nJ/int", "design, clock and board; bound");
+  std::printf("  %-14s %-5s %5s %7s %11s %7s %7s %9s %9s %10s  %s\n", "device", "rule", "lanes", "MHz", "int/s", "B/int",
+              "GB/s", "speedup", "run s", "sys nJ/int", "design, clock and board; bound");
   for (const Sec56DeviceRow& row : rows) {
     const board::PaperEstimate& e = row.estimate;
     const bool model = e.rule == board::EstimateRule::Model;
-    std::printf("  %-14s %-5s %5d %7.1f %11.4g %7.3f %7.2f %8.2fx %9s %8s  %s\n", e.device.c_str(), board::to_string(e.rule),
+    std::printf("  %-14s %-5s %5d %7.1f %11.4g %7.3f %7.2f %8.2fx %9s %10s  %s\n", e.device.c_str(), board::to_string(e.rule),
                 e.lanes, e.clock_mhz, e.intersections_per_s, e.bytes_per_intersection, e.gb_per_s, e.speedup_vs_software,
                 model ? format("%.2f", row.run_seconds).c_str() : "", model ? format("%.1f", row.nanojoules_per_test).c_str() : "",
                 model ? (e.note + "; clock: " + e.clock_assumption).c_str() : ("clock: " + e.clock_assumption).c_str());
@@ -152,7 +152,7 @@ void print_sec56_devices(const std::vector<Sec56DeviceRow>& rows) {
 }
 
 void sec56_devices_markdown(std::ostream& md, const std::vector<Sec56DeviceRow>& rows) {
-  md << "| device | rule | lanes | MHz | int/s | bytes/int | GB/s | speedup | workload s | nJ/int | clock and board | design; bound |\n"
+  md << "| device | rule | lanes | MHz | int/s | bytes/int | GB/s | speedup | workload s | nJ/int, whole run (card + host) | clock and board | design; bound |\n"
         "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---|\n";
   for (const Sec56DeviceRow& row : rows) {
     const board::PaperEstimate& e = row.estimate;

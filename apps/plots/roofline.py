@@ -44,7 +44,7 @@ def draw(rows, png_path):
         ax.set_ylabel("attainable tests per second")
         ax.set_title(device)
         ax.grid(True, which="both", lw=0.3)
-        ax.legend(fontsize=6, loc="lower left")
+        ax.legend(fontsize=6, loc="upper right", framealpha=0.6)
     fig.tight_layout()
     entry.save(fig, png_path, dpi=110)
 

@@ -19,6 +19,9 @@ namespace {
 
 using Progress = std::function<void(const std::string&)>;
 
+// Banks of the whole design: every card has the configuration's banks.
+unsigned total_banks(const DesignPoint& p) { return p.design.config.banks * p.design.config.cards; }
+
 double energy_or_worst(const SweepRow& r) {
   return std::isfinite(r.energy_joules) ? r.energy_joules : std::numeric_limits<double>::infinity();
 }
@@ -146,7 +149,7 @@ std::vector<DesignCandidate> enumerate_designs(const DesignSpace& space, const D
 std::optional<std::size_t> fastest(const std::vector<DesignPoint>& points) {
   std::optional<std::size_t> best;
   auto key = [&](const DesignPoint& p) {
-    return std::make_tuple(p.row.simulated_seconds, p.design.config.banks, energy_or_worst(p.row), p.design.config.lanes,
+    return std::make_tuple(p.row.simulated_seconds, total_banks(p), energy_or_worst(p.row), p.design.config.lanes,
                            p.design.config.cards, p.row.config.label());
   };
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -161,12 +164,12 @@ void mark_front(std::vector<DesignPoint>& points) {
     p.on_front = false;
     if (!p.meets_constraints) continue;
     const double t = p.row.simulated_seconds, e = energy_or_worst(p.row);
-    const unsigned b = p.design.config.banks;
+    const unsigned b = total_banks(p);
     bool dominated = false;
     for (const DesignPoint& q : points) {
       if (&q == &p || !q.meets_constraints) continue;
       const double qt = q.row.simulated_seconds, qe = energy_or_worst(q.row);
-      const unsigned qb = q.design.config.banks;
+      const unsigned qb = total_banks(q);
       if (qt <= t && qe <= e && qb <= b && (qt < t || qe < e || qb < b)) {
         dominated = true;
         break;

@@ -55,7 +55,7 @@ struct DesignSpace {
 };
 
 struct DesignConstraints {
-  unsigned max_banks = 0;  // 0: the device profile's bank count (the board as profiled)
+  unsigned max_banks = 0;  // per card; 0: the device profile's bank count (the board as profiled)
   int min_bits = 7;
   double max_energy_joules = std::numeric_limits<double>::infinity();
   double max_watts = std::numeric_limits<double>::infinity();
@@ -106,6 +106,7 @@ struct DesignPoint {
   board::DeviceProfile profile;     // the design's device profile (its settings applied): `run --device` takes it
 };
 
+// Banks count the whole design's: the configuration's banks on every card.
 // Indices of the fastest point meeting the constraints (ties: fewer banks, less energy, fewer lanes,
 // fewer cards, then the label), or none.
 std::optional<std::size_t> fastest(const std::vector<DesignPoint>& points);

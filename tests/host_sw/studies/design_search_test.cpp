@@ -47,6 +47,16 @@ TEST(DesignSearch, FrontAndFastestOfHandMadePoints) {
   EXPECT_EQ(points[*fastest(points)].design.config.lanes, 2u);
 }
 
+// Banks count the whole design's: two cards of 5 banks are 10 banks, more than one card of 6.
+TEST(DesignSearch, BanksCountEveryCard) {
+  std::vector<DesignPoint> points = {point(2, 5, 10, 100), point(2, 6, 10, 100)};
+  points[0].design.config.cards = 2;
+  EXPECT_EQ(*fastest(points), 1u);
+  mark_front(points);
+  EXPECT_FALSE(points[0].on_front);
+  EXPECT_TRUE(points[1].on_front);
+}
+
 TEST(DesignSearch, FrontIgnoresOrderAndDominatedAdditions) {
   std::mt19937 random(7);
   std::uniform_real_distribution<double> t(1, 10), e(1, 10);

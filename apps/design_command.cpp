@@ -2,6 +2,7 @@
 // workload, and the Pareto front of time, energy and banks, every figure simulated
 // (host_sw/studies/design_search.h). Writes design.json, design.csv, design.md, roofline.csv,
 // best-device.json (the best design's profile, for `rc2000sim run --device`) and two plots.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -72,6 +73,10 @@ void resolve(DesignOptions& o) {
     else throw CLI::ValidationError("--results: '" + r + "' is not one of bank, on_chip");
   }
   s.bits = parse_int_list(o.bits, "--bits", 7, 31);
+  if (std::none_of(s.bits.begin(), s.bits.end(), [&](int b) { return b >= o.constraints.min_bits; }))
+    throw CLI::ValidationError("--min-bits: " + std::to_string(o.constraints.min_bits) + " leaves no width of --bits " +
+                               o.bits + " to search; give --bits with a width of at least " +
+                               std::to_string(o.constraints.min_bits));
   s.multipliers.clear();
   for (const std::string& m : parse_name_list(o.multipliers, "--multipliers")) s.multipliers.push_back(parse_multipliers(m));
   s.cards = parse_int_list(o.cards, "--cards", CardCount::kMin, CardCount::kMax);
@@ -140,9 +145,9 @@ void add_design_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--min-bits", o->constraints.min_bits, "Least fractional width a design may have")
       ->check(CLI::Range(7, 31))->capture_default_str();
   cmd->add_option("--max-energy", o->constraints.max_energy_joules, "Most energy a design's run may take, joules")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_finite());
   cmd->add_option("--max-power", o->constraints.max_watts, "Most average power a design's run may draw, watts")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_finite());
   cmd->add_flag("--exhaustive", o->exhaustive, "Simulate every feasible design (no pruning of spare banks)");
   cmd->add_option("--out", o->out_dir, "Output folder")->check(output_path())->capture_default_str();
   cmd->add_flag("--quiet", o->quiet, "No progress output");

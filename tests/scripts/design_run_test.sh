@@ -44,3 +44,11 @@ for bad in "--results nowhere" "--multipliers dsp" "--bank-clocks 0" "--max-bank
   [ ! -e "$work/bad" ] || { echo "$bad wrote $work/bad"; exit 1; }
 done
 echo "design: errors name their options"
+# Caps and widths that cannot apply, refused before any work.
+for bad in "--max-energy nan" "--max-power inf" "--min-bits 31"; do
+  # shellcheck disable=SC2086
+  if "$sim" design "${space[@]}" $bad --out "$work/bad" 2>"$work/err.txt"; then echo "accepted $bad"; exit 1; fi
+  grep -q -- "${bad%% *}" "$work/err.txt" || { echo "error for $bad does not name it:"; cat "$work/err.txt"; exit 1; }
+  [ ! -e "$work/bad" ] || { echo "$bad wrote $work/bad"; exit 1; }
+done
+echo "design: caps and widths that cannot apply are refused"

@@ -89,5 +89,6 @@ void add_paper_command(CLI::App& app, int& exit_code);
 void add_sweep_command(CLI::App& app, int& exit_code);
 void add_bench_command(CLI::App& app, int& exit_code);
 void add_adaptive_command(CLI::App& app, int& exit_code);
+void add_design_command(CLI::App& app, int& exit_code);
 
 }  // namespace rc

@@ -31,6 +31,7 @@ int sc_main(int argc, char** argv) {
   rc::add_sweep_command(app, exit_code);
   rc::add_bench_command(app, exit_code);
   rc::add_adaptive_command(app, exit_code);
+  rc::add_design_command(app, exit_code);
   for (CLI::App* cmd : app.get_subcommands([](CLI::App*) { return true; })) rc::add_configs_option(*cmd);
   try {
     app.parse(argc, argv);

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/paper_sec56.h"
 #include "host_sw/energy/full_rate_energy.h"
 #include "host_sw/studies/paper_prediction.h"
 
@@ -15,9 +16,12 @@ struct PaperDocument {
   std::vector<PaperTableRow> rows;
   std::vector<board::PaperEstimate> paper_rule, model;  // sec 5.6, pairwise
   std::vector<BankVariantRow> bank_variants;
-  // Sec 5.6 in joules: each model estimate with lanes, and the XC2V6000's own lanes that fit, priced
-  // per intersection at full rate (host_sw/energy/full_rate_energy.h).
+  // Sec 5.6 in joules: each model estimate of the throughput table that has lanes (the same designs),
+  // priced per intersection at full rate (host_sw/energy/full_rate_energy.h).
   std::vector<energy::FullRateEnergy> energy;
+  // Sec 5.6 per device: the paper's rule at its clock(s) and the model's searched designs (apps/paper_sec56.h).
+  std::vector<Sec56DeviceRow> devices;
+  std::vector<Roofline> rooflines;
   PaperSummary summary;
   std::string host_profile;  // as given to --host
   std::string driver_model;  // the host profile's

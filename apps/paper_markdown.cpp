@@ -132,11 +132,29 @@ std::string paper_markdown(const PaperDocument& j) {
         "the measured peak software rate (Table 2's largest steps x patches x faces over its software seconds).\n"
         "**model**: lanes that fit with the Handel-C wrapper counted and slice-multiplier lanes beyond the block\n"
         "multipliers, on as many 100 MHz banks as full-rate lanes need, streaming at the pass-timing formula's rate\n"
-        "for a long pass (result bank included); speedups over the calibrated software test.\n\n";
+        "for a long pass (result bank included); speedups over the calibrated software test. The model's RC2000\n"
+        "bandwidth limit divides the same 2.4 GB/s by the bytes its two-lane design moves per intersection (10: its\n"
+        "result word is read and written back once per face), not by the paper's 6.125. Each row's clock is stated\n"
+        "in `paper.json` (`clock_assumption`).\n\n";
   estimates(md, j);
   md << "\n![Sec 5.6](paper/estimates.png)\n\n"
+        "## Sec 5.6 per device, from the model's own design search\n\n"
+        "For each device, **paper**: the paper's rule at Table 1's 176.9 MHz and, where the device's measured design\n"
+        "clock differs (the XC2V6000's 52.5 MHz, sec 5.5), at that clock too. **model**: the fastest design the model\n"
+        "finds on the paper's 280-face, 4480-patch workload (Table 2's 5889 steps, every segment sent) under a stated\n"
+        "board (the profile's 6 banks, or as many as the most lanes need at full rate; banks at the profile's 100 MHz):\n"
+        "15 bits, every lane count that fits, results in the bank or on chip, block multipliers while they last, one\n"
+        "card, the concurrent driver. The pass-timing formula ranks the designs and the four fastest by it are\n"
+        "simulated; every figure is simulated: intersections per second while the FPGA streams, the bank bytes it\n"
+        "moved per intersection, the workload's seconds and energy, and the bound. `rc2000sim design` searches the\n"
+        "whole space and prints the Pareto front ([../design.md](../design.md)).\n\n";
+  sec56_devices_markdown(md, j.devices);
+  md << "\n![Rooflines](paper/roofline.png)\n\n"
+        "The rooflines: attainable tests per second against bank bytes per test, under the lanes' roof (lanes x\n"
+        "clock), the SRAM roof (banks x 4 bytes x bank clock, a diagonal), and the flat PCI and host roofs of the\n"
+        "best design's run on this workload ([../design.md](../design.md), Roofline).\n\n"
         "## Sec 5.6 in energy\n\n"
-        "The model's designs above (and the XC2V6000's own lanes that fit) for one second at full rate, priced by the\n"
+        "The model's designs of the estimates table above for one second at full rate, priced by the\n"
         "device and host profiles' energy tables: nanojoules per intersection. The lanes are clocked the whole\n"
         "second and work one cycle per intersection; the banks move the long pass's bytes per intersection; no\n"
         "PCI traffic (the bridge is powered); the host waits. Software: the host computing at the calibrated\n"

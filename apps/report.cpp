@@ -79,6 +79,7 @@ nlohmann::ordered_json estimate_json(const board::PaperEstimate& e) {
           {"device", e.device},
           {"lanes", e.lanes},
           {"clock_mhz", e.clock_mhz},
+          {"clock_assumption", e.clock_assumption},
           {"intersections_per_s", e.intersections_per_s},
           {"bytes_per_intersection", e.bytes_per_intersection},
           {"bytes_per_cycle", e.bytes_per_cycle},
@@ -140,10 +141,13 @@ nlohmann::ordered_json lanes_that_fit_json(const LanesThatFit& e) {
 
 std::string lanes_that_fit_line(const LanesThatFit& e) {
   if (!e.missing.empty()) return e.model.device + ": " + e.missing;
-  char line[256];
-  std::snprintf(line, sizeof line, "%s: paper's rule (15-bit Table 1 pipeline) %d lanes, %.4g int/s (%.1fx software); model %d lanes, %.4g int/s (%.1fx)",
-                e.model.device.c_str(), e.paper_rule.lanes, e.paper_rule.intersections_per_s,
-                e.paper_rule.speedup_vs_software, e.model.lanes, e.model.intersections_per_s, e.model.speedup_vs_software);
+  char line[320];
+  std::snprintf(line, sizeof line,
+                "%s: paper's rule (15-bit Table 1 pipeline at %g MHz) %d lanes, %.4g int/s (%.1fx software); "
+                "model %d lanes at %g MHz (the profile's design clock), %.4g int/s (%.1fx)",
+                e.model.device.c_str(), e.paper_rule.clock_mhz, e.paper_rule.lanes, e.paper_rule.intersections_per_s,
+                e.paper_rule.speedup_vs_software, e.model.lanes, e.model.clock_mhz, e.model.intersections_per_s,
+                e.model.speedup_vs_software);
   return line;
 }
 

@@ -339,9 +339,13 @@ int run_simulation(const RunOptions& given) {
 void add_run_command(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<RunOptions>();
   auto solver = std::make_shared<SolverCli>();
+  auto paper_faithful = std::make_shared<bool>(false);
   CLI::App* cmd = app.add_subcommand("run", "Solve radiosity for one scene; write report.json, patches.csv, image.png");
   add_scene_options(*cmd, options->scene);
   add_solver_options(*cmd, *solver);
+  cmd->add_flag("--paper-faithful", *paper_faithful,
+                "Send every segment to every other patch, as the paper did (sweep, paper and design replay this "
+                "workload), instead of culling receivers that cannot see the shooter");
   add_choice_option(*cmd, "--impl", options->impl, "Who answers visibility: software or board (the SystemC RC2000 model)");
   add_choice_option(*cmd, "--visibility", options->visibility,
                     "Software backend: float, fixed (bit-exact, brute force) or fast (bit-exact, culled, all cores)");
@@ -378,8 +382,9 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--image-size", options->render.width, "Image width and height in pixels")
       ->check(CLI::Range(16, 8192))->capture_default_str();
   cmd->add_flag("--quiet", options->quiet, "No progress output");
-  cmd->callback([options, solver, arith, cmd, &exit_code] {
+  cmd->callback([options, solver, arith, paper_faithful, cmd, &exit_code] {
     options->solver = solver->resolved(*cmd);
+    options->solver.cull_receivers = !*paper_faithful;
     options->arith = parse_arith_option(*arith);
     options->render.height = options->render.width;
     check_run_options(*cmd, *options);

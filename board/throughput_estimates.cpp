@@ -46,16 +46,17 @@ std::string format(const char* pattern, double a, double b = 0, double c = 0, do
   return text;
 }
 
-// Sec 5.6(a): every bank streaming one word per memory clock.
-PaperEstimate bandwidth_limit(EstimateRule rule, double software_rate) {
+// Sec 5.6(a): every bank streaming one word per memory clock, over `bytes` per intersection (the
+// paper's 6.125, or what the model's two-lane design moves).
+PaperEstimate bandwidth_limit(EstimateRule rule, double software_rate, double bytes, const std::string& why_bytes) {
   const DeviceProfile rc2000 = find_device_profile("xc2v6000");
   const double bandwidth = rc2000.bank_count * (rc2000.bank_word_bits / 8.0) * rc2000.bank_clock_mhz * 1e6;
-  const double bytes = bytes_per_intersection(15);
   PaperEstimate e = at_rate("RC2000 bandwidth limit", rule, rc2000.name, 0, rc2000.bank_clock_mhz, bandwidth / bytes,
                             bytes, software_rate);
   e.note = format("%g banks x %g bytes x %g MHz = %.4g GB/s", rc2000.bank_count, rc2000.bank_word_bits / 8.0,
                   rc2000.bank_clock_mhz, bandwidth / 1e9) +
-           format(" over %g bytes per intersection", bytes);
+           format(" over %g bytes per intersection", bytes) + why_bytes;
+  e.clock_assumption = format("bank clock %g MHz (sec 5.6(a)'s peak memory clock)", rc2000.bank_clock_mhz);
   return e;
 }
 
@@ -99,12 +100,13 @@ unsigned banks_for_full_rate(const DeviceProfile& device, int lanes, int bits) {
 
 std::vector<PaperEstimate> paper_rule_estimates(double software_peak_rate) {
   const double bytes = bytes_per_intersection(15);
-  std::vector<PaperEstimate> out{bandwidth_limit(EstimateRule::Paper, software_peak_rate)};
+  std::vector<PaperEstimate> out{bandwidth_limit(EstimateRule::Paper, software_peak_rate, bytes, " (sec 5.6(a))")};
 
   // Sec 5.7: "2 parallel pipelines at 52 MHz".
   PaperEstimate measured = at_rate("measured 2-lane design", EstimateRule::Paper, "xc2v6000", 2, 52.0, 2 * 52.0e6, bytes,
                                    software_peak_rate);
   measured.note = "sec 5.7: 2 parallel pipelines at 52 MHz";
+  measured.clock_assumption = "sec 5.7's 52 MHz (the measured design, sec 5.5: 52.5 MHz)";
   out.push_back(measured);
 
   for (const char* name : kEstimateDevices) out.push_back(paper_rule_lanes_that_fit(find_device_profile(name), software_peak_rate));
@@ -121,19 +123,21 @@ PaperEstimate paper_rule_lanes_that_fit(const DeviceProfile& device, double soft
   e.note = format("min(%g slices / %g, %g multipliers / %g)", device.slices, table1.slices, device.block_multipliers,
                   table1.block_multipliers) +
            format(" = min(%g, %g); wrapper not counted", by_slices, by_multipliers);
+  e.clock_assumption = format("Table 1's 15-bit block-multiplier pipeline clock, %g MHz", table1.clock_mhz);
   return e;
 }
 
 std::vector<PaperEstimate> model_estimates(double software_rate, int bits) {
   const pipeline::ResourceModel model = pipeline::ResourceModel::load_default();
-  std::vector<PaperEstimate> out{bandwidth_limit(EstimateRule::Model, software_rate)};
-
   const DeviceProfile rc2000 = find_device_profile("xc2v6000");
   const DesignFit two = fit_design(rc2000, model, 2, bits);
   const StreamRate two_rate = long_pass_rate(rc2000, 2, bits);
+  std::vector<PaperEstimate> out{bandwidth_limit(EstimateRule::Model, software_rate, two_rate.bytes_per_ray,
+                                                 " (the model's 2-lane design below)")};
   PaperEstimate measured = at_rate("measured 2-lane design", EstimateRule::Model, rc2000.name, 2, two.clock_mhz,
                                    two_rate.rays_per_cycle * two.clock_mhz * 1e6, two_rate.bytes_per_ray, software_rate);
   measured.note = format("%.3f rays per cycle (bound: ", two_rate.rays_per_cycle) + two_rate.limit + ")";
+  measured.clock_assumption = format("the profile's measured 2-lane design clock, %g MHz (sec 5.5)", two.clock_mhz);
   out.push_back(measured);
 
   for (const char* name : kEstimateDevices) out.push_back(model_lanes_that_fit(find_device_profile(name), software_rate, bits));
@@ -150,6 +154,7 @@ PaperEstimate model_lanes_that_fit(const DeviceProfile& device, double software_
   e.note = format("%g with block multipliers, %g with slice multipliers, wrapper counted; ", fit.hard_lanes,
                   fit.soft_lanes) +
            format("%.3f rays per cycle (bound: ", rate.rays_per_cycle) + (lanes > 0 ? rate.limit : "no lane fits") + ")";
+  e.clock_assumption = format("the profile's design clock for these lanes, %g MHz", fit.clock_mhz);
   return e;
 }
 
@@ -210,13 +215,17 @@ PaperEstimate float_lanes_that_fit(const DeviceProfile& device, double software_
   e.note = format("%g with block multipliers, %g with slice multipliers, wrapper counted; full rate, estimate; ",
                        f.hard_lanes, f.soft_lanes) +
            format("needs %.3g GB/s of the RC2000's %.3g", f.gb_per_s_needed, f.rc2000_gb_per_s);
+  e.clock_assumption = format("the float lanes' clock on this device, %g MHz (estimate)", f.clock_mhz);
   return e;
 }
 
 std::string why_estimates_differ(const PaperEstimate& paper, const PaperEstimate& model) {
   if (paper.estimate == "RC2000 bandwidth limit") {
-    return "same arithmetic; the speedups differ only by the software rate (paper: Table 2's peak, model: the "
-           "calibrated intersection test)";
+    return "same 2.4 GB/s; the paper counts " + format("%g", paper.bytes_per_intersection) +
+           " bytes per intersection (three coordinates read, one result bit written), the model's two-lane design moves " +
+           format("%g", model.bytes_per_intersection) +
+           " (coordinate words, and its result word read and written back once per face); the speedups also differ by the "
+           "software rate (paper: Table 2's peak, model: the calibrated intersection test)";
   }
   if (paper.estimate == "measured 2-lane design") {
     return "the paper rounds the clock to 52 MHz and counts one result per cycle per lane; the model runs at 52.5 MHz "

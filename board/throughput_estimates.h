@@ -10,7 +10,9 @@
 //   beyond the block multipliers (design_fit.h), on a board with as many 100 MHz banks as the lanes
 //   need at full rate, streaming at the rate the pass-timing formula gives for a long pass, result
 //   bank included (a result word shared by two lanes is read and written), or, when the profile keeps
-//   results on chip (wrapper.results), without it.
+//   results on chip (wrapper.results), without it. The model's RC2000 bandwidth limit divides the
+//   same 2.4 GB/s by the bytes the model's measured two-lane design moves per intersection (10 at
+//   15 bits: its result word is read and written back once per face), not by the paper's 6.125.
 #pragma once
 
 #include <string>
@@ -37,6 +39,7 @@ struct PaperEstimate {
   double software_rate = 0;  // intersections per second the speedup is taken against
   double speedup_vs_software = 0;
   std::string note;          // how the figure was reached
+  std::string clock_assumption;  // which clock the rate assumes and where it comes from
 };
 
 // Bytes one intersection moves as sec 5.6(a) counts them at `bits`: three coordinate fields read,

@@ -4,6 +4,7 @@ import csv
 import os
 
 import entry  # apps/plots/entry.py, beside this script
+import roofline
 
 import matplotlib
 
@@ -83,6 +84,10 @@ def main(csv_path, out):
     rows = list(csv.DictReader(open(csv_path)))
     table2([r for r in rows if r["record"] == "scene"], out)
     estimates([r for r in rows if r["record"] == "estimate"], out)
+    # The rooflines per device (rc2000sim paper writes roofline.csv beside paper.csv; roofline.py).
+    beside = os.path.join(os.path.dirname(csv_path), "roofline.csv")
+    if os.path.exists(beside):
+        roofline.draw(list(csv.DictReader(open(beside))), os.path.join(out, "roofline.png"))
 
 
 if __name__ == "__main__":

@@ -138,7 +138,14 @@ PaperPrediction predict_paper(const std::vector<PaperScene>& scenes, const std::
   PaperPrediction r;
   r.scenes = &scenes;
   r.spread = spread_cases(scenes, variants, host, cases);
+  const std::optional<std::size_t> workload = sec56_scene(scenes);
+  if (workload) {
+    const PaperScene& s = scenes[*workload];
+    r.searched = plan_sec56_searches(host_name, s.scene.patches.size(), s.scene.faces.size());
+    add_sec56_cases(r.searched, s, cases);
+  }
   r.outcomes = run_timing_study(cases);
+  if (workload) collect_sec56(r.searched, r.outcomes, scenes[*workload].row.steps);
   r.paper_rule = board::paper_rule_estimates(measured_peak_software_rate(rows));
   r.model = board::model_estimates(1.0 / host.work[static_cast<int>(HostWork::IntersectionTest)].to_seconds(), 15);
   return r;

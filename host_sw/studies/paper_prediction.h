@@ -1,7 +1,8 @@
 // `rc2000sim paper` as a study: the paper's four implementations of every Table 2 scene, sec 4.1's
 // bank variants on the largest scene, and the withheld columns again under every driver-model
 // variant whose cross-validated error is within kVariantTolerance of the best (the spread), all
-// replayed in one timing study; and sec 5.6 under the paper's rule and the model's. The command
+// replayed in one timing study; and sec 5.6 under the paper's rule and the model's, the model's best
+// design per device found by a design search simulated in the same study (paper_design_search.h). The command
 // (apps/paper_command.cpp) turns the result into paper.json, paper.csv, plots and paper.md.
 #pragma once
 
@@ -13,6 +14,7 @@
 #include "board/throughput_estimates.h"
 #include "host_sw/driver/host_cpu_model.h"
 #include "host_sw/studies/calibration_variants.h"
+#include "host_sw/studies/paper_design_search.h"
 #include "host_sw/studies/paper_workload.h"
 #include "host_sw/studies/timing_study.h"
 
@@ -41,6 +43,9 @@ struct PaperPrediction {
   std::vector<TimingOutcome> outcomes;  // kPaperImplementations per scene, the bank variants, the spread
   std::vector<SpreadCase> spread;
   std::vector<board::PaperEstimate> paper_rule, model;  // sec 5.6, pairwise
+  // Sec 5.6 per device from the model's search (paper_design_search.h), on the 280/4480 scene; empty
+  // when the table has no such scene.
+  std::vector<Sec56Search> searched;
 
   // (driver model, seconds) of every spread case of (scene, implementation).
   std::vector<std::pair<std::string, double>> spread_of(std::size_t scene, int impl) const;

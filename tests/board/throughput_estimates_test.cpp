@@ -76,7 +76,15 @@ TEST(ThroughputEstimates, ModelEstimatesCountTheWrapperAndTheResultBank) {
   const std::vector<PaperEstimate> paper = paper_rule_estimates(software_rate);
   const std::vector<PaperEstimate> e = model_estimates(software_rate, 15);
   ASSERT_EQ(e.size(), paper.size());
-  EXPECT_DOUBLE_EQ(e[0].intersections_per_s, paper[0].intersections_per_s);
+  // The model's bandwidth limit: the same 2.4 GB/s over the bytes its two-lane design moves: at 15
+  // bits three coordinate words per packet of two rays and the shared result word read and written,
+  // (3 + 2) x 4 / 2 = 10 bytes per intersection, not the paper's 6.125.
+  EXPECT_EQ(e[0].rule, EstimateRule::Model);
+  EXPECT_NEAR(e[0].bytes_per_intersection, 10.0, 1e-3);
+  EXPECT_DOUBLE_EQ(e[0].bytes_per_intersection, e[1].bytes_per_intersection);
+  EXPECT_DOUBLE_EQ(e[0].intersections_per_s, 2.4e9 / e[0].bytes_per_intersection);
+  for (const PaperEstimate& x : e) EXPECT_FALSE(x.clock_assumption.empty()) << x.estimate;
+  for (const PaperEstimate& x : paper) EXPECT_FALSE(x.clock_assumption.empty()) << x.estimate;
   const pipeline::ResourceModel model = pipeline::ResourceModel::load_default();
   for (std::size_t i = 1; i < e.size(); ++i) {
     EXPECT_EQ(e[i].rule, EstimateRule::Model);

@@ -121,7 +121,7 @@ mkdir "$work/t"
 refused "$work/o" "$work/t: exists and is not a regular file; not replaced" "${board[@]}" --trace "$work/t" --out "$work/o"
 rmdir "$work/t"
 # An empty output path was joined into "/patches.csv", at the file system's root.
-for command in run accuracy sweep paper bench adaptive; do
+for command in run accuracy sweep paper bench adaptive design; do
   refused "$work/nothing" "--out: is empty: name a folder or file to write" "$command" --quiet --out ""
 done
 refused "$work/nothing" "--variants-out: is empty" calibrate --quiet --variants-out ""

@@ -1,0 +1,173 @@
+// The design search (`rc2000sim design`, docs/design.md): for one workload and one device, the fastest
+// feasible design over lanes, banks (count and clock), where results accumulate, fractional width,
+// block or slice multipliers, cards and driver, under constraints (most banks, least width, an
+// energy or power cap), and the Pareto front of time, energy and banks. Every figure it reports is
+// simulated by the SystemC model (a timing study, timing_study.h); the only pruning is exact:
+//
+//   * feasibility: a design whose lanes do not fit the device or whose banks cannot feed them is not
+//     a design (ConfigChecker, the check every board run goes through);
+//   * spare banks: a board with more banks than the layout uses plus one (the own-face table's bank)
+//     leaves the rest spare (board/bank_layout.h); its passes, hence its time, are those of the board
+//     with one fewer bank, and it draws more standby energy and has more banks: dominated in all three
+//     objectives, never the fastest (ties are broken towards fewer banks). Tests
+//     DesignSearch.PrunedSearchEqualsExhaustive* check it against the whole space simulated.
+//
+// One result bank per group of lanes is not a choice here: the wrapper model has one result bank
+// (BankLayout::result_bank, the result-bank term of board/pass_timing.h is one sum over the groups,
+// and the driver reads every result word from that bank), so such a design cannot be simulated
+// without a new layout, pass-timing term, wrapper and driver read-back (docs/design.md says so).
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "board/bank_layout.h"
+#include "host_sw/studies/config_sweep.h"
+#include "host_sw/studies/roofline.h"
+#include "host_sw/studies/timing_study.h"
+#include "scenes/prepare.h"
+
+namespace rc {
+
+// Block: block multipliers while the device has them, slice multipliers beyond (design_fit.h's
+// smallest implementation). Slice: every lane's multipliers in slices (fpga.block_multipliers = 0).
+enum class Multipliers { block, slice };
+const char* to_string(Multipliers m);  // "block", "slice"
+Multipliers parse_multipliers(const std::string& text);  // throws std::invalid_argument naming --multipliers
+
+// The axes searched. Empty lanes: 1 .. the most that fit; empty banks: 5 .. max_banks; empty bank
+// clocks: the profile's.
+struct DesignSpace {
+  std::string device = "xc2v6000";
+  std::string host = "athlon-mp-2600-calibrated";
+  std::vector<int> lanes;
+  std::vector<int> banks;
+  std::vector<double> bank_clocks_mhz;
+  std::vector<board::ResultStore> results = {board::ResultStore::bank, board::ResultStore::on_chip};
+  std::vector<int> bits = {15};
+  std::vector<Multipliers> multipliers = {Multipliers::block, Multipliers::slice};
+  std::vector<int> cards = {1};
+  std::vector<bool> concurrent = {true};
+};
+
+struct DesignConstraints {
+  unsigned max_banks = 0;  // per card; 0: the device profile's bank count (the board as profiled)
+  int min_bits = 7;
+  double max_energy_joules = std::numeric_limits<double>::infinity();
+  double max_watts = std::numeric_limits<double>::infinity();
+};
+
+// What bounds a design: the part of the run that took the most time (SweepRow::bottleneck: the FPGA's
+// stream limit when the host waits for it, else host compute, the driver or PCI), and what bounded
+// the FPGA's stream and its share of FPGA time. The one place the search reads a bound from a run
+// (PassRecord::limit, tallied per run as stream_limits): the lead switches it to the bandwidth model.
+struct DesignBound {
+  std::string run;       // "fpga_result_bank", "host_compute", ...
+  std::string fpga;      // "bank 4 (results)", "lanes", ...
+  double fpga_share = 0; // of the FPGA busy time
+  std::string text() const;  // "fpga_result_bank (bank 4 (results), 100% of FPGA time)"
+};
+DesignBound design_bound(const SweepRow& row);
+
+// One design of the space as a configuration the sweep machinery checks and simulates.
+struct DesignConfig {
+  SweepConfig config;               // device, bits, concurrent, lanes, banks, cards, settings
+  board::ResultStore results = board::ResultStore::bank;
+  double bank_clock_mhz = 0;
+  Multipliers multipliers = Multipliers::block;
+};
+
+struct DesignCandidate {
+  DesignConfig design;
+  ConfigCheck check;
+  bool spare_banks = false;  // banks beyond the layout's use plus one: pruned (above)
+};
+
+// Every design of the space within the constraints' banks and widths, checked; the infeasible ones
+// carry their reason. Throws std::invalid_argument for an empty axis or a profile that refuses a value.
+std::vector<DesignCandidate> enumerate_designs(const DesignSpace& space, const DesignConstraints& constraints,
+                                               const ConfigChecker& checker);
+
+// One simulated design.
+struct DesignPoint {
+  DesignConfig design;
+  SweepRow row;  // simulated seconds, energy, watts, bound columns (config_sweep.h)
+  DesignBound bound;
+  std::uint64_t tests = 0;
+  double bank_bytes_per_test = 0;  // every bank's bytes read and written / ray-face tests
+  double pci_bytes_per_test = 0;   // both directions
+  double tests_per_second = 0;     // over the whole run
+  bool meets_constraints = false;  // energy and power caps
+  bool on_front = false;
+  board::DeviceProfile profile;     // the design's device profile (its settings applied): `run --device` takes it
+};
+
+// Banks count the whole design's: the configuration's banks on every card.
+// Indices of the fastest point meeting the constraints (ties: fewer banks, less energy, fewer lanes,
+// fewer cards, then the label), or none.
+std::optional<std::size_t> fastest(const std::vector<DesignPoint>& points);
+// Marks on_front: a point meeting the constraints that no other such point equals or beats in time,
+// energy and banks while beating it in one. A missing energy (NaN) counts as the worst.
+void mark_front(std::vector<DesignPoint>& points);
+// Sets meets_constraints from the caps (energy and average power).
+void apply_caps(std::vector<DesignPoint>& points, const DesignConstraints& constraints);
+
+// The workload: a scene, the steps every design replays, paper-faithful or culled, the form factor.
+// Default: the paper's 280-face, 4,480-patch Cornell Box as `sweep` and `paper` build it (our box
+// refined to 70 faces, each split into 4 faces and those into 16 patches), every segment sent, for
+// Table 2's 5,889 steps, the paper's point form factor.
+struct DesignWorkload {
+  SceneOptions scene{"", 70, 1, 2, 0};
+  int steps = 0;                // 0: Table 2's count for a paper scene, else to convergence
+  bool paper_faithful = true;
+  std::string form_factor = "point";
+  std::string visibility = "fast";
+};
+
+struct DesignSearchResult {
+  std::string device;
+  DesignWorkload workload;
+  std::size_t faces = 0, patches = 0;
+  int steps = 0;
+  std::size_t designs = 0, infeasible = 0, pruned = 0;  // of the space within the constraints
+  std::vector<std::string> infeasible_reasons;          // one per reason kind, an example each
+  std::vector<DesignPoint> points;                      // simulated, in enumeration order
+  std::optional<std::size_t> best;
+  std::optional<DesignPoint> reference;                 // the paper's two-lane design on this workload
+  double software_seconds = 0;
+  unsigned max_banks = 0;
+};
+
+// The paper's two-lane design (sec 5.5: XC2V6000, 2 lanes, 6 banks, results in the bank, 15 bits,
+// block multipliers, one card) with the concurrent driver (sec 4.3): the design to beat.
+DesignConfig paper_two_lane_design(const ConfigChecker& checker);
+
+// The timing cases of `candidates` that are simulated (feasible, not pruned unless `exhaustive`),
+// for a scene and recording; `index[i]` is the case of candidate i or npos.
+struct DesignCases {
+  std::vector<TimingCase> cases;
+  std::vector<std::size_t> index;
+};
+DesignCases design_cases(const std::vector<DesignCandidate>& candidates, const Scene& scene, const SolverOptions& solver,
+                         const VisibilityRecording& recording, std::uint64_t max_segments, bool exhaustive);
+DesignPoint design_point(const DesignConfig& design, const TimingOutcome& outcome, int steps);
+
+// The whole search (runs a timing study: once per process). `progress` gets one line per phase.
+DesignSearchResult search_designs(const DesignWorkload& workload, const DesignSpace& space,
+                                  const DesignConstraints& constraints, bool exhaustive,
+                                  const std::function<void(const std::string&)>& progress);
+
+// The roofline of a search's device: the best design's roofs (its lanes and clock, its banks and bank
+// clock, PCI, and the flat PCI and host roofs of its run), the paper's rule for the device (sec 5.6:
+// lanes that fit at Table 1's clock, 6.125 bytes per test; `paper_software_rate`: Table 2's measured
+// peak), the front, the best design and the paper's two-lane design as simulated.
+Roofline design_roofline(const DesignSearchResult& result, double paper_software_rate);
+
+// "virtex4-sx55, 6 lanes, 20 banks at 100 MHz, results on chip, 15-bit, block multipliers, 1 card, concurrent".
+std::string describe(const DesignConfig& design);
+
+}  // namespace rc

@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# `rc2000sim design` (docs/design.md): the run command it prints for the best design, run, gives the
+# same simulated seconds, energy and tests as the search reported; the search with its pruning and
+# the exhaustive one (--exhaustive) choose the same best design and the same Pareto front; a cap
+# that no design meets says so; options that cannot apply are refused. A small workload (seconds).
+#   design_run_test.sh RC2000SIM
+set -euo pipefail
+sim="$1"
+work="$(mktemp -d)"; trap 'rm -rf "$work"' EXIT
+space=(--device virtex4-sx55 --faces 70 --patch-levels 1 --steps 30 --lanes 1-4 --max-banks 9 --cards 1,2 --quiet)
+"$sim" design "${space[@]}" --out "$work/search" >/dev/null
+"$sim" design "${space[@]}" --exhaustive --out "$work/all" >/dev/null
+cmd="$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['best']['run_command'])" "$work/search/design.json")"
+cmd="${cmd#rc2000sim }"
+# shellcheck disable=SC2086
+"$sim" $cmd --quiet >/dev/null
+python3 - "$work/search/design.json" "$work/all/design.json" "$work/search/best-run/report.json" <<'PY'
+import json, sys
+search, everything, run = (json.load(open(p)) for p in sys.argv[1:4])
+best = search["best"]
+got = {"simulated_seconds": run["simulated_seconds"], "energy_joules": run["board"]["energy"]["joules"],
+       "tests": run["visibility_tests"]}
+want = {k: best[k] for k in ("simulated_seconds", "energy_joules", "tests")}
+if got != want:
+    sys.exit(f"the best design's run differs: run {got}, search {want}")
+assert search["pruned_spare_banks"] > 0 and everything["pruned_spare_banks"] > 0
+assert len(search["points"]) < len(everything["points"]), "the pruning simulated nothing less"
+assert search["best"]["design"] == everything["best"]["design"], (search["best"]["design"], everything["best"]["design"])
+front = lambda d: sorted(p["design"] for p in d["front"])
+assert front(search) == front(everything), (front(search), front(everything))
+assert best["bound"]["run"], "the best design names no bound"
+print("design: the best design's run gives its figures;", len(search["points"]), "of", len(everything["points"]),
+      "designs simulated give the exhaustive best and front")
+PY
+# A cap no design meets: no best, said so, and the outputs still written.
+"$sim" design "${space[@]}" --max-power 0.001 --out "$work/capped" >"$work/capped.txt"
+grep -q "best: no design meets the constraints" "$work/capped.txt"
+python3 -c "import json,sys; assert json.load(open(sys.argv[1]))['best'] is None" "$work/capped/design.json"
+# Bad options name themselves and write nothing.
+for bad in "--results nowhere" "--multipliers dsp" "--bank-clocks 0" "--max-banks 65" "--lanes 0"; do
+  # shellcheck disable=SC2086
+  if "$sim" design "${space[@]}" $bad --out "$work/bad" 2>"$work/err.txt"; then echo "accepted $bad"; exit 1; fi
+  grep -q -- "${bad%% *}" "$work/err.txt" || { echo "error for $bad does not name it:"; cat "$work/err.txt"; exit 1; }
+  [ ! -e "$work/bad" ] || { echo "$bad wrote $work/bad"; exit 1; }
+done
+echo "design: errors name their options"
+# Caps and widths that cannot apply, refused before any work.
+for bad in "--max-energy nan" "--max-power inf" "--min-bits 31"; do
+  # shellcheck disable=SC2086
+  if "$sim" design "${space[@]}" $bad --out "$work/bad" 2>"$work/err.txt"; then echo "accepted $bad"; exit 1; fi
+  grep -q -- "${bad%% *}" "$work/err.txt" || { echo "error for $bad does not name it:"; cat "$work/err.txt"; exit 1; }
+  [ ! -e "$work/bad" ] || { echo "$bad wrote $work/bad"; exit 1; }
+done
+echo "design: caps and widths that cannot apply are refused"

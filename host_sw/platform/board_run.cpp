@@ -10,6 +10,7 @@
 #include "board/fast_wrapper.h"
 #include "host_sw/platform/software_system.h"
 #include "host_sw/platform/work_replay.h"
+#include "host_sw/visibility/visibility_factory.h"
 
 namespace rc {
 
@@ -44,6 +45,11 @@ BoardSetup make_board_setup(const BoardRunOptions& o) {
   s.driver.concurrent = o.concurrent;
   s.driver.allow_batching = o.allow_batching;
   s.driver.oracle = o.oracle;
+  s.driver.cpu_split = o.cpu_split.on() ? o.cpu_split : s.host.driver_model.cpu_split;  // the option, else the profile's
+  if (s.driver.cpu_split.on() && o.cards > 1) {
+    throw std::invalid_argument("--cpu-share: a CPU/FPGA split drives one card (got " +
+                                std::to_string(o.cards.value()) + " cards)");
+  }
   if (o.trace) {
     s.trace_first_step = o.trace_first_step;
     s.trace_last_step = o.trace_last_step;
@@ -97,7 +103,13 @@ BoardSystem::BoardSystem(const sc_core::sc_module_name& name, const Scene& scene
     return ports;
   };
   if (cards() == 1) {
-    m_visibility = std::make_unique<BoardVisibility>(ports_of(board, host_out), m_cpu, setup.driver,
+    BoardVisibilityOptions driver = setup.driver;
+    if (driver.cpu_split.on() && driver.oracle == nullptr && driver.cpu_kernel == nullptr) {
+      const board::BankLayout& L = board.layout();
+      m_cpu_kernel = make_software_visibility(L.float_format ? L.float_format->to_string() : "fixed", L.bits);
+      driver.cpu_kernel = m_cpu_kernel.get();
+    }
+    m_visibility = std::make_unique<BoardVisibility>(ports_of(board, host_out), m_cpu, driver,
                                                      tracing ? &m_trace : nullptr);
     board.wrapper().on_pass([this](const board::PassRecord& r) { m_visibility->pass_finished(r); });
   } else {
@@ -270,7 +282,8 @@ RunReport BoardSystem::report(double wall_seconds) const {
   r.time.waiting = seconds(m_multi ? m_multi->waiting() : d.waiting);
   r.time.fpga_busy = busy;
   r.time.overlap = seconds(m_multi ? m_multi->overlap() : d.overlap);
-  r.time.second_cpu = m_setup.driver.concurrent && m_setup.host.driver_model.overlap == DriverModel::Overlap::DualCpu;
+  r.time.second_cpu = (m_setup.driver.concurrent && m_setup.host.driver_model.overlap == DriverModel::Overlap::DualCpu) ||
+                      (m_setup.driver.cpu_split.on() && m_setup.driver.cpu_split.cores == 2);
   if (r.time.second_cpu) {
     r.time.second_cpu_compute = seconds(m_cpu.second_cpu_compute());
     r.time.second_cpu_wait = seconds(m_cpu.second_cpu_wait());

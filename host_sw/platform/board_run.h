@@ -51,6 +51,10 @@ struct BoardRunOptions {
   // The oracle, if any, must then be the `float:E,M` software backend of the same format.
   std::optional<pipeline::FloatFormat> float_format;
   bool concurrent = false;              // paper sec 4.3
+  // The CPU/FPGA split (host_sw/driver/cpu_split.h; one card only); off: the host profile's
+  // (driver_model.cpu_*, usually off). Its answers come from the oracle, if any, else from a host
+  // kernel at the lanes' width or float format that the system makes.
+  CpuSplit cpu_split;
   // configs/hosts/NAME.json, or a path. The command's default: the profile fitted to the paper's
   // measurements (docs/calibration.md), so a library call gives `rc2000sim run --impl board`'s times.
   std::string host = "athlon-mp-2600-calibrated";
@@ -149,6 +153,7 @@ class BoardSystem : public sc_core::sc_module {
   BoardSetup m_setup;
   HostCpuModel m_cpu;
   TraceWriter m_trace;
+  std::unique_ptr<VisibilityBackend> m_cpu_kernel;  // the CPU/FPGA split's answers, when no oracle gives them
   std::unique_ptr<BoardVisibility> m_visibility;  // one card
   std::unique_ptr<MultiCardVisibility> m_multi;   // several
   std::vector<std::unique_ptr<tlm_utils::simple_initiator_socket<BoardSystem>>> m_card_out;  // cards 1..

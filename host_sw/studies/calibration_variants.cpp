@@ -90,6 +90,9 @@ std::vector<CalibratedVariant> load_calibrated_variants(const std::string& path)
       c.fit_rms = v.at("fit_rms_relative_residual").get<double>();
       c.chosen = v.at("chosen").get<bool>();
       c.in_spread = v.at("in_spread").get<bool>();
+      for (const auto& o : v.at("profile").at("calibration").at("observations")) {
+        c.left_out_errors.push_back(o.at("left_out_relative_error").get<double>());
+      }
       out.push_back(std::move(c));
     }
   } catch (const nlohmann::json::exception& e) {
@@ -102,6 +105,12 @@ std::vector<CalibratedVariant> load_calibrated_variants(const std::string& path)
     const std::string where = path + ": variants[" + std::to_string(i) + "]";
     if (!(std::isfinite(out[i].cv_error) && out[i].cv_error >= 0 && std::isfinite(out[i].fit_rms) && out[i].fit_rms >= 0)) {
       throw std::invalid_argument(where + ": cross-validated and fitted errors must be finite and at least 0");
+    }
+    for (double e : out[i].left_out_errors) {
+      if (!(std::isfinite(e) && e > -1)) throw std::invalid_argument(where + ": a left_out_relative_error must be finite and above -1");
+    }
+    if (out[i].in_spread && out[i].left_out_errors.size() < 2) {
+      throw std::invalid_argument(where + ": profile.calibration.observations needs at least two left-out errors");
     }
     if (out[i].chosen && !out[i].in_spread) throw std::invalid_argument(where + ": the chosen variant must be in the spread");
     chosen += out[i].chosen ? 1 : 0;

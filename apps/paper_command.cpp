@@ -57,6 +57,13 @@ ordered_json scene_record(const PaperTableRow& row) {
     rec["spread_min_seconds"] = row.spread_min_seconds;
     rec["spread_max_seconds"] = row.spread_max_seconds;
     rec["spread"] = list;
+    ordered_json mechanisms = ordered_json::array();
+    for (const auto& [model, seconds] : row.mechanisms) mechanisms.push_back({{"driver_model", model}, {"seconds", seconds}});
+    rec["mechanisms"] = mechanisms;
+    rec["range_min_seconds"] = row.range_min_seconds;
+    rec["range_max_seconds"] = row.range_max_seconds;
+    rec["interval_low_seconds"] = row.interval_low_seconds;
+    rec["interval_high_seconds"] = row.interval_high_seconds;
   }
   return rec;
 }
@@ -113,6 +120,13 @@ ordered_json paper_json(const PaperDocument& d) {
   }
   ordered_json energy = ordered_json::array();
   for (const energy::FullRateEnergy& e : d.energy) energy.push_back(energy_json(e));
+  j["prediction_interval"] = {
+      {"method", "from the fastest to the slowest variant or mechanism (range_min/max_seconds), each bound divided "
+                 "by 1 + a quantile of the calibration's left-out relative errors (docs/calibration.md, Prediction intervals)"},
+      {"quantiles", {kIntervalQuantiles[0], kIntervalQuantiles[1]}},
+      {"left_out_errors", d.left_out_errors},
+      {"left_out_error_low", d.left_out_error_low},
+      {"left_out_error_high", d.left_out_error_high}};
   j["scene_records"] = scenes;
   j["estimate_records"] = estimates;
   j["energy_records"] = energy;
@@ -133,20 +147,23 @@ std::string csv_text(const PaperDocument& d) {
   std::ostringstream out;
   out << "record,faces,patches,steps,implementation,seconds,paper_seconds,relative_residual,spread_min_seconds,"
          "spread_max_seconds,fpga_busy_seconds,speedup_vs_software,device,lanes,clock_mhz,intersections_per_s,"
-         "bytes_per_cycle,gb_per_s,estimate,rule,fpga_nj,sram_nj,pci_nj,card_nj,host_waiting_nj,system_nj,software_nj\n";
+         "bytes_per_cycle,gb_per_s,estimate,rule,fpga_nj,sram_nj,pci_nj,card_nj,host_waiting_nj,system_nj,software_nj,"
+         "interval_low_seconds,interval_high_seconds\n";
   for (const PaperTableRow& s : d.rows) {
     out << "scene," << s.scene.faces << ',' << s.scene.patches << ',' << s.scene.steps << ',' << to_string(s.implementation)
         << ',' << number(s.seconds) << ',' << (s.calibration ? number(s.paper_seconds()) : "") << ','
         << (s.calibration ? number(s.relative_residual()) : "") << ','
         << (s.spread.empty() ? "" : number(s.spread_min_seconds)) << ','
         << (s.spread.empty() ? "" : number(s.spread_max_seconds)) << ',' << number(s.fpga_busy_seconds) << ','
-        << number(s.speedup_vs_software) << ",,,,,,,,,,,,,,,\n";
+        << number(s.speedup_vs_software) << ",,,,,,,,,,,,,,,,"
+        << (s.spread.empty() ? "" : number(s.interval_low_seconds)) << ','
+        << (s.spread.empty() ? "" : number(s.interval_high_seconds)) << "\n";
   }
   for (std::size_t i = 0; i < d.paper_rule.size(); ++i) {
     for (const board::PaperEstimate* e : {&d.paper_rule[i], &d.model[i]}) {
       out << "estimate,,,,,,,,,,," << number(e->speedup_vs_software) << ',' << e->device << ',' << e->lanes << ','
           << number(e->clock_mhz) << ',' << number(e->intersections_per_s) << ',' << number(e->bytes_per_cycle) << ','
-          << number(e->gb_per_s) << ",\"" << e->estimate << "\"," << board::to_string(e->rule) << ",,,,,,,\n";
+          << number(e->gb_per_s) << ",\"" << e->estimate << "\"," << board::to_string(e->rule) << ",,,,,,,,,\n";
     }
   }
   auto nj = [](double x) { return std::isnan(x) ? std::string() : number(x); };
@@ -154,25 +171,29 @@ std::string csv_text(const PaperDocument& d) {
     out << "energy,,,,,,,,,,,," << e.device << ',' << e.lanes << ',' << number(e.clock_mhz) << ','
         << number(e.intersections_per_s) << ",,,\"" << e.estimate << "\",model," << nj(e.fpga_nj) << ',' << nj(e.sram_nj)
         << ',' << nj(e.pci_nj) << ',' << nj(e.card_nj) << ',' << nj(e.host_waiting_nj) << ',' << nj(e.system_nj) << ','
-        << nj(e.software_nj) << "\n";
+        << nj(e.software_nj) << ",,\n";
   }
   return out.str();
 }
 
-// A withheld-column cell: the prediction and the spread of the variants within tolerance.
+// A withheld-column cell: the prediction and its interval (variants, mechanisms and the calibration's
+// left-out errors).
 std::string with_spread(const PaperTableRow& row) {
   char text[64];
   if (row.spread.empty()) {
     std::snprintf(text, sizeof text, "%7.1f", row.seconds);
   } else {
-    std::snprintf(text, sizeof text, "%7.1f [%6.1f-%6.1f]", row.seconds, row.spread_min_seconds, row.spread_max_seconds);
+    std::snprintf(text, sizeof text, "%7.1f [%6.1f-%6.1f]", row.seconds, row.interval_low_seconds, row.interval_high_seconds);
   }
   return text;
 }
 
 void print_table(const PaperDocument& d) {
-  std::printf("\nTable 2 (seconds; paper figures in brackets; * = calibration column; predictions with [the spread of\n"
-              "the driver-model variants within %.0f%% of the best cross-validated error])\n", 100 * kVariantTolerance);
+  std::printf("\nTable 2 (seconds; paper figures in brackets; * = calibration column; predictions with [an interval:\n"
+              "the driver-model variants within %.0f%% of the best cross-validated error, the concurrent column's CPU/FPGA\n"
+              "split mechanisms, widened by the %.0f%%-%.0f%% quantiles of the calibration's left-out errors, %+.1f%%..%+.1f%%])\n",
+              100 * kVariantTolerance, 100 * kIntervalQuantiles[0], 100 * kIntervalQuantiles[1], 100 * d.left_out_error_low,
+              100 * d.left_out_error_high);
   std::printf("%6s %7s %6s %6s | %17s | %17s | %24s | %24s | %7s\n", "faces", "patches", "steps", "ours", "software*",
               "one pipe*", "two pipes", "concurrent", "speedup");
   for (std::size_t i = 0; i + 3 < d.rows.size(); i += kPaperImplementations) {
@@ -241,7 +262,9 @@ int run_paper(const PaperOptions& o) {
   const std::string markdown_path = o.docs_dir + "/paper.md";
   const std::string pictures = o.docs_dir.empty() ? o.out_dir : o.docs_dir + "/paper";
   Outputs outputs;
-  for (const std::string& p : {json_path, csv_path, o.out_dir + "/roofline.csv", pictures + "/table2.png"}) outputs.expect(p);
+  for (const std::string& p : {json_path, csv_path, o.out_dir + "/roofline.csv", pictures + "/table2.png",
+                               pictures + "/table2-intervals.png"})
+    outputs.expect(p);
   if (!o.docs_dir.empty()) outputs.expect(markdown_path);
   ProgressLine progress(!o.quiet);
   const std::vector<PaperRow> rows = load_paper_table(o.table);
@@ -268,6 +291,9 @@ int run_paper(const PaperOptions& o) {
   document.rooflines = sec56_rooflines(r, paper_rate);
   document.host_profile = o.host;
   document.driver_model = host.driver_model.name();
+  document.left_out_error_low = r.left_out_error_low;
+  document.left_out_error_high = r.left_out_error_high;
+  document.left_out_errors = r.left_out_errors;
   const std::string source_dir = std::string(RC_SOURCE_DIR) + "/";
   document.variants = o.variants.rfind(source_dir, 0) == 0 ? o.variants.substr(source_dir.size()) : o.variants;
   outputs.add(json_path, pretty_json(paper_json(document)));

@@ -26,6 +26,9 @@ struct PaperDocument {
   std::string host_profile;  // as given to --host
   std::string driver_model;  // the host profile's
   std::string variants;      // the variants file, relative to the source tree when inside it
+  // The prediction intervals' calibration part (PaperPrediction::left_out_error_*).
+  double left_out_error_low = 0, left_out_error_high = 0;
+  std::size_t left_out_errors = 0;
 };
 
 std::string paper_markdown(const PaperDocument& document);  // docs/results/paper.md

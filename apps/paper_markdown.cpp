@@ -5,6 +5,7 @@
 #include <string>
 
 #include "apps/paper_document.h"
+#include "host_sw/studies/paper_prediction.h"
 
 namespace rc {
 
@@ -94,6 +95,39 @@ void bank_variants(std::ostream& md, const PaperDocument& d) {
   }
 }
 
+// A withheld cell's interval: "78.4 [74.9-82.1]".
+std::string with_interval(const PaperTableRow& r) {
+  return fixed(r.seconds, 1) + " [" + fixed(r.interval_low_seconds, 1) + "-" + fixed(r.interval_high_seconds, 1) + "]";
+}
+
+// Last in the page (scripts/compare-outputs cuts it when comparing with a build from before it).
+void prediction_intervals(std::ostream& md, const PaperDocument& d) {
+  md << "\n## Prediction intervals\n\n"
+        "Each withheld cell with an interval (how it is made: [../calibration.md](../calibration.md), \"Prediction\n"
+        "intervals\"): from the fastest to the slowest of the driver-model variants above and, for the concurrent\n"
+        "column, the CPU/FPGA split mechanisms (software tests balanced against the board on the solver's processor or\n"
+        "on the second Athlon, under both overlaps), each bound divided by 1 + the "
+     << fixed(100 * kIntervalQuantiles[0], 0) << "% or " << fixed(100 * kIntervalQuantiles[1], 0)
+     << "% quantile of the calibration's\nleft-out relative errors (" << d.left_out_errors << " pooled over the in-spread variants: "
+     << percent(d.left_out_error_low) << " and " << percent(d.left_out_error_high) << ").\n\n"
+        "| faces | patches | two pipes [interval] | concurrent [interval] | concurrent, fastest mechanism | its seconds |\n"
+        "|---:|---:|---:|---:|---|---:|\n";
+  for (std::size_t i = 0; i + 3 < d.rows.size(); i += 4) {
+    const PaperTableRow &two = d.rows[i + 2], &con = d.rows[i + 3];
+    std::string fastest = "-";
+    double fastest_seconds = con.seconds;
+    for (const auto& [model, seconds] : con.mechanisms) {
+      if (seconds < fastest_seconds) {
+        fastest = model;
+        fastest_seconds = seconds;
+      }
+    }
+    md << "| " << two.scene.faces << " | " << two.scene.patches << " | " << with_interval(two) << " | " << with_interval(con)
+       << " | " << fastest << " | " << fixed(fastest_seconds, 1) << " |\n";
+  }
+  md << "\n![Table 2 with intervals](paper/table2-intervals.png)\n";
+}
+
 }  // namespace
 
 std::string paper_markdown(const PaperDocument& j) {
@@ -168,6 +202,7 @@ std::string paper_markdown(const PaperDocument& j) {
   md << "\n## Reproduce\n\n```\nbuild/apps/rc2000sim calibrate            # writes configs/hosts/athlon-mp-2600-calibrated.json and\n"
         "                                          # configs/calibration/athlon-mp-2600-variants.json\n"
         "build/apps/rc2000sim paper --docs docs/results\n```\n";
+  prediction_intervals(md, j);
   return md.str();
 }
 

@@ -93,6 +93,7 @@ BoardRunOptions board_options(const RunOptions& o) {
   board.vcd_path.clear();  // --vcd: the final path; SystemC writes a temporary file (run_board)
   board.trace = !o.trace_path.empty();
   board.bits = o.bits;
+  if (!o.cpu_share.empty()) board.cpu_split = parse_cpu_split(o.cpu_share, o.cpu_cores);
   if (float_arith(o)) board.float_format = o.arith.float_format();  // float lanes
   return board;
 }
@@ -122,10 +123,12 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   out.solver = std::move(r.solver);
   out.visibility_name = "board " + board.device + ", " + std::to_string(board.lanes.value()) + " lane(s), " +
                         (float_arith(o) ? o.arith.name() : std::to_string(o.bits) + "-bit") + (board.concurrent ? ", concurrent" : ", serial") +
+                        (board.cpu_split.on() ? ", cpu share " + board.cpu_split.name() : "") +
                         (o.board.cards > 1 ? ", " + std::to_string(o.board.cards) + " cards (split " + choice_name(o.board.card_split) + ", " +
                                            choice_name(o.board.card_bus) + " bus)"
                                      : "");
-  out.visibility_tests = r.report.intersections.tests;
+  // The board's tests and, with a CPU/FPGA split, the host's (0 otherwise).
+  out.visibility_tests = r.report.intersections.tests + r.report.work[static_cast<int>(HostWork::IntersectionTest)].count;
   out.board = std::move(r.report);
   out.trace_json = std::move(r.trace_json);
   out.lanes_that_fit = std::move(fit);
@@ -154,6 +157,16 @@ void print_board_summary(const RunReport& b) {
   const RunTime& t = b.time;
   std::printf("  simulated    %.6f s = host compute %.6f + driver %.6f + PCI %.6f + waiting %.6f\n", b.simulated_seconds,
               t.host_compute, t.driver_cpu, t.pci_transfer, t.waiting);
+  if (t.second_cpu) {
+    std::printf("  second cpu   computes %.6f s beside the first, which waits %.6f s for it (in simulated above)\n",
+                t.second_cpu_compute, t.second_cpu_wait);
+  }
+  const WorkTally& software_tests = b.work[static_cast<int>(HostWork::IntersectionTest)];
+  if (software_tests.count > 0) {  // the CPU/FPGA split (docs/board.md)
+    std::printf("  cpu split    %llu segment-face tests in software (%.6f s), %llu on the board\n",
+                static_cast<unsigned long long>(software_tests.count), software_tests.seconds,
+                static_cast<unsigned long long>(b.intersections.tests));
+  }
   std::printf("  FPGA         busy %.6f s (overlapping host compute %.6f s), %.4g intersections/s while busy\n",
               t.fpga_busy, t.overlap, b.intersections.per_second_while_fpga_busy);
   std::printf("  board        %s at %.3f MHz, %u banks, %llu passes, %.4g MB over PCI\n", b.board.device.profile.c_str(),
@@ -266,13 +279,22 @@ pipeline::Arithmetic parse_arith_option(const std::string& text) {
 void check_run_options(const CLI::App& cmd, const RunOptions& o) {
   if (o.impl != Impl::board) {
     refuse_given(cmd, {"--device", "--lanes", "--banks", "--concurrent", "--cards", "--card-split", "--card-bus",
-                       "--lanes-compute", "--host", "--trace", "--trace-steps", "--vcd"},
+                       "--lanes-compute", "--host", "--trace", "--trace-steps", "--vcd", "--cpu-share", "--cpu-cores"},
                  "applies to --impl board only (the simulated RC2000); this run answers visibility in software");
   } else {
     refuse_given(cmd, {"--visibility"}, "applies to --impl software only: with --impl board the board's lanes answer "
                                         "visibility (bit-exact at --bits, or --arith float:E,M)");
   }
   if (o.board.cards == 1) refuse_given(cmd, {"--card-split", "--card-bus"}, "applies only with more than one card (--cards)");
+  if (o.cpu_share.empty()) refuse_given(cmd, {"--cpu-cores"}, "applies only with --cpu-share (the CPU/FPGA split)");
+  if (!o.cpu_share.empty()) {
+    if (o.board.cards > 1) refuse_option("--cpu-share", "a CPU/FPGA split drives one card (--cards " + std::to_string(o.board.cards.value()) + ")");
+    try {
+      (void)parse_cpu_split(o.cpu_share, o.cpu_cores);
+    } catch (const std::invalid_argument& e) {
+      throw CLI::ValidationError(e.what());  // names --cpu-share or --cpu-cores and the limits
+    }
+  }
   if (o.arith.is_float()) {
     refuse_given(cmd, {"--bits", "--visibility"},
                  "does not apply with --arith " + o.arith.name() +
@@ -363,6 +385,13 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--banks", b.banks, "Board: memory banks, 1..64 (default: the profile's)")->check(CLI::Range(1, 64))
       ->capture_default_str();
   cmd->add_flag("--concurrent", b.concurrent, "Board: form factors while the FPGA works (paper sec 4.3)");
+  cmd->add_option("--cpu-share", options->cpu_share,
+                  "Board: the CPU/FPGA split, the fraction 0..1 of each step's segments the host CPU tests in software "
+                  "while the board tests the rest, or 'balanced' (per step, both finish together; docs/board.md, "
+                  "CPU/FPGA split)");
+  cmd->add_option("--cpu-cores", options->cpu_cores,
+                  "Board, with --cpu-share: 1 (the solver's processor, while the board works) or 2 (the second Athlon)")
+      ->capture_default_str();
   add_count_option(*cmd, "--cards", b.cards,
                    "Board: identical RC2000 cards working on the scene at once (paper sec 6; docs/board.md, Several cards)");
   add_choice_option(*cmd, "--card-split", b.card_split,

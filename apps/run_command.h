@@ -40,6 +40,8 @@ struct RunOptions {
   // --impl board: device, host, lanes, banks, cards and their split and bus, --vcd (board.vcd_path:
   // where the VCD ends up), parsed straight into it.
   BoardRunOptions board;
+  std::string cpu_share;             // --cpu-share: empty (off), a fraction 0..1 or "balanced" (board.cpu_split)
+  unsigned cpu_cores = 1;            // --cpu-cores: 1 or 2
   std::string trace_path;            // --trace: the trace.json to write (board runs)
   std::string trace_steps = "1:3";   // A:B, steps written to the trace
   std::string out_dir = "out";

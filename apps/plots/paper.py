@@ -57,6 +57,38 @@ def table2(rows, out):
     entry.save(fig, os.path.join(out, "table2.png"), dpi=110)
 
 
+def table2_intervals(rows, out):
+    """The withheld columns with their prediction intervals (variants, mechanisms, calibration errors)."""
+    withheld = [r for r in rows if r.get("interval_low_seconds")]
+    if not withheld:
+        return
+    scenes = []
+    for r in withheld:
+        key = f'{r["faces"]}/{r["patches"]}'
+        if key not in scenes:
+            scenes.append(key)
+    fig, ax = plt.subplots(figsize=(9, 4.5))
+    for k, impl in enumerate(["two_pipes", "concurrent"]):
+        cells = [r for r in withheld if r["implementation"] == impl]
+        xs = [scenes.index(f'{r["faces"]}/{r["patches"]}') + (k - 0.5) * 0.3 for r in cells]
+        model = [float(r["seconds"]) for r in cells]
+        lows = [float(r["interval_low_seconds"]) for r in cells]
+        highs = [float(r["interval_high_seconds"]) for r in cells]
+        ax.errorbar(xs, model, yerr=[[m - lo for m, lo in zip(model, lows)], [hi - m for m, hi in zip(model, highs)]],
+                    fmt="o", color=COLOURS[impl], ecolor=COLOURS[impl], elinewidth=2, capsize=4,
+                    label=f"{impl}: prediction and interval")
+    ax.set_yscale("log")
+    ax.set_xticks(range(len(scenes)))
+    ax.set_xticklabels(scenes)
+    ax.set_xlabel("faces / patches")
+    ax.set_ylabel("seconds")
+    ax.set_title("Table 2's withheld columns: predictions with their intervals")
+    ax.legend(fontsize=8)
+    ax.grid(True, axis="y", which="both", lw=0.3)
+    fig.tight_layout()
+    entry.save(fig, os.path.join(out, "table2-intervals.png"), dpi=110)
+
+
 def estimates(rows, out):
     labels = [f'{r["estimate"]}, {r["device"]}' + (f' ({r["lanes"]} lanes)' if r["lanes"] != "0" else "")
               + f' [{r["rule"]}]' for r in rows]
@@ -83,6 +115,7 @@ def estimates(rows, out):
 def main(csv_path, out):
     rows = list(csv.DictReader(open(csv_path)))
     table2([r for r in rows if r["record"] == "scene"], out)
+    table2_intervals([r for r in rows if r["record"] == "scene"], out)
     estimates([r for r in rows if r["record"] == "estimate"], out)
     # The rooflines per device (rc2000sim paper writes roofline.csv beside paper.csv; roofline.py).
     beside = os.path.join(os.path.dirname(csv_path), "roofline.csv")

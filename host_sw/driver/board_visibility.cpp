@@ -34,6 +34,9 @@ BoardVisibility::BoardVisibility(BoardPorts ports, HostCpuModel& cpu, BoardVisib
   if (options_.oracle != nullptr && ports_.board.model != board::WrapperModel::fast) {
     throw std::invalid_argument("a visibility oracle needs the fast wrapper model (the cycle-level one always computes)");
   }
+  if (options_.cpu_split.on() && options_.oracle == nullptr && options_.cpu_kernel == nullptr) {
+    throw std::invalid_argument("a CPU/FPGA split needs a host kernel bit-identical to the lanes (cpu_kernel or oracle)");
+  }
   pio_extension_.access_bytes = word_bytes_;
   pio_extension_.read_round_trip = cpu_.profile().driver_model.pio_read_round_trip;
 }
@@ -195,6 +198,7 @@ void BoardVisibility::load_triangles(const std::vector<Triangle>& faces) {
     for (const Triangle& t : faces) faces_.push_back(pipeline::make_face_record(t, bits));  // charged per upload
   }
   if (options_.oracle != nullptr) options_.oracle->load_faces(faces, sheets());
+  if (options_.cpu_kernel != nullptr && options_.cpu_kernel != options_.oracle) options_.cpu_kernel->load_faces(faces, sheets());
   stats_.face_sets = faces_.empty() ? 0 : (faces_.size() + faces_per_set_ - 1) / faces_per_set_;
   resident_set_ = -1;
   if (stats_.face_sets == 1) upload_faces(0);  // resident for the whole run
@@ -258,7 +262,6 @@ void BoardVisibility::order_segments(const SegmentBatch& batch) {
   }
   start_ = end_point_code(batch.start);
   set_source(batch.source_face);
-  charge_end_points(rays_);
 }
 
 // SOURCE_FACE and SOURCE_FACES: the shooter's sheet (scenes/sheets.h), or no face.
@@ -294,17 +297,22 @@ void BoardVisibility::plan_passes() {
 void BoardVisibility::submit(const SegmentBatch& batch) {
   timing_only_ = false;
   batch.check();
-  if (batch.size() > rays_per_batch_ && !options_.allow_batching) {
-    throw std::invalid_argument("a step has " + std::to_string(batch.size()) + " segments but one batch holds " +
+  const std::size_t board_rays = batch.size() - cpu_segments_of(batch.size());
+  if (board_rays > rays_per_batch_ && !options_.allow_batching) {
+    throw std::invalid_argument("a step has " + std::to_string(board_rays) + " segments but one batch holds " +
                                 std::to_string(rays_per_batch_) + " (ray and result banks of " +
                                 std::to_string(ports_.board.bank_capacity_bytes) +
                                 " bytes); allow batching to split them");
   }
-  if (dual_cpu()) cpu_.fork_second_cpu();
+  begin_step(batch.size());
   order_segments(batch);
   blocked_.assign(rays_, 0);
   if (options_.oracle != nullptr) ask_oracle(batch);
+  answer_cpu_part(batch);
+  rays_ = total_rays_ - cpu_rays_;
+  charge_end_points(rays_);
   run_step();
+  if (!options_.concurrent) cpu_.join_second_cpu();  // the serial driver returns with every answer
 }
 
 // Timing replay: a step of `segments` segments with blank data. The rays are "grouped" trivially,
@@ -313,8 +321,9 @@ void BoardVisibility::submit_timing_only(std::size_t segments, int source_face) 
   if (ports_.board.model != board::WrapperModel::fast) {
     throw std::invalid_argument("timing replay needs the fast wrapper model");
   }
-  if (!timing_only_ || rays_ != segments) {  // a replay's steps mostly have the same size: set up once
-    rays_ = segments;
+  begin_step(segments);
+  if (!timing_only_ || rays_ != segments - cpu_rays_) {  // a replay's steps mostly have the same size: set up once
+    rays_ = segments - cpu_rays_;
     order_.resize(rays_);
     std::iota(order_.begin(), order_.end(), std::size_t{0});
     end_faces_.assign(rays_, 0);
@@ -322,10 +331,10 @@ void BoardVisibility::submit_timing_only(std::size_t segments, int source_face) 
   }
   start_ = {0, 0, 0};
   set_source(source_face);
-  if (dual_cpu()) cpu_.fork_second_cpu();
   charge_end_points(rays_);
   timing_only_ = true;
   run_step();
+  if (!options_.concurrent) cpu_.join_second_cpu();
 }
 
 void BoardVisibility::collect_timing_only() {
@@ -337,25 +346,27 @@ void BoardVisibility::run_step() {
   if (rays_ == 0 || faces_.empty()) {
     passes_.clear();
     next_pass_ = 0;
+    if (options_.cpu_split.cores == 1) charge_cpu_part();
     return;
   }
   plan_passes();
-  if (options_.concurrent) {
-    start_pass(passes_[0]);  // the rest in collect(), after the host's form factors
-    return;
-  }
-  for (const Pass& p : passes_) {
-    start_pass(p);
-    finish_pass(p);
+  start_pass(passes_[0]);
+  if (options_.cpu_split.cores == 1) charge_cpu_part();  // while the board works its first pass
+  if (options_.concurrent) return;  // the rest in collect(), after the host's form factors
+  finish_pass(passes_[0]);
+  for (std::size_t p = 1; p < passes_.size(); ++p) {
+    start_pass(passes_[p]);
+    finish_pass(passes_[p]);
   }
   next_pass_ = passes_.size();
+  board_part_done();
 }
 
 void BoardVisibility::collect(std::vector<std::uint8_t>& blocked) {
   finish_step();
   cpu_.join_second_cpu();
-  blocked.assign(rays_, 0);
-  for (std::size_t i = 0; i < rays_; ++i) blocked[order_[i]] = blocked_[i];
+  blocked.assign(total_rays_, 0);
+  for (std::size_t i = 0; i < total_rays_; ++i) blocked[order_[i]] = blocked_[i];
 }
 
 void BoardVisibility::finish_step() {
@@ -365,6 +376,7 @@ void BoardVisibility::finish_step() {
       start_pass(passes_[next_pass_]);
       finish_pass(passes_[next_pass_]);
     }
+    board_part_done();
   }
 }
 

@@ -32,6 +32,7 @@
 #include "board/wrapper_base.h"
 #include "tlm/dma_engine.h"
 #include "tlm/irq_line.h"
+#include "host_sw/driver/cpu_split.h"
 #include "host_sw/driver/host_cpu_model.h"
 #include "host_sw/driver/timing_replay_target.h"
 #include "host_sw/radiosity/visibility.h"
@@ -68,6 +69,11 @@ struct BoardVisibilityOptions {
   // "card 1 dma", ...), and turns at the bus (BusTurn). Neither changes a time of one card alone.
   std::string trace_prefix;
   BusTurn* bus_turn = nullptr;
+  // The CPU/FPGA split (host_sw/driver/cpu_split.h). Its answers come from `oracle` when set, else
+  // from `cpu_kernel`: a host backend bit-identical to the lanes (fixed point at the board's width,
+  // or the float lanes' format), which the platform provides.
+  CpuSplit cpu_split;
+  VisibilityBackend* cpu_kernel = nullptr;
 };
 
 // Passes whose stream was bounded by one term of the pass time (PassRecord::limit: "lanes",
@@ -94,6 +100,7 @@ struct BoardDriverStats {
   sc_core::sc_time fpga_busy = sc_core::SC_ZERO_TIME;  // sum of pass durations
   sc_core::sc_time overlap = sc_core::SC_ZERO_TIME;    // host compute during passes
   std::map<std::string, PassLimitTally> limits;        // by PassRecord::limit (ordered: deterministic reports)
+  std::uint64_t cpu_segments = 0, cpu_tests = 0;       // the CPU/FPGA split's part (segments x faces)
 };
 
 // What the driver needs from the wrapper beside PCI, wired by the platform (host_sw/platform/board_run.h):
@@ -144,6 +151,15 @@ class BoardVisibility : public VisibilityBackend, public TimingReplayTarget {
     bool first_of_batch = false, last_of_batch = false;
   };
 
+  // The CPU/FPGA split of a step of `segments`: how many the CPU tests, its charge (on the second
+  // processor at once, or on this one after the first START), and the board part's costs measured
+  // for the next balanced step.
+  std::size_t cpu_segments_of(std::size_t segments) const;
+  void begin_step(std::size_t segments);
+  void charge_cpu_part();
+  void answer_cpu_part(const SegmentBatch& batch);
+  void board_part_done();
+  bool second_cpu() const;  // this step forks the second processor
   void order_segments(const SegmentBatch& batch);
   pipeline::FixedVec3 end_point_code(const Vec3& p) const;  // codes (float lanes: bit patterns)
   void run_step();     // the step's passes (serial) or its first pass (concurrent)
@@ -207,8 +223,12 @@ class BoardVisibility : public VisibilityBackend, public TimingReplayTarget {
   std::vector<pipeline::FaceRecord> faces_;  // as the face bank's words: codes (float lanes: bit patterns)
   long resident_set_ = -1;
 
-  // The submitted batch, in end-face order.
+  // The submitted batch, in end-face order: the board tests the first rays_, the CPU the cpu_rays_
+  // after them (total_rays_ in all).
   std::size_t rays_ = 0;
+  std::size_t total_rays_ = 0, cpu_rays_ = 0;
+  sc_core::sc_time step_start_ = sc_core::SC_ZERO_TIME, fpga_before_ = sc_core::SC_ZERO_TIME;
+  double board_seconds_per_segment_ = 0, pass_seconds_per_segment_ = 0;  // measured; 0 until then
   std::vector<std::size_t> order_;  // sorted position -> segment index of the batch
   bool identity_order_ = true;
   std::vector<int> end_faces_;

@@ -40,12 +40,12 @@ const char* to_string(DriverModel::Overlap overlap) { return kOverlaps[static_ca
 
 std::string DriverModel::name() const {
   return std::string(to_string(cost_unit)) + "/" + to_string(transfer) + "/" + to_string(face_upload) + "/" +
-         to_string(overlap);
+         to_string(overlap) + (cpu_split.on() ? "/cpu " + cpu_split.name() : "");
 }
 
 bool DriverModel::operator==(const DriverModel& o) const {
   return cost_unit == o.cost_unit && transfer == o.transfer && face_upload == o.face_upload && overlap == o.overlap &&
-         pio_read_round_trip == o.pio_read_round_trip;
+         pio_read_round_trip == o.pio_read_round_trip && cpu_split == o.cpu_split;
 }
 
 namespace {
@@ -63,6 +63,21 @@ Enum choice(const profiles::ProfileReader& r, const std::string& field, const ch
   r.fail(field + ".value", "'" + value + "' is not one of " + allowed);
 }
 
+constexpr const char* kCpuBalances[] = {"fixed", "balanced"};
+
+// Optional, all three or none: a profile from before the split has none and means "off".
+CpuSplit read_cpu_split(const profiles::ProfileReader& r) {
+  const bool any = r.has("driver_model.cpu_share") || r.has("driver_model.cpu_balance") || r.has("driver_model.cpu_cores");
+  if (!any) return {};
+  CpuSplit split;
+  split.share = r.number("driver_model.cpu_share", 0, 1);
+  const bool balanced = choice<int>(r, "driver_model.cpu_balance", kCpuBalances) == 1;
+  split.cores = static_cast<unsigned>(r.number("driver_model.cpu_cores", 1, 2, true));
+  split.mode = balanced ? CpuSplit::Mode::balanced : split.share > 0 ? CpuSplit::Mode::fixed : CpuSplit::Mode::off;
+  if (split.mode == CpuSplit::Mode::balanced) split.share = 0;
+  return split;
+}
+
 DriverModel read_driver_model(const profiles::ProfileReader& r) {
   DriverModel m;
   m.cost_unit = choice<DriverModel::CostUnit>(r, "driver_model.cost_unit", kCostUnits);
@@ -71,6 +86,7 @@ DriverModel read_driver_model(const profiles::ProfileReader& r) {
   m.overlap = choice<DriverModel::Overlap>(r, "driver_model.overlap", kOverlaps);
   m.pio_read_round_trip =
       sc_core::sc_time(r.number("driver_model.pio_read_round_trip_seconds", 0, 1e-3), sc_core::SC_SEC);
+  m.cpu_split = read_cpu_split(r);
   return m;
 }
 
@@ -78,10 +94,15 @@ DriverModel read_driver_model(const profiles::ProfileReader& r) {
 
 profiles::ProfileDocument with_driver_model(const profiles::ProfileDocument& profile, const DriverModel& model,
                                             const std::string& source) {
-  return profile.with_field("driver_model.cost_unit", to_string(model.cost_unit), source)
-      .with_field("driver_model.transfer", to_string(model.transfer), source)
-      .with_field("driver_model.face_upload", to_string(model.face_upload), source)
-      .with_field("driver_model.overlap", to_string(model.overlap), source);
+  profiles::ProfileDocument d = profile.with_field("driver_model.cost_unit", to_string(model.cost_unit), source)
+                                    .with_field("driver_model.transfer", to_string(model.transfer), source)
+                                    .with_field("driver_model.face_upload", to_string(model.face_upload), source)
+                                    .with_field("driver_model.overlap", to_string(model.overlap), source);
+  if (!model.cpu_split.on() && !profile.is_sourced("driver_model.cpu_share")) return d;
+  const char* balance = kCpuBalances[model.cpu_split.mode == CpuSplit::Mode::balanced ? 1 : 0];
+  return d.with_field("driver_model.cpu_share", model.cpu_split.share, source)
+      .with_field("driver_model.cpu_balance", std::string(balance), source)
+      .with_field("driver_model.cpu_cores", static_cast<std::int64_t>(model.cpu_split.cores), source);
 }
 
 HostProfile with_driver_model(const HostProfile& base, const DriverModel& model) {
@@ -145,16 +166,29 @@ void HostCpuModel::charge(HostWork work, std::uint64_t count) {
   const sc_core::sc_time cost = sc_core::sc_time::from_value(profile_.work[k].value() * count);
   counts_[k] += count;
   times_[k] += cost;
-  if (forked_ && work == HostWork::FormFactor) {  // on the second processor, beside this one
-    const sc_core::sc_time from = second_cpu_end_;
-    second_cpu_end_ += cost;
-    second_cpu_compute_ += cost;
-    intervals_.emplace_back(from, second_cpu_end_);
-    if (trace_ != nullptr && trace_->wants(step())) trace_->complete("host cpu 1", to_string(work), from, second_cpu_end_);
+  if (forked_ && second_cpu_form_factors_ && work == HostWork::FormFactor) {  // on the second processor
+    on_second_cpu(work, cost);
     return;
   }
   advance(cost, [work] { return to_string(work); }, true);
   if (work == HostWork::Step) steps_done_ += static_cast<int>(count);
+}
+
+void HostCpuModel::charge_second_cpu(HostWork work, std::uint64_t count) {
+  if (!forked_) throw std::logic_error("work for the second processor outside a fork");
+  const int k = static_cast<int>(work);
+  const sc_core::sc_time cost = sc_core::sc_time::from_value(profile_.work[k].value() * count);
+  counts_[k] += count;
+  times_[k] += cost;
+  on_second_cpu(work, cost);
+}
+
+void HostCpuModel::on_second_cpu(HostWork work, const sc_core::sc_time& cost) {
+  const sc_core::sc_time from = second_cpu_end_;
+  second_cpu_end_ += cost;
+  second_cpu_compute_ += cost;
+  intervals_.emplace_back(from, second_cpu_end_);
+  if (trace_ != nullptr && trace_->wants(step())) trace_->complete("host cpu 1", to_string(work), from, second_cpu_end_);
 }
 
 void HostCpuModel::charge(DriverWork work, std::uint64_t count) {
@@ -167,9 +201,10 @@ void HostCpuModel::charge(DriverWork work, std::uint64_t count) {
 
 void HostCpuModel::sync() { keeper_.sync(); }
 
-void HostCpuModel::fork_second_cpu() {
+void HostCpuModel::fork_second_cpu(bool form_factors) {
   if (forked_) throw std::logic_error("the second processor is already working");
   forked_ = true;
+  second_cpu_form_factors_ = form_factors;
   second_cpu_end_ = now();
 }
 

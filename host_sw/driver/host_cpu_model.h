@@ -14,6 +14,7 @@
 #include <systemc>
 #include <tlm_utils/tlm_quantumkeeper.h>
 
+#include "host_sw/driver/cpu_split.h"
 #include "host_sw/profiles/profile_document.h"
 #include "host_sw/radiosity/host_cost.h"
 
@@ -56,8 +57,12 @@ struct DriverModel {
   // dual Athlon MP host (sec 5.4) from the moment the step's segments are handed to the driver.
   enum class Overlap { FormFactors, DualCpu } overlap = Overlap::FormFactors;
   sc_core::sc_time pio_read_round_trip = sc_core::SC_ZERO_TIME;
+  // The CPU/FPGA split (host_sw/driver/cpu_split.h): optional driver_model.cpu_share (0..1),
+  // cpu_balance ("fixed" or "balanced") and cpu_cores (1 or 2); absent or a fixed share of 0: off.
+  // A study sweeps them as profile fields ("host.cpu_share"); `run --cpu-share` overrides them.
+  CpuSplit cpu_split;
 
-  std::string name() const;  // e.g. "per_word/pio/every_pass/form_factors"
+  std::string name() const;  // e.g. "per_word/pio/every_pass/form_factors" (+ "/cpu 0.25 on 2 cpus" when split)
   bool operator==(const DriverModel& other) const;
 };
 const char* to_string(DriverModel::CostUnit unit);      // "per_segment", "per_word"
@@ -101,8 +106,12 @@ class HostCpuModel : public HostCostSink {
   // DriverModel::Overlap::DualCpu: from fork_second_cpu() until join_second_cpu(), form factors are
   // computed on the second processor, starting at the fork; the join moves this processor's time
   // to the later of the two. Outside a fork every charge is on this processor.
-  void fork_second_cpu();
+  // form_factors false: only charge_second_cpu() goes to the second processor (a CPU/FPGA split,
+  // host_sw/driver/cpu_split.h, without the dual_cpu overlap).
+  void fork_second_cpu(bool form_factors = true);
   void join_second_cpu();
+  // Within a fork: `work` on the second processor, after what it already does.
+  void charge_second_cpu(HostWork work, std::uint64_t count);
   // A host that talks to nothing (the software-only implementation) need not yield at every
   // quantum: its local time then only grows until sync() is called.
   void set_free_running(bool free_running) { free_running_ = free_running; }
@@ -137,6 +146,7 @@ class HostCpuModel : public HostCostSink {
   sc_core::sc_time driver_time() const;   // all DriverWork
 
  private:
+  void on_second_cpu(HostWork work, const sc_core::sc_time& cost);
   template <class Name>
   void advance(const sc_core::sc_time& cost, Name&& name, bool compute);
 
@@ -148,6 +158,7 @@ class HostCpuModel : public HostCostSink {
   std::array<sc_core::sc_time, kDriverWorkKinds> driver_times_{};
   int steps_done_ = 0;
   bool forked_ = false;
+  bool second_cpu_form_factors_ = true;
   sc_core::sc_time second_cpu_end_ = sc_core::SC_ZERO_TIME;  // absolute time the second processor is busy until
   sc_core::sc_time second_cpu_compute_ = sc_core::SC_ZERO_TIME, second_cpu_wait_ = sc_core::SC_ZERO_TIME;
   bool free_running_ = false;

@@ -124,7 +124,8 @@ RunReport BoardSystem::report(double wall_seconds) const {
   r.time.waiting = seconds(m_multi ? m_multi->waiting() : d.waiting);
   r.time.fpga_busy = busy;
   r.time.overlap = seconds(m_multi ? m_multi->overlap() : d.overlap);
-  r.time.second_cpu = m_setup.driver.concurrent && m_setup.host.driver_model.overlap == DriverModel::Overlap::DualCpu;
+  r.time.second_cpu = (m_setup.driver.concurrent && m_setup.host.driver_model.overlap == DriverModel::Overlap::DualCpu) ||
+                      (m_setup.driver.cpu_split.on() && m_setup.driver.cpu_split.cores == 2);
   if (r.time.second_cpu) {
     r.time.second_cpu_compute = seconds(m_cpu.second_cpu_compute());
     r.time.second_cpu_wait = seconds(m_cpu.second_cpu_wait());

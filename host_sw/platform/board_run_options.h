@@ -28,6 +28,10 @@ struct BoardRunOptions {
   // The oracle, if any, must then be the `float:E,M` software backend of the same format.
   std::optional<pipeline::FloatFormat> float_format;
   bool concurrent = false;              // paper sec 4.3
+  // The CPU/FPGA split (host_sw/driver/cpu_split.h; one card only); off: the host profile's
+  // (driver_model.cpu_*, usually off). Its answers come from the oracle, if any, else from a host
+  // kernel at the lanes' width or float format that the system makes.
+  CpuSplit cpu_split;
   // configs/hosts/NAME.json, or a path. The command's default: the profile fitted to the paper's
   // measurements (docs/calibration.md), so a library call gives `rc2000sim run --impl board`'s times.
   std::string host = "athlon-mp-2600-calibrated";

@@ -21,6 +21,11 @@ BoardSetup make_board_setup(const BoardRunOptions& o) {
   s.driver.concurrent = o.concurrent;
   s.driver.allow_batching = o.allow_batching;
   s.driver.oracle = o.oracle;
+  s.driver.cpu_split = o.cpu_split.on() ? o.cpu_split : s.host.driver_model.cpu_split;  // the option, else the profile's
+  if (s.driver.cpu_split.on() && o.cards > 1) {
+    throw std::invalid_argument("--cpu-share: a CPU/FPGA split drives one card (got " +
+                                std::to_string(o.cards.value()) + " cards)");
+  }
   if (o.trace) {
     s.trace_first_step = o.trace_first_step;
     s.trace_last_step = o.trace_last_step;

@@ -7,6 +7,7 @@
 #include "board/fast_wrapper.h"
 #include "host_sw/platform/software_system.h"
 #include "host_sw/platform/work_replay.h"
+#include "host_sw/visibility/visibility_factory.h"
 
 namespace rc {
 
@@ -61,7 +62,13 @@ BoardSystem::BoardSystem(const sc_core::sc_module_name& name, const Scene& scene
     return ports;
   };
   if (cards() == 1) {
-    m_visibility = std::make_unique<BoardVisibility>(ports_of(board, host_out), m_cpu, setup.driver,
+    BoardVisibilityOptions driver = setup.driver;
+    if (driver.cpu_split.on() && driver.oracle == nullptr && driver.cpu_kernel == nullptr) {
+      const board::BankLayout& L = board.layout();
+      m_cpu_kernel = make_software_visibility(L.float_format ? L.float_format->to_string() : "fixed", L.bits);
+      driver.cpu_kernel = m_cpu_kernel.get();
+    }
+    m_visibility = std::make_unique<BoardVisibility>(ports_of(board, host_out), m_cpu, driver,
                                                      tracing ? &m_trace : nullptr);
     board.wrapper().on_pass([this](const board::PassRecord& r) { m_visibility->pass_finished(r); });
   } else {

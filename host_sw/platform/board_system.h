@@ -64,6 +64,7 @@ class BoardSystem : public sc_core::sc_module {
   BoardSetup m_setup;
   HostCpuModel m_cpu;
   TraceWriter m_trace;
+  std::unique_ptr<VisibilityBackend> m_cpu_kernel;  // the CPU/FPGA split's answers, when no oracle gives them
   std::unique_ptr<BoardVisibility> m_visibility;  // one card
   std::unique_ptr<MultiCardVisibility> m_multi;   // several
   std::vector<std::unique_ptr<tlm_utils::simple_initiator_socket<BoardSystem>>> m_card_out;  // cards 1..

@@ -21,6 +21,8 @@ std::vector<VariantRecord> read_variants_file(const std::string& path) {
       r.fit_rms = v.at("fit_rms_relative_residual").get<double>();
       r.chosen = v.at("chosen").get<bool>();
       r.in_spread = v.at("in_spread").get<bool>();
+      for (const auto& o : v.at("profile").at("calibration").at("observations"))
+        r.left_out_errors.push_back(o.at("left_out_relative_error").get<double>());
       out.push_back(std::move(r));
     }
   } catch (const nlohmann::json::exception& e) {

@@ -18,6 +18,9 @@ struct VariantRecord {
   double fit_rms = 0;        // fit_rms_relative_residual
   bool chosen = false;
   bool in_spread = false;
+  // Each observation's leave-one-out relative error (profile.calibration.observations[].left_out_relative_error):
+  // the calibration's own uncertainty behind the paper's prediction intervals.
+  std::vector<double> left_out_errors;
 };
 
 // Throws std::invalid_argument naming the file and the problem (a missing key, a wrong type, a schema

@@ -61,6 +61,7 @@ std::vector<CalibratedVariant> load_calibrated_variants(const std::string& path)
     c.fit_rms = v.fit_rms;
     c.chosen = v.chosen;
     c.in_spread = v.in_spread;
+    c.left_out_errors = v.left_out_errors;
     out.push_back(std::move(c));
   }
   if (out.empty()) throw std::invalid_argument(path + ": no variants");
@@ -70,6 +71,12 @@ std::vector<CalibratedVariant> load_calibrated_variants(const std::string& path)
     const std::string where = path + ": variants[" + std::to_string(i) + "]";
     if (!(std::isfinite(out[i].cv_error) && out[i].cv_error >= 0 && std::isfinite(out[i].fit_rms) && out[i].fit_rms >= 0)) {
       throw std::invalid_argument(where + ": cross-validated and fitted errors must be finite and at least 0");
+    }
+    for (double e : out[i].left_out_errors) {
+      if (!(std::isfinite(e) && e > -1)) throw std::invalid_argument(where + ": a left_out_relative_error must be finite and above -1");
+    }
+    if (out[i].in_spread && out[i].left_out_errors.size() < 2) {
+      throw std::invalid_argument(where + ": profile.calibration.observations needs at least two left-out errors");
     }
     if (out[i].chosen && !out[i].in_spread) throw std::invalid_argument(where + ": the chosen variant must be in the spread");
     chosen += out[i].chosen ? 1 : 0;

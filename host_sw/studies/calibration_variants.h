@@ -45,6 +45,9 @@ struct CalibratedVariant {
   double fit_rms = 0;        // rms relative residual of the fit to all the runs
   bool chosen = false;       // the default (least CV error)
   bool in_spread = false;    // within kVariantTolerance of the chosen one
+  // Each calibration run's left-out relative error, (prediction - measured) / measured, from the
+  // profile's calibration record (the prediction intervals' calibration part).
+  std::vector<double> left_out_errors;
 };
 
 // The variants file (schema rc2000sim.host-variants/1, written by calibration_variants_json.h) read

@@ -1,12 +1,20 @@
 #include "host_sw/studies/paper_prediction.h"
 
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
 #include <cstdint>
+#include <tuple>
 #include <utility>
 
 namespace rc {
 
 namespace {
+
+// The CPU/FPGA splits the paper's words allow for its concurrent column ("concurrent execution of
+// hardware and software elements", sec 1 and 4; the dual-processor host, sec 5.4): software tests
+// balanced against the board on the solver's processor or on the second Athlon.
+std::vector<CpuSplit> split_mechanisms() { return {parse_cpu_split("balanced", 1), parse_cpu_split("balanced", 2)}; }
 
 // A spread case that is the main column's own case (the default profile itself) is not simulated
 // twice: its outcome is the main one (main_index).
@@ -32,6 +40,15 @@ std::vector<SpreadCase> spread_cases(const std::vector<PaperScene>& scenes, cons
           }
           out.push_back(spread);
         }
+        for (const CpuSplit& split : split_mechanisms()) {  // the concurrent column only
+          DriverModel with_split = m;
+          with_split.cpu_split = split;
+          TimingCase c = paper_timing_case(scenes[i], PaperImplementation::Concurrent, host.name);
+          c.label += " " + with_split.name();
+          c.board.host_profile = with_driver_model(v.profile, with_split);
+          out.push_back({i, static_cast<int>(PaperImplementation::Concurrent), with_split.name(), true, cases.size()});
+          cases.push_back(c);
+        }
       }
     }
   }
@@ -48,12 +65,29 @@ TimingCase bank_variant_case(const PaperScene& s, const BankVariant& v, const st
 
 }  // namespace
 
-std::vector<std::pair<std::string, double>> PaperPrediction::spread_of(std::size_t scene, int impl) const {
+std::vector<std::pair<std::string, double>> PaperPrediction::spread_of(std::size_t scene, int impl, bool mechanisms) const {
   std::vector<std::pair<std::string, double>> out;
   for (const SpreadCase& s : spread) {
-    if (s.scene == scene && s.implementation == impl) out.emplace_back(s.driver_model, outcomes[s.index()].simulated_seconds);
+    if (s.scene == scene && s.implementation == impl && s.mechanism == mechanisms)
+      out.emplace_back(s.driver_model, outcomes[s.index()].simulated_seconds);
   }
   return out;
+}
+
+std::pair<double, double> prediction_interval(double fastest, double slowest, double error_low, double error_high) {
+  if (!(error_low > -1 && error_low <= error_high && fastest <= slowest)) {
+    throw std::invalid_argument("prediction_interval: needs -1 < error_low <= error_high and fastest <= slowest");
+  }
+  return {fastest / (1 + error_high), slowest / (1 + error_low)};
+}
+
+double quantile(std::vector<double> values, double q) {
+  if (values.empty()) throw std::invalid_argument("a quantile of no values");
+  std::sort(values.begin(), values.end());
+  const double at = q * static_cast<double>(values.size() - 1);
+  const auto below = static_cast<std::size_t>(std::floor(at));
+  const std::size_t above = std::min(below + 1, values.size() - 1);
+  return values[below] + (at - static_cast<double>(below)) * (values[above] - values[below]);
 }
 
 double PaperTableRow::paper_seconds() const {
@@ -84,6 +118,15 @@ std::vector<PaperTableRow> table_rows(const PaperPrediction& r) {
           row.spread_min_seconds = std::min(row.spread_min_seconds, seconds);
           row.spread_max_seconds = std::max(row.spread_max_seconds, seconds);
         }
+        row.mechanisms = r.spread_of(i, impl, true);
+        row.range_min_seconds = row.spread_min_seconds;
+        row.range_max_seconds = row.spread_max_seconds;
+        for (const auto& [model, seconds] : row.mechanisms) {
+          row.range_min_seconds = std::min(row.range_min_seconds, seconds);
+          row.range_max_seconds = std::max(row.range_max_seconds, seconds);
+        }
+        std::tie(row.interval_low_seconds, row.interval_high_seconds) =
+            prediction_interval(row.range_min_seconds, row.range_max_seconds, r.left_out_error_low, r.left_out_error_high);
       }
       rows.push_back(std::move(row));
     }
@@ -144,6 +187,12 @@ PaperPrediction predict_paper(const std::vector<PaperScene>& scenes, const std::
     r.searched = plan_sec56_searches(host_name, s.scene.patches.size(), s.scene.faces.size());
     add_sec56_cases(r.searched, s, cases);
   }
+  std::vector<double> errors;
+  for (const CalibratedVariant& v : variants)
+    if (v.in_spread) errors.insert(errors.end(), v.left_out_errors.begin(), v.left_out_errors.end());
+  r.left_out_errors = errors.size();
+  r.left_out_error_low = quantile(errors, kIntervalQuantiles[0]);
+  r.left_out_error_high = quantile(errors, kIntervalQuantiles[1]);
   r.outcomes = run_timing_study(cases);
   if (workload) collect_sec56(r.searched, r.outcomes, scenes[*workload].row.steps);
   r.paper_rule = board::paper_rule_estimates(measured_peak_software_rate(rows));

@@ -20,11 +20,14 @@
 
 namespace rc {
 
-// One spread case: a withheld column of one scene under one variant.
+// One spread case: a withheld column of one scene under one variant. A mechanism case (`mechanism`)
+// is the concurrent column under a CPU/FPGA split (host_sw/driver/cpu_split.h) the paper's words
+// allow beside sec 4.3's form factors; it widens the range, not the variants' spread.
 struct SpreadCase {
   std::size_t scene = 0;
   int implementation = 0;
   std::string driver_model;
+  bool mechanism = false;
   std::size_t outcome_index = 0;             // in the study's outcomes
   std::size_t main_index = ~std::size_t{0};  // or the main column's outcome it equals (not simulated twice)
   std::size_t index() const { return main_index != ~std::size_t{0} ? main_index : outcome_index; }
@@ -47,8 +50,14 @@ struct PaperPrediction {
   // when the table has no such scene.
   std::vector<Sec56Search> searched;
 
-  // (driver model, seconds) of every spread case of (scene, implementation).
-  std::vector<std::pair<std::string, double>> spread_of(std::size_t scene, int impl) const;
+  // The calibration's own uncertainty: quantiles of the left-out relative errors, (prediction -
+  // measured) / measured, pooled over the in-spread variants (PredictionInterval).
+  double left_out_error_low = 0, left_out_error_high = 0;
+  std::size_t left_out_errors = 0;
+
+  // (driver model, seconds) of every spread case of (scene, implementation): the variants', or the
+  // extra mechanisms'.
+  std::vector<std::pair<std::string, double>> spread_of(std::size_t scene, int impl, bool mechanisms = false) const;
   const TimingOutcome& at(std::size_t scene, int impl) const { return outcomes[scene * kPaperImplementations + impl]; }
   const TimingOutcome& bank_variant(std::size_t v) const { return outcomes[scenes->size() * kPaperImplementations + v]; }
 };
@@ -64,10 +73,28 @@ struct PaperTableRow {
   int convergence_steps_ours = 0;
   std::vector<std::pair<std::string, double>> spread;  // (driver model, seconds); empty for calibration cells
   double spread_min_seconds = 0, spread_max_seconds = 0;
+  // The concurrent column under the CPU/FPGA split mechanisms (empty elsewhere), the range of every
+  // variant and mechanism, and the prediction interval: that range widened by the calibration's
+  // left-out error quantiles (a true time t with t (1 + e) = predicted).
+  std::vector<std::pair<std::string, double>> mechanisms;
+  double range_min_seconds = 0, range_max_seconds = 0;
+  double interval_low_seconds = 0, interval_high_seconds = 0;
 
   double paper_seconds() const;      // calibration cells only
   double relative_residual() const;  // calibration cells only
 };
+
+// How a prediction interval is made (docs/calibration.md, "Prediction intervals"): the quantiles
+// kIntervalQuantiles of the pooled left-out errors e of the in-spread variants bound the true time
+// at predicted / (1 + e); the interval runs from the fastest variant or mechanism over (1 + e_high)
+// to the slowest over (1 + e_low).
+inline constexpr double kIntervalQuantiles[2] = {0.1, 0.9};
+// The q-quantile of `values` (linear between order statistics; values need not be sorted).
+double quantile(std::vector<double> values, double q);
+
+// The interval of a cell whose variants and mechanisms predict `fastest`..`slowest` seconds, given the
+// left-out error quantiles e_low <= e_high (each above -1): {fastest / (1 + e_high), slowest / (1 + e_low)}.
+std::pair<double, double> prediction_interval(double fastest, double slowest, double error_low, double error_high);
 
 struct BankVariantRow {
   BankVariant variant;

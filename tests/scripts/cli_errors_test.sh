@@ -99,6 +99,12 @@ refused "$work/o" "--trace-steps applies only with --trace" "${board[@]}" --trac
 refused "$work/o" "--trace-steps expects FIRST:LAST, e.g. 1:3, got '1x:3'" \
   "${board[@]}" --trace "$work/t.json" --trace-steps 1x:3 --out "$work/o"
 refused "$work/o" "--card-split applies only with more than one card" "${board[@]}" --card-split faces --out "$work/o"
+refused "$work/o" "--cpu-share applies to --impl board only" run "${tiny[@]}" --cpu-share 0.5 --out "$work/o"
+refused "$work/o" "--cpu-cores applies only with --cpu-share" "${board[@]}" --cpu-cores 2 --out "$work/o"
+refused "$work/o" "--cpu-share: expected a fraction 0..1 or 'balanced', got '1.5'" "${board[@]}" --cpu-share 1.5 --out "$work/o"
+refused "$work/o" "--cpu-share: expected a fraction 0..1 or 'balanced', got 'half'" "${board[@]}" --cpu-share half --out "$work/o"
+refused "$work/o" "--cpu-cores: expected 1 or 2" "${board[@]}" --cpu-share balanced --cpu-cores 3 --out "$work/o"
+refused "$work/o" "--cpu-share a CPU/FPGA split drives one card" "${board[@]}" --cpu-share 0.5 --cards 2 --out "$work/o"
 refused "$work/o" "--patch-levels does not apply to bench" bench --patch-levels 2 --quiet --out "$work/o"
 refused "$work/o" "--patch-size does not apply to adaptive" adaptive --patch-size 0.1 --quiet --out "$work/o"
 refused "$work/o" "--out does not apply with --list-fields" sweep --list-fields --out "$work/o"

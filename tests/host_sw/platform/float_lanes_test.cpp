@@ -54,5 +54,29 @@ TEST(BoardSystem, FloatLanesBitIdenticalToCpuFloatPipeline) {
   EXPECT_EQ(computed.report().board.device.bits, 0);  // no fractional width
 }
 
+// The CPU/FPGA split with float lanes: the CPU's share is answered by the `float:E,M` kernel the
+// system makes (no oracle), bit for bit the lanes' arithmetic.
+TEST(BoardSystem, FloatLanesWithCpuSplitBitIdenticalToCpuFloatPipeline) {
+  const Scene scene = small_cornell_box();
+  const SolverOptions so = steps(20);
+  const pipeline::FloatFormat format(5, 10);
+  BoardRunOptions o;
+  o.lanes = 2;
+  o.float_format = format;
+  o.cpu_split = parse_cpu_split("0.4", 2);
+  BoardSystem fixed_share("fixed_share", scene, so, setup(o));
+  o.concurrent = true;
+  o.cpu_split = parse_cpu_split("balanced", 1);
+  BoardSystem balanced("balanced", scene, so, setup(o));
+  run_all({&fixed_share, &balanced});
+
+  const SolverResult cpu = cpu_float_pipeline(scene, so, format);
+  for (const BoardSystem* s : {&fixed_share, &balanced}) {
+    EXPECT_GT(s->driver().stats().cpu_segments, 0u);
+    EXPECT_EQ(s->result().blocked_segments, cpu.blocked_segments);
+    expect_identical(s->result().radiosity, cpu.radiosity);
+  }
+}
+
 }  // namespace
 }  // namespace rc::test

@@ -88,7 +88,8 @@ void expect_same_host_time(const HostCpuModel& a, const HostCpuModel& b) {
 
 // Timing replay (work_replay.h): no solver, no data, no lanes computing, and yet the same
 // simulated time to the picosecond as the real run, for the software implementation and for the
-// board in serial and concurrent mode, with and without batching, paper-faithful or culled.
+// board in serial and concurrent mode, with and without batching, paper-faithful or culled, and with
+// the CPU/FPGA split (fixed and balanced, one and two processors).
 TEST(TimingReplay, ReplayedWorkTakesExactlyTheRealRunsTime) {
   const Scene scene = small_cornell_box();
   SolverOptions faithful = steps(70);
@@ -112,6 +113,17 @@ TEST(TimingReplay, ReplayedWorkTakesExactlyTheRealRunsTime) {
       [] { BoardRunOptions v; v.lanes = 1; return v; }(),
       [] { BoardRunOptions v; v.lanes = 2; v.concurrent = true; return v; }(),
       [] { BoardRunOptions v; v.lanes = 2; v.concurrent = true; v.bank_capacity_bytes = 256; return v; }(),
+      // The CPU/FPGA split (docs/board.md): fixed on the second processor, balanced on each.
+      [] { BoardRunOptions v; v.lanes = 2; v.cpu_split = parse_cpu_split("0.3", 2); return v; }(),
+      [] { BoardRunOptions v; v.lanes = 2; v.concurrent = true; v.cpu_split = parse_cpu_split("balanced", 1); return v; }(),
+      [] {
+        BoardRunOptions v;
+        v.lanes = 2;
+        v.concurrent = true;
+        v.bank_capacity_bytes = 256;
+        v.cpu_split = parse_cpu_split("balanced", 2);
+        return v;
+      }(),
   };
   int index = 0;
   for (const BoardRunOptions& v : variants) {
@@ -143,6 +155,10 @@ TEST(TimingReplay, ReplayedWorkTakesExactlyTheRealRunsTime) {
   EXPECT_GE(real[4]->driver().stats().max_batches_per_step, 2u);  // batching, paper-faithful
   EXPECT_GE(real[5]->driver().stats().max_batches_per_step, 2u);  // batching, culled
   EXPECT_GE(real[4]->driver().stats().face_sets, 2u);
+  for (std::size_t i = 6; i < real.size(); ++i) {
+    EXPECT_GT(real[i]->driver().stats().cpu_segments, 0u) << "variant " << i;
+    EXPECT_EQ(replayed[i]->driver().stats().cpu_segments, real[i]->driver().stats().cpu_segments) << "variant " << i;
+  }
 }
 
 }  // namespace

@@ -359,7 +359,7 @@ def planned_pictures(rows, extras, out):
                                  lambda m=mine, d=device, n=name, w=bits: heatmap(m, d, w, n, out)))
         plan.append((title, pictures))
     # The front chooses among designs (driver, host and cards included); each width and each
-    # combination of profile settings has its own (host_sw/studies/config_sweep.h).
+    # combination of profile settings has its own (host_sw/studies/sweep_row.h).
     for (bits, values), block in fronts.items():
         if any(has_energy(r) for r in block):
             name = "".join(f"_{slug(e)}={slug(v)}" for e, v in zip(settings, values))

@@ -26,7 +26,10 @@
 #include <vector>
 
 #include "board/bank_layout.h"
-#include "host_sw/studies/config_sweep.h"
+#include "host_sw/studies/config_checker.h"
+#include "host_sw/studies/sweep_config.h"
+#include "host_sw/studies/sweep_options.h"
+#include "host_sw/studies/sweep_row.h"
 #include "host_sw/studies/roofline.h"
 #include "host_sw/studies/timing_study.h"
 #include "scenes/prepare.h"

@@ -97,7 +97,7 @@ Study study_from_options(const SweepOptions& o) {
   s.steps = parse_steps(o.steps);
   s.convergence = o.convergence;
   s.paper_faithful = o.paper_faithful;
-  s.visibility = o.visibility;
+  s.visibility = parse_choice<BitExactVisibility>(o.visibility);  // CLI::IsMember has checked the name
   s.form_factor = o.form_factor;
   s.full_banks = o.full_banks;
   s.axes.devices = parse_name_list(o.devices, "--devices");
@@ -233,7 +233,7 @@ nlohmann::ordered_json sweep_json(const Study& s, const SceneSweep& r, const std
   j["schema"] = "rc2000sim.sweep/1";
   j["scene"] = {{"name", r.scene.name}, {"source", r.scene.source}, {"faces", r.scene.faces}, {"patches", r.scene.patches}};
   j["solver"] = {{"paper_faithful", s.paper_faithful}, {"steps_policy", to_string(s.steps)}, {"convergence", s.convergence},
-                 {"visibility", s.visibility}};
+                 {"visibility", choice_name(s.visibility)}};
   if (s.form_factor != Study{}.form_factor) j["solver"]["form_factor"] = s.form_factor;  // point: as before it existed
   j["host_profile"] = s.axes.hosts.size() == 1 ? nlohmann::ordered_json(s.axes.hosts.front())
                                                : nlohmann::ordered_json(s.axes.hosts);

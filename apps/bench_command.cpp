@@ -32,6 +32,7 @@ struct BenchOptions : BenchSpec {
   // measured design, two lanes with the concurrent driver (Table 2's last column; also set below), which
   // their results pages (docs/results/speed-vs-error.md, adaptive-patches.md) were measured with.
   BenchOptions() { board.lanes = 2; }
+  std::vector<std::string> format_names{"float:5,10", "float:8,23"};  // --formats, parsed once into `formats`
   std::string out_dir = "out/bench";
   std::string docs_dir;
   bool quiet = false;
@@ -43,7 +44,7 @@ std::string csv_text(const std::vector<PointRun>& runs, const std::vector<Timing
          "fpga_busy_seconds,relative_rmse,relative_max_error,image_difference\n";
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const PointRun& r = runs[i];
-    out << r.point.varied << ",\"" << r.point.arith << "\"," << r.point.bits << ',' << r.point.convergence << ',' << r.point.patch_levels << ','
+    out << r.point.varied << ",\"" << r.point.arith.name() << "\"," << r.point.bits << ',' << r.point.convergence << ',' << r.point.patch_levels << ','
         << to_string(r.point.form_factor) << ',' << r.scene.patches.size() << ',' << r.run.result.steps << ','
         << r.wall_seconds << ',' << timing[i].simulated_seconds << ','
         << timing[i].report.time.fpga_busy << ',' << r.error.relative_rmse() << ','
@@ -143,7 +144,7 @@ void add_bench_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   add_form_factor_option(*cmd, *base_ff, "Base point: ");
   cmd->add_option("--widths", o->widths, "Widths to sweep")->check(CLI::Range(7, 31))->delimiter(',')->capture_default_str();
-  cmd->add_option("--formats", o->formats, "Float formats to sweep (float:E,M; ';'-separated; 'none' for none), "
+  cmd->add_option("--formats", o->format_names, "Float formats to sweep (float:E,M; ';'-separated; 'none' for none), "
                                            "each on the board's float lanes")
       ->delimiter(';')->capture_default_str();
   cmd->add_option("--convergences", o->convergences, "Convergence thresholds to sweep")->check(convergence_target())
@@ -163,8 +164,10 @@ void add_bench_command(CLI::App& app, int& exit_code) {
     refuse_given(*cmd, {"--patch-levels", "--patch-size"},
                  "does not apply to bench, which sweeps patch levels (--base-patch-levels, --sweep-patch-levels)");
     o->base.form_factor = parse_form_factor_kind(*base_ff);
-    if (o->formats == std::vector<std::string>{"none"}) o->formats.clear();
-    check_float_formats("--formats", o->formats);  // before any work
+    if (o->format_names == std::vector<std::string>{"none"}) o->format_names.clear();
+    check_float_formats("--formats", o->format_names);  // before any work
+    o->formats.clear();
+    for (const std::string& name : o->format_names) o->formats.push_back(pipeline::Arithmetic::parse(name));
     const std::string where = o->out_dir + "/" + (o->docs_dir.empty() ? "" : " and " + o->docs_dir + "/");
     exit_code = run_guarded("bench", where, [&] {
       (void)make_board_setup(o->board);  // the device, host and lanes, before minutes of solving

@@ -67,7 +67,7 @@ Study study_from_options(const SweepOptions& o) {
   s.steps = parse_steps(o.steps);
   s.convergence = o.convergence;
   s.paper_faithful = o.paper_faithful;
-  s.visibility = o.visibility;
+  s.visibility = parse_choice<BitExactVisibility>(o.visibility);  // CLI::IsMember has checked the name
   s.form_factor = o.form_factor;
   s.full_banks = o.full_banks;
   s.axes.devices = parse_name_list(o.devices, "--devices");

@@ -23,7 +23,7 @@ nlohmann::ordered_json sweep_json(const Study& s, const SceneSweep& r, const std
   j["schema"] = "rc2000sim.sweep/1";
   j["scene"] = {{"name", r.scene.name}, {"source", r.scene.source}, {"faces", r.scene.faces}, {"patches", r.scene.patches}};
   j["solver"] = {{"paper_faithful", s.paper_faithful}, {"steps_policy", to_string(s.steps)}, {"convergence", s.convergence},
-                 {"visibility", s.visibility}};
+                 {"visibility", choice_name(s.visibility)}};
   if (s.form_factor != Study{}.form_factor) j["solver"]["form_factor"] = s.form_factor;  // point: as before it existed
   for (const StudyScene& scene : s.scenes) {  // the scene's workload (workload.h), as `run` records it
     if (scene.name == r.scene.name) j["workload"] = workload_json(study_workload(s, scene), r.scene.faces, r.scene.patches, 0);

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include <algorithm>
+#include <iterator>
 
 #include "host_sw/profiles/profile_reader.h"
 #include "host_sw/driver/trace_writer.h"
@@ -50,17 +51,11 @@ bool DriverModel::operator==(const DriverModel& o) const {
 
 namespace {
 
-// A named choice {"value": "dma", "source": "..."} that must be one of `names` (index = enum value).
+// A sourced name {"value": "dma", "source": "..."}, one of `names` (index = enum value), read with the
+// profile edge's one dialect (ProfileReader::choice: missing, unsourced and unknown names are named).
 template <class Enum, std::size_t N>
 Enum choice(const profiles::ProfileReader& r, const std::string& field, const char* const (&names)[N]) {
-  const std::string value = r.text(field + ".value");
-  if (r.text(field + ".source").empty()) r.fail(field + ".source", "empty: say where the choice comes from");
-  for (std::size_t i = 0; i < N; ++i) {
-    if (value == names[i]) return static_cast<Enum>(i);
-  }
-  std::string allowed;
-  for (std::size_t i = 0; i < N; ++i) allowed += std::string(i ? ", " : "") + names[i];
-  r.fail(field + ".value", "'" + value + "' is not one of " + allowed);
+  return static_cast<Enum>(r.choice(field, std::vector<std::string>(std::begin(names), std::end(names))));
 }
 
 constexpr const char* kCpuBalances[] = {"fixed", "balanced"};

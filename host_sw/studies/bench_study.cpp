@@ -8,7 +8,7 @@
 
 namespace rc {
 
-std::string BenchPoint::label() const { return arith == "fixed" ? std::to_string(bits) + " bits" : arith; }
+std::string BenchPoint::label() const { return arith.is_float() ? arith.name() : std::to_string(bits) + " bits"; }
 
 std::vector<BenchPoint> sweep_points(const BenchSpec& o) {
   std::vector<BenchPoint> points{o.base};
@@ -23,7 +23,7 @@ std::vector<BenchPoint> sweep_points(const BenchSpec& o) {
     if (!is_base) points.push_back(p);
   };
   for (int b : o.widths) vary("bits", [&](BenchPoint& p) { p.bits = b; });
-  for (const std::string& f : o.formats) vary("arith", [&](BenchPoint& p) { p.arith = f; });
+  for (const pipeline::Arithmetic& f : o.formats) vary("arith", [&](BenchPoint& p) { p.arith = f; });
   for (double c : o.convergences) vary("convergence", [&](BenchPoint& p) { p.convergence = c; });
   for (int m : o.patch_levels) vary("patch_levels", [&](BenchPoint& p) { p.patch_levels = m; });
   for (const std::string& name : form_factor_names()) {
@@ -61,7 +61,7 @@ PointRun solve_point(const BenchSpec& o, const BenchPoint& p, const Reference& r
   run.solver.convergence = p.convergence;
   run.solver.form_factor = p.form_factor;
   const auto t0 = std::chrono::steady_clock::now();
-  run.run = record_functional_run(run.scene, run.solver, p.arith == "fixed" ? o.visibility : p.arith, p.bits);
+  run.run = record_functional_run(run.scene, run.solver, p.arith.is_float() ? p.arith.name() : o.visibility, p.bits);
   run.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   run.solver.fixed_steps = run.run.result.steps;  // the timing replay runs exactly these steps
   const std::vector<Spectrum> reference =
@@ -96,7 +96,7 @@ BenchResult run_bench_study(const BenchSpec& o, const std::function<void(const s
     c.recording = &r.run.recording;
     c.board = o.board;
     c.board.bits = r.point.bits;
-    if (r.point.arith != "fixed") c.board.float_format = pipeline::parse_float_format(r.point.arith);
+    if (r.point.arith.is_float()) c.board.float_format = r.point.arith.float_format();
     cases.push_back(c);
   }
   progress("timing study of " + std::to_string(cases.size()) + " points");

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "host_sw/radiosity/render.h"
+#include "pipeline/arithmetic.h"
 #include "scenes/prepare.h"
 #include "host_sw/studies/solution_error.h"
 #include "host_sw/studies/timing_study.h"
@@ -25,7 +26,7 @@ struct BenchPoint {
   // paper): the paper's point formula's near-field error (docs/radiosity.md) would otherwise swamp
   // every other effect; the sweep still shows the point and disc formulas as one point each.
   FormFactorKind form_factor = FormFactorKind::Analytic;
-  std::string arith = "fixed";  // "fixed" (at `bits`) or a float format "float:E,M" (bits unused)
+  pipeline::Arithmetic arith;  // fixed point (at `bits`), or a float format (bits unused)
   std::string label() const;    // "15 bits", "float:5,10"
 };
 
@@ -36,7 +37,8 @@ struct BenchSpec {
   std::vector<double> convergences{0.99, 0.995, 0.999, 0.9999};
   std::vector<int> patch_levels{1, 2, 3};
   // Float pipelines beside the fixed widths (paper sec 6), each on the board's float lanes.
-  std::vector<std::string> formats{"float:5,10", "float:8,23"};
+  std::vector<pipeline::Arithmetic> formats{pipeline::Arithmetic(pipeline::FloatFormat(5, 10)),
+                                            pipeline::Arithmetic(pipeline::FloatFormat(8, 23))};
   std::string visibility = "fast";
   BoardRunOptions board;  // the hardware whose time is predicted
 };

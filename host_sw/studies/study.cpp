@@ -164,11 +164,6 @@ void check_study(const Study& s) {
                                   "'; give each a distinct name (scenes.name)");
     }
   }
-  try {
-    (void)parse_choice<BitExactVisibility>(s.visibility);
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(where(s) + ": solver.visibility: " + e.what());
-  }
   if (!(s.convergence > 0 && s.convergence < 1))
     throw std::invalid_argument(where(s) + ": solver.convergence: must lie strictly between 0 and 1");
   try {

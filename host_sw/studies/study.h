@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "host_sw/radiosity/radiosity.h"
+#include "host_sw/visibility/visibility_factory.h"
 #include "scenes/prepare.h"
 #include "host_sw/studies/sweep_config.h"
 #include "host_sw/studies/sweep_options.h"
@@ -34,7 +35,7 @@ struct Study {
   StepsChoice steps;  // the paper's, to convergence or a count (parse_steps reads its text)
   double convergence = SolverOptions{}.convergence;
   bool paper_faithful = true;
-  std::string visibility = "fast";  // the bit-exact backend that answers visibility once per width
+  BitExactVisibility visibility = BitExactVisibility::fast;  // answers visibility once per width; parsed where it enters
   // The solver's form factor (form_factor_names()). The paper's point rule by default: a sweep
   // replicates the paper's workload (Table 2's steps, every segment sent) on other boards.
   std::string form_factor = "point";

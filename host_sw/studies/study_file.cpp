@@ -265,9 +265,8 @@ void read_solver(const Reader& r, const toml::table& t, Study& s) {
   }
   if (const toml::node* n = t.get("paper_faithful")) s.paper_faithful = r.boolean(*n, "solver.paper_faithful");
   if (const toml::node* n = t.get("visibility")) {
-    s.visibility = r.text(*n, "solver.visibility");
     try {
-      (void)parse_choice<BitExactVisibility>(s.visibility);
+      s.visibility = parse_choice<BitExactVisibility>(r.text(*n, "solver.visibility"));
     } catch (const std::invalid_argument& e) {
       r.fail(*n, "solver.visibility", e.what());
     }

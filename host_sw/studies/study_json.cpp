@@ -49,7 +49,7 @@ nlohmann::ordered_json study_json(const Study& s) {
   j["solver"] = {{"steps", to_string(s.steps)},
                  {"convergence", s.convergence},
                  {"paper_faithful", s.paper_faithful},
-                 {"visibility", s.visibility},
+                 {"visibility", choice_name(s.visibility)},
                  {"full_banks", s.full_banks}};
   // Recorded when not the paper's point rule, so records of point studies read as before it existed.
   if (s.form_factor != Study{}.form_factor) j["solver"]["form_factor"] = s.form_factor;
@@ -81,7 +81,11 @@ Study study_from_json(const nlohmann::ordered_json& j) {
     s.steps = parse_steps(solver.at("steps").get<std::string>());
     s.convergence = solver.at("convergence").get<double>();
     s.paper_faithful = solver.at("paper_faithful").get<bool>();
-    s.visibility = solver.at("visibility").get<std::string>();
+    try {
+      s.visibility = parse_choice<BitExactVisibility>(solver.at("visibility").get<std::string>());
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("study " + (s.file.empty() ? s.name : s.file) + ": solver.visibility: " + e.what());
+    }
     s.full_banks = solver.at("full_banks").get<bool>();
     s.form_factor = solver.value("form_factor", Study{}.form_factor);
     const auto& axes = j.at("axes");

@@ -59,7 +59,7 @@ Solved solve(const Study& s, const StudyScene& study_scene, const Scene& scene, 
   SolverOptions solver = base_solver(s, study_scene);
   solver.fixed_steps = steps;
   Solved w;
-  w.functional = record_functional_run(scene, solver, s.visibility, bits);
+  w.functional = record_functional_run(scene, solver, choice_name(s.visibility), bits);
   w.summary.steps = w.functional.result.steps;
   w.summary.convergence_step = w.functional.convergence_step;
   for (int i = 0; i < w.summary.steps; ++i) {

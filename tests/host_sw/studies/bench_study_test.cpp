@@ -10,7 +10,7 @@ TEST(BenchStudy, EachDimensionVariesAloneAndFloatFormatsStandBesideTheWidths) {
   spec.widths = {11, 15};  // 15 is the base's: left out
   spec.convergences = {0.995, 0.999};
   spec.patch_levels = {2};
-  spec.formats = {"float:5,10", "float:8,23"};
+  spec.formats = {pipeline::Arithmetic::parse("float:5,10"), pipeline::Arithmetic::parse("float:8,23")};
   const std::vector<BenchPoint> points = sweep_points(spec);
   std::vector<std::string> labels;
   for (const BenchPoint& p : points) labels.push_back(p.varied + " " + p.label());

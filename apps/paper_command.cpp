@@ -12,6 +12,7 @@
 #include "apps/cli_options.h"
 #include "apps/outputs.h"
 #include "apps/paper_document.h"
+#include "board/profile_reader.h"
 #include "board/throughput_estimates.h"
 #include "host_sw/studies/paper_workload.h"
 #include "apps/plot.h"
@@ -268,8 +269,9 @@ int run_paper(const PaperOptions& o) {
   document.summary = summarize(r);
   document.host_profile = o.host;
   document.driver_model = host.driver_model.name();
-  const std::string source_dir = std::string(RC_SOURCE_DIR) + "/";
-  document.variants = o.variants.rfind(source_dir, 0) == 0 ? o.variants.substr(source_dir.size()) : o.variants;
+  // Named as configs/... when in the config folder, wherever that is (source tree or installed).
+  const std::string config_dir = board::default_config_dir() + "/";
+  document.variants = o.variants.rfind(config_dir, 0) == 0 ? "configs/" + o.variants.substr(config_dir.size()) : o.variants;
   outputs.add(json_path, pretty_json(paper_json(document)));
   outputs.add(csv_path, csv_text(document));
   if (!o.docs_dir.empty()) outputs.add(markdown_path, paper_markdown(document));

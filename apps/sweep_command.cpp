@@ -23,6 +23,7 @@
 #include "apps/report.h"
 #include "board/profile_reader.h"
 #include "host_sw/studies/study_file.h"
+#include "host_sw/studies/study_table.h"
 #include "host_sw/studies/sweep_study.h"
 #include "host_sw/visibility/visibility_factory.h"
 
@@ -332,6 +333,7 @@ void expect_study_outputs(const Study& s, const std::string& out) {
   Outputs outputs;
   outputs.expect(out + "/study.json");
   for (std::size_t i = 0; i < s.scenes.size(); ++i) outputs.expect(scene_dir(s, i, out) + "/sweep.csv");
+  if (s.scenes.size() > 1) outputs.expect(out + "/study.csv");
 }
 
 // Each scene's sweep.csv and sweep.json, and study.json beside them (written last: its presence
@@ -346,6 +348,11 @@ void write_study(const StudyResult& r, const std::string& out, const ProgressLin
     write_sweep_csv(csv, r.scenes[i].rows, extra);
     outputs.add(dir + "/sweep.csv", csv.str());
     outputs.add(dir + "/sweep.json", json_text(sweep_json(r.study, r.scenes[i], fits)));
+  }
+  if (r.scenes.size() > 1) {  // every scene's rows in one table with a scene column (study_table.h)
+    std::ostringstream table;
+    write_study_table_csv(table, r, extra);
+    outputs.add(out + "/study.csv", table.str());
   }
   outputs.add(out + "/study.json", study_record(r));
   outputs.write();

@@ -1,63 +1,83 @@
-"""The worker processes: each call of the C++ core (rc2000tlm._core) runs in a fresh process
-(SystemC elaborates once per process), taken from a pool sized to the cores that starts a new
-process for every task (max_tasks_per_child=1)."""
+"""The worker processes: each call of the C++ core (rc2000tlm._core) runs in a fresh process of its
+own (`python3 -m rc2000tlm._worker`; SystemC elaborates once per process), at most as many at once as
+the machine has cores. A fresh interpreter per call, not multiprocessing's spawn, so that callers
+whose main module is no file (`python3 -`, notebooks) work the same."""
+import builtins
 import concurrent.futures
 import json
-import multiprocessing
 import os
+import subprocess
 import sys
+import tempfile
 
 from .results import PaperResult, RunResult, SweepResult
 
-_pool = None
 
-
-def _find_configs():
+def _find_configs(env):
     """The installed configs of the prefix this package is installed in, unless RC2000SIM_CONFIGS is
     set (io/config_dir.h); a build tree's package finds the source tree's configs by itself."""
-    if os.environ.get("RC2000SIM_CONFIGS"):
+    if env.get("RC2000SIM_CONFIGS"):
         return
     folder = os.path.dirname(os.path.abspath(__file__))
     for _ in range(6):
         folder = os.path.dirname(folder)
         configs = os.path.join(folder, "share", "rc2000tlm", "configs")
         if os.path.isdir(configs):
-            os.environ["RC2000SIM_CONFIGS"] = configs
+            env["RC2000SIM_CONFIGS"] = configs
             return
 
 
-def _executor():
-    global _pool
-    if _pool is None:
-        _find_configs()  # before the workers start: they inherit the environment
-        _pool = concurrent.futures.ProcessPoolExecutor(
-            max_workers=os.cpu_count() or 1, mp_context=multiprocessing.get_context("spawn"), max_tasks_per_child=1)
-    return _pool
+def _worker_env():
+    env = dict(os.environ)
+    package_parent = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    env["PYTHONPATH"] = os.pathsep.join(p for p in (package_parent, env.get("PYTHONPATH")) if p)
+    _find_configs(env)
+    return env
 
 
-def _call(function, kwargs):
-    """In a worker: one call of the C++ core."""
-    from . import _core
-    return getattr(_core, function)(**kwargs)
+def _exception(name, message):
+    kind = getattr(builtins, name, None)
+    if not (isinstance(kind, type) and issubclass(kind, Exception)):
+        kind = RuntimeError
+    return kind(message)
 
 
-def _submit_all(calls, progress, what):
-    """Runs (function, kwargs) calls in the pool; their JSON results in order. A worker that dies
-    (a signal, an abort) is a RuntimeError naming it; the pool is then replaced."""
-    global _pool
-    futures = [_executor().submit(_call, f, kw) for f, kw in calls]
-    done = 0
+def _call(function, kwargs, show_progress):
+    """One call in a fresh worker process; its JSON result, or the worker's exception raised here."""
+    fd, result_path = tempfile.mkstemp(prefix="rc2000tlm-", suffix=".json")
+    os.close(fd)
     try:
+        done = subprocess.run([sys.executable, "-m", "rc2000tlm._worker", result_path],
+                              input=json.dumps({"function": function, "kwargs": kwargs}), text=True,
+                              env=_worker_env(), stdout=subprocess.DEVNULL,
+                              stderr=None if show_progress else subprocess.PIPE)
+        with open(result_path) as f:
+            text = f.read()
+        if not text:
+            tail = (done.stderr or "").strip().splitlines()[-5:]
+            raise RuntimeError("rc2000tlm: the worker process for %s ended without a result (exit status %d)%s"
+                               % (function, done.returncode, (": " + " | ".join(tail)) if tail else ""))
+        response = json.loads(text)
+        if "error" in response:
+            raise _exception(response["error"], response["message"])
+        return json.loads(response["result"])
+    finally:
+        os.remove(result_path)
+
+
+def _submit_all(calls, progress, what, show_worker_progress=False):
+    """Runs (function, kwargs) calls, each in its own worker process, at most one per core at once;
+    their JSON results in order. progress: a count of finished calls on stderr."""
+    with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
+        futures = [pool.submit(_call, f, kw, show_worker_progress) for f, kw in calls]
+        done = 0
         for _ in concurrent.futures.as_completed(futures):
             done += 1
             if progress and len(futures) > 1:
                 print("\r%s: %d of %d done" % (what, done, len(futures)), end="", file=sys.stderr, flush=True)
         if progress and len(futures) > 1:
             print(file=sys.stderr)
-        return [json.loads(f.result()) for f in futures]
-    except concurrent.futures.process.BrokenProcessPool as e:
-        _pool = None
-        raise RuntimeError("rc2000tlm: a worker process died (%s)" % e) from None
+        return [f.result() for f in futures]
 
 
 def _run_kwargs(scene=None, patch_levels=3, faces=0, steps=0, device="xc2v6000", lanes=1, bits=15, banks=0,
@@ -86,7 +106,7 @@ def study(path, progress=False):
     """A study file (TOML, docs/studies.md) run on this machine; a SweepResult (a `scene` column when
     the study has several scenes). progress: the study's own progress line on stderr."""
     kwargs = {"path": os.path.abspath(path), "progress": progress}
-    return SweepResult.from_core(_submit_all([("study_file", kwargs)], False, "studies")[0])
+    return SweepResult.from_core(_submit_all([("study_file", kwargs)], False, "studies", progress)[0])
 
 
 def _toml_value(v):
@@ -128,11 +148,11 @@ def sweep(scenes=None, steps=None, name="python", fixed=None, progress=False, **
     scenes: None for the study default (the paper's scene). Returns a SweepResult."""
     text = study_text(scenes=scenes, steps=steps, name=name, fixed=fixed, **axes)
     kwargs = {"text": text, "name": "rc2000tlm.sweep(%s)" % name, "progress": progress}
-    return SweepResult.from_core(_submit_all([("study_text", kwargs)], False, "studies")[0])
+    return SweepResult.from_core(_submit_all([("study_text", kwargs)], False, "studies", progress)[0])
 
 
 def paper(host="athlon-mp-2600-calibrated", progress=False):
     """Table 2 predicted as `rc2000sim paper` does (the paper's table, the calibrated host profile and its
     driver-model variants); a PaperResult. Minutes of work: progress shows its phases on stderr."""
     kwargs = {"host": host, "progress": progress}
-    return PaperResult(_submit_all([("paper_table", kwargs)], False, "paper")[0])
+    return PaperResult(_submit_all([("paper_table", kwargs)], False, "paper", progress)[0])

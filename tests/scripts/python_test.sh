@@ -33,7 +33,7 @@ unset RC2000SIM_CONFIGS
 cd "$work"
 
 if [ "$mode" = notebook ]; then
-  RC_REPO_ROOT="$root" RC_NOTEBOOK_PLOT="$work/lanes.png" "$python" - "$root/examples/python/sweep-results.ipynb" <<'PY'
+  PYDEVD_DISABLE_FILE_VALIDATION=1 RC_REPO_ROOT="$root" RC_NOTEBOOK_PLOT="$work/lanes.png" "$python" -Xfrozen_modules=off - "$root/examples/python/sweep-results.ipynb" <<'PY'
 import sys, nbformat
 from nbclient import NotebookClient
 nb = nbformat.read(sys.argv[1], as_version=4)

@@ -5,7 +5,7 @@
 #  1. `python3 -c "import rc2000tlm; ..."` runs a small sweep into a DataFrame, whose rows equal the
 #     installed rc2000sim's sweep.csv for the same study file (another process, another writer);
 #  2. run() gives `rc2000sim run --impl board`'s report for the same options, with per-step and
-#     per-bank DataFrames;
+#     per-bank DataFrames; run_many() gives the same answers in parallel; an unknown option is refused;
 #  3. a study over two scenes has a scene column, and load() of rc2000sim's outputs of the same study
 #     (its study.csv) gives the same rows;
 #  4. a bad study arrives as an exception (ValueError, RuntimeError) carrying the command line's message;
@@ -17,7 +17,8 @@
 set -euo pipefail
 build="$1"; root="$2"; python="$3"; mode="$4"
 fail() { echo "FAIL: $*" >&2; exit 1; }
-ls "$build"/python/rc2000tlm/_core*.so > /dev/null 2>&1 || { echo "SKIP: the Python module was not built (RC_BUILD_PYTHON=OFF or no pybind11-dev)"; exit 77; }
+ls "$build"/python/rc2000tlm/_core*.so > /dev/null 2>&1 || { echo "SKIP: the Python module was not built (RC_BUILD_PYTHON=OFF, or pybind11-dev / python3-dev missing: see the configure warning)"; exit 77; }
+[ -x "$python" ] || { echo "SKIP: no Python interpreter found by CMake ($python)"; exit 77; }
 "$python" -c "import pandas" 2> /dev/null || { echo "SKIP: pandas not importable by $python (Debian: python3-pandas)"; exit 77; }
 if [ "$mode" = notebook ]; then
   "$python" -c "import nbclient, nbformat, ipykernel, matplotlib" 2> /dev/null ||
@@ -100,6 +101,16 @@ banks = r.banks_dataframe()
 assert len(banks) > 0 and (banks.bytes_read + banks.bytes_written).sum() > 0
 loaded = rc2000tlm.load(sys.argv[1].rsplit("/", 1)[0])
 assert loaded.simulated_seconds == r.simulated_seconds
+# Several runs at once, each in its own process: the same answers as one at a time, in order.
+many = rc2000tlm.run_many([dict(steps=3, patch_levels=1, lanes=1), dict(steps=3, patch_levels=1, lanes=2)], progress=False)
+assert many[1].simulated_seconds == r.simulated_seconds and no_wall(many[1].board) == no_wall(r.board)
+assert many[0].simulated_seconds != r.simulated_seconds
+try:
+    rc2000tlm.run(lane=2)
+except TypeError:
+    pass
+else:
+    sys.exit("run() accepted an option that does not exist")
 print("   %d steps, %.9f s, %d banks; per step: %s" % (r.steps, r.simulated_seconds, len(banks),
       ", ".join("%.6f" % t for t in steps.simulated_seconds)))
 PY

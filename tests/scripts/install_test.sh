@@ -10,7 +10,7 @@
 # not where it is told; the installed rc2000sim, moved to another prefix, finds its own configs and
 # plot scripts there (not the source tree's); and a library-only configure (tests, apps and
 # benchmarks off) in a clean folder succeeds without looking for GTest, CLI11 or Google Benchmark. Prints "SKIP: <reason>" and exits 77 when
-# a tool it needs is missing. Seconds: the example is one source.
+# a tool it needs is missing. About 80 s on 2 busy cores: three small programs built twice, a small sweep.
 # usage: install_test.sh BUILD_DIR REPO_ROOT
 set -euo pipefail
 build="$1"
@@ -29,13 +29,13 @@ cmake --install "$build" --prefix "$prefix" > "$work/install.log" || { cat "$wor
 for f in include/rc2000tlm/board/rc2000.h include/rc2000tlm/host_sw/radiosity/radiosity.h lib/librc_board.a \
          lib/cmake/rc2000tlm/rc2000tlmConfig.cmake lib/cmake/rc2000tlm/rc2000tlmConfigVersion.cmake \
          lib/pkgconfig/rc2000tlm.pc share/rc2000tlm/configs/devices/xc2v6000.json \
-         include/rc2000tlm/testkit/scripted_host.h lib/librc_testkit.a lib/librc_testkit_main.a \
+         include/rc2000tlm/testkit/scripted_host.h lib/librc_testkit.a lib/librc_testkit_main.a lib/librc_testkit_tlm.a \
          lib/cmake/rc2000tlm/rc2000tlmTestkitTargets.cmake lib/pkgconfig/rc2000tlm-testkit.pc; do
   [ -f "$prefix/$f" ] || fail "not installed: $f"
 done
 # No header is left out: every header of a library folder is in the installed set.
 for d in io scenes pipeline tlm board host_sw/radiosity host_sw/visibility host_sw/driver host_sw/energy \
-         host_sw/platform host_sw/studies testkit; do
+         host_sw/platform host_sw/studies testkit testkit/tlm; do
   for h in "$root/$d"/*.h; do
     [ -f "$prefix/include/rc2000tlm/$d/$(basename "$h")" ] || fail "header not installed: $d/$(basename "$h")"
   done

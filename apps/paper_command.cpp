@@ -12,6 +12,7 @@
 #include "apps/cli_options.h"
 #include "apps/outputs.h"
 #include "apps/paper_document.h"
+#include "board/profile_reader.h"
 #include "board/throughput_estimates.h"
 #include "host_sw/studies/paper_workload.h"
 #include "apps/plot.h"
@@ -294,8 +295,9 @@ int run_paper(const PaperOptions& o) {
   document.left_out_error_low = r.left_out_error_low;
   document.left_out_error_high = r.left_out_error_high;
   document.left_out_errors = r.left_out_errors;
-  const std::string source_dir = std::string(RC_SOURCE_DIR) + "/";
-  document.variants = o.variants.rfind(source_dir, 0) == 0 ? o.variants.substr(source_dir.size()) : o.variants;
+  // Named as configs/... when in the config folder, wherever that is (source tree or installed).
+  const std::string config_dir = profiles::default_config_dir() + "/";
+  document.variants = o.variants.rfind(config_dir, 0) == 0 ? "configs/" + o.variants.substr(config_dir.size()) : o.variants;
   outputs.add(json_path, pretty_json(paper_json(document)));
   outputs.add(csv_path, csv_text(document));
   outputs.add(o.out_dir + "/roofline.csv", roofline_csv(document.rooflines));  // paper.py draws it beside paper.csv

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "host_sw/studies/child_guard.h"
+#include "io/config_dir.h"
 
 namespace rc {
 
@@ -42,10 +43,20 @@ pid_t start_interpreter(const std::string& python, const std::string& script, in
   return pid;
 }
 
+// An installed rc2000sim draws with its own prefix's scripts (<prefix>/share/rc2000tlm/plots), a
+// build tree's with the source tree's, else the configured prefix's (io/config_dir.h).
+std::string plot_script_path(const std::string& script) {
+  const std::string beside = io::share_dir_of_program();
+  if (!beside.empty()) return beside + "/plots/" + script;
+  const std::string source = std::string(RC_SOURCE_DIR) + "/apps/plots/" + script;
+  if (std::filesystem::exists(source)) return source;
+  return io::installed_share_dir() + "/plots/" + script;
+}
+
 }  // namespace
 
 PlotProcess::PlotProcess(const std::string& script) {
-  const std::string path = std::string(RC_SOURCE_DIR) + "/apps/plots/" + script;
+  const std::string path = plot_script_path(script);
   if (!std::filesystem::exists(path)) {
     std::fprintf(stderr, "warning: %s not found; its pictures are not drawn\n", path.c_str());
     ok_ = false;

@@ -8,6 +8,7 @@
 #include "apps/plot.h"
 #include "apps/sweep_json.h"
 #include "apps/sweep_summary.h"
+#include "host_sw/studies/study_table.h"
 #include "host_sw/studies/sweep_columns.h"
 #include "host_sw/studies/sweep_csv.h"
 
@@ -26,6 +27,7 @@ void expect_study_outputs(const Study& s, const std::string& out) {
   Outputs outputs;
   outputs.expect(out + "/study.json");
   for (std::size_t i = 0; i < s.scenes.size(); ++i) outputs.expect(scene_dir(s, i, out) + "/sweep.csv");
+  if (s.scenes.size() > 1) outputs.expect(out + "/study.csv");
 }
 
 void write_study(const StudyResult& r, const std::string& out, const ProgressLine& clock) {
@@ -38,6 +40,11 @@ void write_study(const StudyResult& r, const std::string& out, const ProgressLin
     write_sweep_csv(csv, r.scenes[i].rows, extra);
     outputs.add(dir + "/sweep.csv", csv.str());
     outputs.add(dir + "/sweep.json", sweep_json_text(sweep_json(r.study, r.scenes[i], fits)));
+  }
+  if (r.scenes.size() > 1) {  // every scene's rows in one table with a scene column (study_table.h)
+    std::ostringstream table;
+    write_study_table_csv(table, r, extra);
+    outputs.add(out + "/study.csv", table.str());
   }
   outputs.add(out + "/study.json", study_record(r));
   outputs.write();

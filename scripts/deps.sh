@@ -5,14 +5,15 @@ RC_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 RC_BUILD="${RC_BUILD:-$RC_ROOT/build}"
 RC_PACKAGES=(build-essential cmake ninja-build pkg-config libsystemc-dev libglm-dev libgtest-dev
              libbenchmark-dev nlohmann-json3-dev libcli11-dev libpng-dev libembree-dev python3-matplotlib
-             libassimp-dev libtomlplusplus-dev)
+             libassimp-dev libtomlplusplus-dev pybind11-dev python3-dev)
 
 # Installed by scripts/test only: real models in many formats (tests/scenes/mesh_import_test.cpp),
 # the cluster engines the sweep scripts drive (scripts/sweep-slurm, scripts/sweep-parallel; their tests
 # in tests/scripts bring up a private single-node Slurm with its own munged), and clang with its
 # sanitizer and libFuzzer run-times for the sanitizer build and the fuzzers (docs/reliability.md), and
 # numpy for the independent reference solver (tests/reference/radiosity_reference.py).
-RC_TEST_PACKAGES=(assimp-testmodels parallel slurm-wlm munge clang libclang-rt-14-dev python3-numpy)
+RC_TEST_PACKAGES=(assimp-testmodels parallel slurm-wlm munge clang libclang-rt-14-dev python3-numpy
+                  python3-pandas python3-nbclient python3-nbformat python3-ipykernel)
 
 # Installs RC_PACKAGES and any packages given as arguments that are missing.
 rc_install_missing() {

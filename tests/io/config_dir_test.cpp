@@ -1,5 +1,6 @@
-// io/config_dir.h: RC2000SIM_CONFIGS first, then the source tree's configs while they exist, then the
-// installed share folder.
+// io/config_dir.h: RC2000SIM_CONFIGS first, then the share folder of the prefix the program runs from
+// (tests/scripts/install_test.sh moves an installed rc2000sim and checks it), then the source tree's
+// configs while they exist, then the configured installed share folder.
 #include "io/config_dir.h"
 
 #include <gtest/gtest.h>
@@ -39,6 +40,17 @@ TEST(ConfigDir, ThisBuildFindsItsSourceTreeConfigs) {
   // RC_SOURCE_DIR: this tree (tests/CMakeLists.txt); ctest does not set RC2000SIM_CONFIGS.
   if (std::getenv("RC2000SIM_CONFIGS") != nullptr) GTEST_SKIP() << "RC2000SIM_CONFIGS is set";
   EXPECT_EQ(config_dir(), std::string(RC_SOURCE_DIR) + "/configs");
+}
+
+// This test binary is build/tests/test_io: not <prefix>/bin, so no prefix of its own, and the
+// installed share folder is the configured prefix's.
+TEST(ConfigDir, ABuildTreeProgramHasNoPrefixOfItsOwn) {
+  EXPECT_EQ(share_dir_of_program(), "");
+  const std::string share = installed_share_dir();
+  EXPECT_EQ(share.substr(share.size() - std::string("/share/rc2000tlm").size()), "/share/rc2000tlm");
+  if (std::getenv("RC2000SIM_CONFIGS") == nullptr) {
+    EXPECT_EQ(config_dir(), std::string(RC_SOURCE_DIR) + "/configs");
+  }
 }
 
 TEST(ConfigDir, UseConfigDirTakesAFolderAndSetsTheVariable) {

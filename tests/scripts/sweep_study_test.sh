@@ -7,7 +7,9 @@
 #     of the device profile with those two values, but for the axis's own column;
 #  3. shards run one after another and merged are the single-machine outputs, byte for byte;
 #  4. several cards are an axis, and one card's row is the plain sweep's;
-#  5. bad studies and options fail with the file, line, key or option named.
+#  5. bad studies and options fail with the file, line, key or option named;
+#  6. a study over several scenes writes study.csv: every scene folder's sweep.csv rows, in order,
+#     behind a first column `scene` (its folder's name).
 # usage: sweep_study_test.sh RC2000SIM REPO_ROOT
 set -euo pipefail
 sim="$1"
@@ -120,4 +122,29 @@ rm "$work/shards/shard-1-of-3.json"
 expect_error "1 of 3 shards are missing: 1" sweep merge "$work/shards" --out "$work/bad"
 expect_error "no shard files" sweep merge "$work/axis" --out "$work/bad"
 [ ! -e "$work/bad" ] || fail "a failed run left $work/bad behind"
+step "6. a study over several scenes: one table with a scene column"
+"$sim" sweep --study "$root/tests/host_sw/studies/data/small.toml" --quiet --out "$work/scenes" > /dev/null
+python3 - "$work/scenes" <<'PY'
+import csv, json, os, sys
+out = sys.argv[1]
+combined = list(csv.reader(open(os.path.join(out, "study.csv"))))
+want, header = [], None
+scene_dirs = [d for d in os.listdir(out) if os.path.isfile(os.path.join(out, d, "sweep.csv"))]
+order = []
+for row in combined[1:]:
+    if row[0] not in order:
+        order.append(row[0])
+if sorted(order) != sorted(scene_dirs) or len(order) < 2:
+    sys.exit("scenes in study.csv %s, folders %s" % (order, scene_dirs))
+for name in order:
+    rows = list(csv.reader(open(os.path.join(out, name, "sweep.csv"))))
+    header = header or rows[0]
+    if rows[0] != header:
+        sys.exit("scene %s has other columns" % name)
+    want += [[name] + r for r in rows[1:]]
+if combined[0] != ["scene"] + header or combined[1:] != want:
+    sys.exit("study.csv is not the scenes' sweep.csv rows behind their scene")
+print("  study.csv: %d rows from %s" % (len(want), ", ".join(order)))
+PY
+
 echo PASS

@@ -1,0 +1,148 @@
+// rc2000tlm._core: the thin C++ side of the Python module (python/rc2000tlm/__init__.py). Each
+// function calls the library's typed API once (host_sw/platform/board_run.h, host_sw/studies/) and
+// hands the result back through the JSON documents the library already writes (run report,
+// sweep rows), which the Python side turns into typed objects. SystemC elaborates once per process:
+// the Python side calls each of these in a fresh worker process. Errors are the library's own
+// exceptions, which pybind11 raises as ValueError (std::invalid_argument) or RuntimeError, with the
+// same message the command line prints.
+#include <pybind11/pybind11.h>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+#include <systemc>
+
+#include "host_sw/platform/board_run.h"
+#include "host_sw/platform/run_report.h"
+#include "host_sw/driver/host_cpu_model.h"
+#include "host_sw/studies/calibration_variants.h"
+#include "host_sw/studies/config_sweep.h"
+#include "host_sw/studies/paper_prediction.h"
+#include "host_sw/studies/paper_workload.h"
+#include "host_sw/studies/study_file.h"
+#include "host_sw/studies/sweep_study.h"
+#include "scenes/prepare.h"
+
+namespace py = pybind11;
+
+namespace {
+
+using nlohmann::ordered_json;
+
+// One board run: the scene prepared from its options, the solver to convergence (or `steps` exactly
+// when > 0), the board as BoardRunOptions says; the report, the solver's figures and one record per
+// step (its convergence and the simulated time when it ended).
+std::string run_board(const std::string& scene_file, int patch_levels, int face_target, int steps,
+                      const std::string& device, unsigned lanes, int bits, unsigned banks, bool concurrent,
+                      const std::string& host, unsigned cards) {
+  rc::SceneOptions scene_options;
+  scene_options.file = scene_file;
+  scene_options.patch_levels = patch_levels;
+  scene_options.face_target = face_target;
+  const rc::PreparedScene prepared = rc::prepare_scene(scene_options);
+  rc::SolverOptions solver;
+  solver.fixed_steps = steps;
+  rc::BoardRunOptions o;
+  o.device = device;
+  o.lanes = lanes;
+  o.bits = bits;
+  o.banks = banks;
+  o.concurrent = concurrent;
+  o.host = host;
+  o.cards = cards;
+  ordered_json per_step = ordered_json::array();
+  o.on_progress = [&](const rc::StepProgress& p) {
+    per_step.push_back({{"step", p.step},
+                        {"convergence_reached", p.convergence_reached},
+                        {"simulated_seconds", sc_core::sc_time_stamp().to_seconds()}});
+  };
+  const rc::BoardRunResult r = rc::run_radiosity_on_board(prepared.scene, solver, o);
+  ordered_json out;
+  out["steps"] = r.solver.steps;
+  out["converged"] = r.solver.converged;
+  out["convergence_reached"] = r.solver.convergence_reached;
+  out["segments"] = r.solver.segments;
+  out["patches"] = prepared.scene.patches.size();
+  out["simulated_seconds"] = r.report.simulated_seconds;
+  out["per_step"] = per_step;
+  out["board"] = rc::to_json(r.report);
+  out["warnings"] = prepared.warnings;
+  return out.dump();
+}
+
+// A study run on this machine (run_study, which deals its timing work to worker processes of its
+// own): every scene's rows as the sweep.json rows, with the scene's name and summary.
+std::string study_rows(const rc::Study& study, bool progress) {
+  const rc::StudyResult r = rc::run_study(study, [&](const std::string& what) {
+    if (progress) std::fprintf(stderr, "\r%-78s", what.c_str());
+  });
+  if (progress) std::fprintf(stderr, "\r%-78s\r", "");
+  const std::vector<std::string> extra = rc::extra_columns(r.study.axes);
+  ordered_json out;
+  out["study"] = r.study.name;
+  out["scenes"] = ordered_json::array();
+  for (std::size_t i = 0; i < r.scenes.size(); ++i) {
+    ordered_json scene;
+    scene["name"] = r.study.scenes[i].name;
+    scene["faces"] = r.scenes[i].scene.faces;
+    scene["patches"] = r.scenes[i].scene.patches;
+    scene["rows"] = ordered_json::array();
+    for (const rc::SweepRow& row : r.scenes[i].rows) scene["rows"].push_back(rc::sweep_row_json(row, extra));
+    out["scenes"].push_back(scene);
+  }
+  return out.dump();
+}
+
+// Table 2 as `rc2000sim paper` predicts it with its defaults (the paper's table, the calibrated host
+// and its variants, 15-bit bit-exact visibility): one record per scene and implementation, the
+// fields of paper.json's scene records.
+std::string paper_table(const std::string& host_name, bool progress) {
+  const std::vector<rc::PaperRow> rows = rc::load_paper_table(rc::default_paper_table_path());
+  const rc::HostProfile host = rc::find_host_profile(host_name);
+  const std::vector<rc::CalibratedVariant> variants = rc::load_calibrated_variants(rc::default_variants_path());
+  const std::vector<rc::PaperScene> scenes = rc::prepare_paper_scenes(rows, "fast", 15, [&](const std::string& what) {
+    if (progress) std::fprintf(stderr, "\r%-78s", what.c_str());
+  });
+  if (progress) std::fprintf(stderr, "\r%-78s\r", "simulating the configurations");
+  const rc::PaperPrediction r = rc::predict_paper(scenes, rows, host_name, host, variants);
+  if (progress) std::fprintf(stderr, "\r%-78s\r", "");
+  ordered_json out = ordered_json::array();
+  for (const rc::PaperTableRow& row : rc::table_rows(r)) {
+    out.push_back({{"faces", row.scene.faces},
+                   {"patches", row.scene.patches},
+                   {"steps", row.scene.steps},
+                   {"implementation", rc::to_string(row.implementation)},
+                   {"seconds", row.seconds},
+                   {"role", row.calibration ? "calibration" : "prediction"},
+                   {"paper_seconds", row.calibration ? ordered_json(row.paper_seconds()) : ordered_json()},
+                   {"spread_min_seconds", row.spread.empty() ? ordered_json() : ordered_json(row.spread_min_seconds)},
+                   {"spread_max_seconds", row.spread.empty() ? ordered_json() : ordered_json(row.spread_max_seconds)},
+                   {"fpga_busy_seconds", row.fpga_busy_seconds},
+                   {"speedup_vs_software", row.speedup_vs_software},
+                   {"steps_per_second", row.steps_per_second}});
+  }
+  return out.dump();
+}
+
+}  // namespace
+
+// libsystemc's sc_main is not called in a Python process: the simulations run without it (as
+// SystemC allows when the kernel is started by sc_start from any code).
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "rc2000tlm's C++ core: one board run or one study per call, once per process";
+  m.def("run_board", &run_board, py::arg("scene_file"), py::arg("patch_levels"), py::arg("face_target"),
+        py::arg("steps"), py::arg("device"), py::arg("lanes"), py::arg("bits"), py::arg("banks"),
+        py::arg("concurrent"), py::arg("host"), py::arg("cards"),
+        "One board run (host_sw/platform/board_run.h); the report as JSON text");
+  m.def("study_file", [](const std::string& path, bool progress) { return study_rows(rc::load_study_file(path), progress); },
+        py::arg("path"), py::arg("progress") = false, "A study file (TOML, docs/studies.md) run; its rows as JSON text");
+  m.def("study_text", [](const std::string& text, const std::string& name, bool progress) {
+          return study_rows(rc::parse_study_text(text, name), progress);
+        },
+        py::arg("text"), py::arg("name"), py::arg("progress") = false,
+        "A study given as TOML text (`name` labels it in errors); its rows as JSON text");
+  m.def("paper_table", &paper_table, py::arg("host") = "athlon-mp-2600-calibrated", py::arg("progress") = false,
+        "Table 2 as `rc2000sim paper` predicts it; one record per scene and implementation, as JSON text");
+}

@@ -1,0 +1,158 @@
+"""The worker processes: each call of the C++ core (rc2000tlm._core) runs in a fresh process of its
+own (`python3 -m rc2000tlm._worker`; SystemC elaborates once per process), at most as many at once as
+the machine has cores. A fresh interpreter per call, not multiprocessing's spawn, so that callers
+whose main module is no file (`python3 -`, notebooks) work the same."""
+import builtins
+import concurrent.futures
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+from .results import PaperResult, RunResult, SweepResult
+
+
+def _find_configs(env):
+    """The installed configs of the prefix this package is installed in, unless RC2000SIM_CONFIGS is
+    set (io/config_dir.h); a build tree's package finds the source tree's configs by itself."""
+    if env.get("RC2000SIM_CONFIGS"):
+        return
+    folder = os.path.dirname(os.path.abspath(__file__))
+    for _ in range(6):
+        folder = os.path.dirname(folder)
+        configs = os.path.join(folder, "share", "rc2000tlm", "configs")
+        if os.path.isdir(configs):
+            env["RC2000SIM_CONFIGS"] = configs
+            return
+
+
+def _worker_env():
+    env = dict(os.environ)
+    package_parent = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    env["PYTHONPATH"] = os.pathsep.join(p for p in (package_parent, env.get("PYTHONPATH")) if p)
+    _find_configs(env)
+    return env
+
+
+def _exception(name, message):
+    kind = getattr(builtins, name, None)
+    if not (isinstance(kind, type) and issubclass(kind, Exception)):
+        kind = RuntimeError
+    return kind(message)
+
+
+def _call(function, kwargs, show_progress):
+    """One call in a fresh worker process; its JSON result, or the worker's exception raised here."""
+    fd, result_path = tempfile.mkstemp(prefix="rc2000tlm-", suffix=".json")
+    os.close(fd)
+    try:
+        done = subprocess.run([sys.executable, "-m", "rc2000tlm._worker", result_path],
+                              input=json.dumps({"function": function, "kwargs": kwargs}), text=True,
+                              env=_worker_env(), stdout=subprocess.DEVNULL,
+                              stderr=None if show_progress else subprocess.PIPE)
+        with open(result_path) as f:
+            text = f.read()
+        if not text:
+            tail = (done.stderr or "").strip().splitlines()[-5:]
+            raise RuntimeError("rc2000tlm: the worker process for %s ended without a result (exit status %d)%s"
+                               % (function, done.returncode, (": " + " | ".join(tail)) if tail else ""))
+        response = json.loads(text)
+        if "error" in response:
+            raise _exception(response["error"], response["message"])
+        return json.loads(response["result"])
+    finally:
+        os.remove(result_path)
+
+
+def _submit_all(calls, progress, what, show_worker_progress=False):
+    """Runs (function, kwargs) calls, each in its own worker process, at most one per core at once;
+    their JSON results in order. progress: a count of finished calls on stderr."""
+    with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
+        futures = [pool.submit(_call, f, kw, show_worker_progress) for f, kw in calls]
+        done = 0
+        for _ in concurrent.futures.as_completed(futures):
+            done += 1
+            if progress and len(futures) > 1:
+                print("\r%s: %d of %d done" % (what, done, len(futures)), end="", file=sys.stderr, flush=True)
+        if progress and len(futures) > 1:
+            print(file=sys.stderr)
+        return [f.result() for f in futures]
+
+
+def _run_kwargs(scene=None, patch_levels=3, faces=0, steps=0, device="xc2v6000", lanes=1, bits=15, banks=0,
+                concurrent=False, host="athlon-mp-2600-calibrated", cards=1):
+    return {"scene_file": "" if scene is None else os.path.abspath(scene), "patch_levels": patch_levels,
+            "face_target": faces, "steps": steps, "device": device, "lanes": lanes, "bits": bits, "banks": banks,
+            "concurrent": concurrent, "host": host, "cards": cards}
+
+
+def run(**options):
+    """One board run (`rc2000sim run --impl board`; the defaults are its defaults): scene (a scene file;
+    None: the embedded Cornell Box), patch_levels, faces (refine to this many faces first; 0: as is),
+    steps (0: to convergence), device, lanes, bits, banks (0: the profile's), concurrent, host, cards.
+    Returns a RunResult."""
+    return RunResult(_submit_all([("run_board", _run_kwargs(**options))], False, "runs")[0])
+
+
+def run_many(option_sets, progress=True):
+    """Several board runs at once on the machine's cores: a list of run() option dicts; their
+    RunResults in the same order. progress: a count of finished runs on stderr."""
+    calls = [("run_board", _run_kwargs(**o)) for o in option_sets]
+    return [RunResult(d) for d in _submit_all(calls, progress, "runs")]
+
+
+def study(path, progress=False):
+    """A study file (TOML, docs/studies.md) run on this machine; a SweepResult (a `scene` column when
+    the study has several scenes). progress: the study's own progress line on stderr."""
+    kwargs = {"path": os.path.abspath(path), "progress": progress}
+    return SweepResult.from_core(_submit_all([("study_file", kwargs)], False, "studies", progress)[0])
+
+
+def _toml_value(v):
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, (int, float)):
+        return repr(v)
+    if isinstance(v, str):
+        return json.dumps(v)  # a TOML basic string is a JSON string for what a study holds
+    if isinstance(v, (list, tuple)):
+        return "[" + ", ".join(_toml_value(x) for x in v) + "]"
+    if isinstance(v, dict):
+        return "{ " + ", ".join("%s = %s" % (_toml_key(k), _toml_value(x)) for k, x in v.items()) + " }"
+    raise TypeError("rc2000tlm.sweep: a value of type %s has no study-file form: %r" % (type(v).__name__, v))
+
+
+def _toml_key(k):
+    return k if k.replace("_", "").replace("-", "").isalnum() else json.dumps(k)
+
+
+def study_text(scenes=None, steps=None, name="python", fixed=None, **axes):
+    """The study file (TOML) that sweep() runs: scenes as [[scenes]] tables, steps under [solver],
+    the keyword arguments under [axes] (as a study file spells them: devices, bits, lanes, banks,
+    concurrent, "banks.clock_mhz", ...) and `fixed` under [fixed]."""
+    lines = ["name = %s" % _toml_value(name)]
+    for s in scenes or []:
+        lines += ["", "[[scenes]]"] + ["%s = %s" % (_toml_key(k), _toml_value(v)) for k, v in s.items()]
+    if steps is not None:
+        lines += ["", "[solver]", "steps = %s" % _toml_value(steps)]
+    if axes:
+        lines += ["", "[axes]"] + ["%s = %s" % (_toml_key(k), _toml_value(v)) for k, v in axes.items()]
+    if fixed:
+        lines += ["", "[fixed]"] + ["%s = %s" % (_toml_key(k), _toml_value(v)) for k, v in fixed.items()]
+    return "\n".join(lines) + "\n"
+
+
+def sweep(scenes=None, steps=None, name="python", fixed=None, progress=False, **axes):
+    """A sweep as a study (docs/studies.md) made from the arguments (study_text shows the file);
+    scenes: None for the study default (the paper's scene). Returns a SweepResult."""
+    text = study_text(scenes=scenes, steps=steps, name=name, fixed=fixed, **axes)
+    kwargs = {"text": text, "name": "rc2000tlm.sweep(%s)" % name, "progress": progress}
+    return SweepResult.from_core(_submit_all([("study_text", kwargs)], False, "studies", progress)[0])
+
+
+def paper(host="athlon-mp-2600-calibrated", progress=False):
+    """Table 2 predicted as `rc2000sim paper` does (the paper's table, the calibrated host profile and its
+    driver-model variants); a PaperResult. Minutes of work: progress shows its phases on stderr."""
+    kwargs = {"host": host, "progress": progress}
+    return PaperResult(_submit_all([("paper_table", kwargs)], False, "paper", progress)[0])

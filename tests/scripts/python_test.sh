@@ -1,0 +1,163 @@
+#!/usr/bin/env bash
+# The Python module from an installed prefix (issue 26; README, "Use it from Python"): `cmake
+# --install` of this build into a temporary prefix, then, with only that prefix on PYTHONPATH and
+# from a folder outside the source tree:
+#  1. `python3 -c "import rc2000tlm; ..."` runs a small sweep into a DataFrame, whose rows equal the
+#     installed rc2000sim's sweep.csv for the same study file (another process, another writer);
+#  2. run() gives `rc2000sim run --impl board`'s report for the same options, with per-step and
+#     per-bank DataFrames; run_many() gives the same answers in parallel; an unknown option is refused;
+#  3. a study over two scenes has a scene column, and load() of rc2000sim's outputs of the same study
+#     (its study.csv) gives the same rows;
+#  4. a bad study arrives as an exception (ValueError, RuntimeError) carrying the command line's message;
+#  5. paper() gives the installed `rc2000sim paper`'s Table 2 cells (paper.csv's scene records);
+#  5. with MODE=notebook: examples/python/sweep-results.ipynb runs headless (nbclient).
+# Prints "SKIP: <reason>" and exits 77 when a Debian package it needs is missing (python3-pandas,
+# python3-nbclient, python3-ipykernel) or the module was not built (RC_BUILD_PYTHON).
+# usage: python_test.sh BUILD_DIR REPO_ROOT PYTHON MODE(module|notebook)
+set -euo pipefail
+build="$1"; root="$2"; python="$3"; mode="$4"
+fail() { echo "FAIL: $*" >&2; exit 1; }
+ls "$build"/python/rc2000tlm/_core*.so > /dev/null 2>&1 || { echo "SKIP: the Python module was not built (RC_BUILD_PYTHON=OFF, or pybind11-dev / python3-dev missing: see the configure warning)"; exit 77; }
+[ -x "$python" ] || { echo "SKIP: no Python interpreter found by CMake ($python)"; exit 77; }
+"$python" -c "import pandas" 2> /dev/null || { echo "SKIP: pandas not importable by $python (Debian: python3-pandas)"; exit 77; }
+if [ "$mode" = notebook ]; then
+  "$python" -c "import nbclient, nbformat, ipykernel, matplotlib" 2> /dev/null ||
+    { echo "SKIP: nbclient, nbformat, ipykernel or matplotlib missing for $python (Debian: python3-nbclient python3-ipykernel python3-matplotlib)"; exit 77; }
+fi
+work="$(mktemp -d "${TMPDIR:-/tmp}/python-test.XXXXXX")"
+trap 'rm -rf "$work"' EXIT
+export SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1
+prefix="$work/prefix"
+cmake --install "$build" --prefix "$prefix" > "$work/install.log" || { cat "$work/install.log" >&2; fail "cmake --install"; }
+export PYTHONPATH="$prefix/lib/python3/dist-packages"
+unset RC2000SIM_CONFIGS
+cd "$work"
+
+if [ "$mode" = notebook ]; then
+  PYDEVD_DISABLE_FILE_VALIDATION=1 RC_REPO_ROOT="$root" RC_NOTEBOOK_PLOT="$work/lanes.png" "$python" -Xfrozen_modules=off - "$root/examples/python/sweep-results.ipynb" <<'PY'
+import sys, nbformat
+from nbclient import NotebookClient
+nb = nbformat.read(sys.argv[1], as_version=4)
+NotebookClient(nb, timeout=600, kernel_name="python3", resources={"metadata": {"path": "."}}).execute()
+for cell in nb.cells:
+    for out in cell.get("outputs", []):
+        if out.get("name") == "stdout":
+            print("  " + out["text"].strip())
+PY
+  [ -s "$work/lanes.png" ] || fail "the notebook drew no plot"
+  echo "PASS: the notebook reproduces the sweep page's table and plot"
+  exit 0
+fi
+
+cat > "$work/small.toml" <<'TOML'
+name = "python-test"
+[[scenes]]
+paper = { faces = 70, patches = 280 }
+[solver]
+steps = 20
+[axes]
+devices = ["xc2v6000"]
+bits = [15]
+concurrent = "on"
+lanes = [1, 2]
+banks = [6]
+TOML
+step() { echo "[$(date +%T)] $*"; }
+
+step "1. a small sweep into a DataFrame, as the installed rc2000sim writes it"
+"$prefix/bin/rc2000sim" sweep --study "$work/small.toml" --quiet --out "$work/cli-sweep" > /dev/null
+"$python" -c "
+import rc2000tlm, pandas, sys
+assert rc2000tlm.__file__.startswith('$prefix/'), rc2000tlm.__file__
+s = rc2000tlm.sweep(scenes=[{'paper': {'faces': 70, 'patches': 280}}], steps=20, name='python-test',
+                    devices=['xc2v6000'], bits=[15], concurrent='on', lanes=[1, 2], banks=[6])
+df = s.to_dataframe()
+cli = pandas.read_csv('$work/cli-sweep/sweep.csv')
+assert list(df.lanes) == [1, 2] and (df.status == 'ok').all(), df
+for col in ('simulated_seconds', 'fpga_busy_seconds', 'energy_joules', 'speedup_vs_one_lane'):
+    for a, b in zip(df[col], cli[col]):
+        assert abs(a - b) <= 1e-9 * abs(b), (col, a, b)
+print('  ', len(df), 'rows;', ', '.join('%d lanes %.6f s' % (r.lanes, r.simulated_seconds) for r in df.itertuples()))
+"
+
+step "2. run() is rc2000sim run --impl board"
+"$prefix/bin/rc2000sim" run --impl board --steps 3 --patch-levels 1 --lanes 2 --quiet --out "$work/cli-run" > /dev/null
+"$python" - "$work/cli-run/report.json" <<'PY'
+import json, sys, rc2000tlm
+def no_wall(j):
+    if isinstance(j, dict):
+        return {k: no_wall(v) for k, v in j.items() if not k.startswith("wall_seconds")}
+    if isinstance(j, list):
+        return [no_wall(v) for v in j]
+    return j
+cmd = json.load(open(sys.argv[1]))
+r = rc2000tlm.run(steps=3, patch_levels=1, lanes=2)
+assert r.steps == cmd["steps"] == 3 and r.simulated_seconds == cmd["simulated_seconds"], (r, cmd["simulated_seconds"])
+assert no_wall(r.board) == no_wall(cmd["board"]), "the board report differs from the command's"
+steps = r.to_dataframe()
+assert list(steps.step) == [1, 2, 3] and steps.simulated_seconds.is_monotonic_increasing
+assert steps.simulated_seconds.iloc[-1] <= r.simulated_seconds
+banks = r.banks_dataframe()
+assert len(banks) > 0 and (banks.bytes_read + banks.bytes_written).sum() > 0
+loaded = rc2000tlm.load(sys.argv[1].rsplit("/", 1)[0])
+assert loaded.simulated_seconds == r.simulated_seconds
+# Several runs at once, each in its own process: the same answers as one at a time, in order.
+many = rc2000tlm.run_many([dict(steps=3, patch_levels=1, lanes=1), dict(steps=3, patch_levels=1, lanes=2)], progress=False)
+assert many[1].simulated_seconds == r.simulated_seconds and no_wall(many[1].board) == no_wall(r.board)
+assert many[0].simulated_seconds != r.simulated_seconds
+try:
+    rc2000tlm.run(lane=2)
+except TypeError:
+    pass
+else:
+    sys.exit("run() accepted an option that does not exist")
+print("   %d steps, %.9f s, %d banks; per step: %s" % (r.steps, r.simulated_seconds, len(banks),
+      ", ".join("%.6f" % t for t in steps.simulated_seconds)))
+PY
+
+step "3. a study over two scenes: a scene column, and load() of rc2000sim's study.csv"
+"$prefix/bin/rc2000sim" sweep --study "$root/tests/host_sw/studies/data/small.toml" --quiet --out "$work/cli-study" > /dev/null
+"$python" - "$root/tests/host_sw/studies/data/small.toml" "$work/cli-study" <<'PY'
+import sys, rc2000tlm
+fresh = rc2000tlm.study(sys.argv[1]).to_dataframe()
+loaded = rc2000tlm.load(sys.argv[2]).to_dataframe()
+assert list(fresh.columns[:1]) == ["scene"] and fresh.scene.nunique() == 2, fresh.columns
+assert list(fresh.scene) == list(loaded.scene) and list(fresh.lanes) == list(loaded.lanes)
+for a, b in zip(fresh.simulated_seconds, loaded.simulated_seconds):
+    assert (a != a and b != b) or abs(a - b) <= 1e-9 * abs(b), (a, b)
+print("  ", len(fresh), "rows over", ", ".join(fresh.scene.unique()))
+PY
+
+step "4. errors are exceptions with the command line's message"
+printf 'name = "bad"\n[axes]\nlanes = [0]\n' > "$work/bad.toml"
+if "$prefix/bin/rc2000sim" sweep --study "$work/bad.toml" --quiet --out "$work/bad" > /dev/null 2> "$work/cli.err"; then
+  fail "rc2000sim accepted lanes = [0]"
+fi
+"$python" - "$work/bad.toml" "$work/cli.err" <<'PY'
+import sys, rc2000tlm
+try:
+    rc2000tlm.study(sys.argv[1])
+except (ValueError, RuntimeError) as e:
+    kind, message = type(e).__name__, str(e)
+else:
+    sys.exit("lanes = [0] was accepted")
+cli = open(sys.argv[2]).read()
+assert message and message in cli, (message, cli)
+print("   %s:" % kind, message)
+PY
+step "5. paper() is rc2000sim paper's Table 2"
+"$prefix/bin/rc2000sim" paper --quiet --out "$work/cli-paper" > /dev/null
+"$python" - "$work/cli-paper/paper.csv" <<'PY'
+import sys, pandas, rc2000tlm
+cli = pandas.read_csv(sys.argv[1])
+cli = cli[cli.record == "scene"].reset_index(drop=True)
+got = rc2000tlm.paper().to_dataframe()
+assert len(got) == len(cli) > 0 and list(got.implementation) == list(cli.implementation)
+for col in ("faces", "patches", "steps"):
+    assert list(got[col]) == [int(x) for x in cli[col]], col
+for col in ("seconds", "paper_seconds", "spread_min_seconds", "spread_max_seconds", "fpga_busy_seconds", "speedup_vs_software"):
+    for a, b in zip(got[col], cli[col]):
+        assert (a is None or a != a) == (b != b) and (b != b or abs(a - b) <= 1e-9 * abs(b)), (col, a, b)
+print("   %d Table 2 cells equal paper.csv's" % len(got))
+PY
+echo "PASS: the installed module runs sweeps, runs, studies and the paper's table into DataFrames; errors carry the command's message"

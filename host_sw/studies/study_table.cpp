@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <sstream>
 
-#include "host_sw/studies/config_sweep.h"
+#include "host_sw/studies/sweep_columns.h"
+#include "host_sw/studies/sweep_csv.h"
 
 namespace rc {
 

@@ -26,7 +26,7 @@ double energy_or_worst(const SweepRow& r) {
   return std::isfinite(r.energy_joules) ? r.energy_joules : std::numeric_limits<double>::infinity();
 }
 
-ProfileSetting setting(const std::string& path, const nlohmann::ordered_json& value, const DesignSpace& space) {
+ProfileSetting setting(const std::string& path, const profiles::FieldValue& value, const DesignSpace& space) {
   ProfileSetting s{resolve_study_field(path, {space.device}, {space.host}), value};
   check_setting_value(s.field, s.value, "design search");
   return s;
@@ -37,9 +37,9 @@ ProfileSetting setting(const std::string& path, const nlohmann::ordered_json& va
 std::vector<ProfileSetting> design_settings(const DesignSpace& space, const board::DeviceProfile& device,
                                             board::ResultStore results, double bank_clock, Multipliers m) {
   std::vector<ProfileSetting> s;
-  s.push_back(setting("wrapper.results", board::to_string(results), space));
+  s.push_back(setting("wrapper.results", std::string(board::to_string(results)), space));
   s.push_back(setting("banks.clock_mhz", bank_clock, space));
-  s.push_back(setting("fpga.block_multipliers", m == Multipliers::block ? device.block_multipliers : 0, space));
+  s.push_back(setting("fpga.block_multipliers", std::int64_t{m == Multipliers::block ? device.block_multipliers : 0}, space));
   return s;
 }
 

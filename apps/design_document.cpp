@@ -53,7 +53,7 @@ Json point_json(const DesignPoint& p, const DesignSearchResult& r) {
   j["bank_bytes_per_test"] = p.bank_bytes_per_test;
   j["pci_bytes_per_test"] = p.pci_bytes_per_test;
   j["bound"] = {{"run", p.bound.run}, {"fpga_stream", p.bound.fpga}, {"fpga_share", p.bound.fpga_share},
-                {"text", p.bound.text()}};
+                {"fpga_next", p.bound.next}, {"text", p.bound.text()}};
   j["meets_constraints"] = p.meets_constraints;
   j["on_front"] = p.on_front;
   return j;

@@ -3,6 +3,7 @@
 #include <iterator>
 #include <sstream>
 
+#include "host_sw/profiles/field_value_json.h"
 #include "host_sw/studies/study_json.h"
 #include "host_sw/studies/sweep_columns.h"
 #include "host_sw/studies/sweep_row_json.h"
@@ -49,14 +50,23 @@ nlohmann::ordered_json sweep_json(const Study& s, const SceneSweep& r, const std
       "scene (no step batches with either size; studies/config_sweep.cpp), to keep the model's memory small";
   nlohmann::ordered_json estimates = nlohmann::ordered_json::array();
   for (const SweptFit& f : fits) {
-    nlohmann::ordered_json e = {{"device", f.estimates.model.device}, {"bits", f.bits}};
-    e.update(lanes_that_fit_json(f.estimates));
+    nlohmann::ordered_json e = {{"device", f.cannot_exist.empty() ? f.estimates.model.device : f.device}, {"bits", f.bits}};
+    if (!f.settings.empty()) {  // the device-profile axis values this estimate used
+      nlohmann::ordered_json settings = nlohmann::ordered_json::object();
+      for (const ProfileSetting& p : f.settings) settings[p.field.path] = profiles::field_value_json(p.value);
+      e["settings"] = settings;
+    }
+    if (f.cannot_exist.empty()) {
+      e.update(lanes_that_fit_json(f.estimates));
+    } else {
+      e["cannot_exist"] = f.cannot_exist;
+    }
     estimates.push_back(e);
   }
   j["lanes_that_fit"] = estimates;
   if (sweeps_device_fields(s)) {
-    j["lanes_that_fit_note"] = "on the device profiles with the study's fixed settings; the device fields swept as "
-                               "axes change each row's own clock_mhz and layout, not these estimates";
+    j["lanes_that_fit_note"] = "on the device profiles with the study's fixed settings and each combination of the "
+                               "swept device fields' values (settings), as the rows with those values use them";
   }
   const std::vector<std::string> extra = extra_columns(s.axes);
   nlohmann::ordered_json records = nlohmann::ordered_json::array();

@@ -125,7 +125,13 @@ void print_sweep_scene(const Study& s, const SceneSweep& r, const std::vector<Sw
   std::printf("  %zu configurations: %zu simulated, %zu cannot exist\n", r.rows.size(), r.valid, r.rows.size() - r.valid);
   print_blocks(r.rows, s.axes);
   std::printf("\n  sec 5.6, lanes that fit at full rate (docs/calibration.md):\n");
-  for (const SweptFit& f : fits) std::printf("    %d-bit %s\n", f.bits, lanes_that_fit_line(f.estimates).c_str());
+  for (const SweptFit& f : fits) {
+    std::string settings;  // the swept device fields' values this estimate used
+    for (const ProfileSetting& p : f.settings) settings += (settings.empty() ? " [" : ", ") + p.text();
+    if (!settings.empty()) settings += "]";
+    const std::string line = f.cannot_exist.empty() ? lanes_that_fit_line(f.estimates) : f.device + ": cannot exist: " + f.cannot_exist;
+    std::printf("    %d-bit%s %s\n", f.bits, settings.c_str(), line.c_str());
+  }
 }
 
 }  // namespace rc

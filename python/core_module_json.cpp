@@ -16,9 +16,9 @@
 
 #include "host_sw/platform/board_run.h"
 #include "host_sw/platform/run_report.h"
+#include "host_sw/platform/run_report_json.h"
 #include "host_sw/driver/host_cpu_model.h"
 #include "host_sw/studies/calibration_variants.h"
-#include "host_sw/platform/run_report_json.h"
 #include "host_sw/studies/sweep_columns.h"
 #include "host_sw/studies/sweep_row_json.h"
 #include "host_sw/studies/paper_prediction.h"

@@ -25,7 +25,8 @@ def front_plot(rows, png_path):
     for i, r in enumerate(rows):
         if r["best"] == "1":
             ax.scatter([t[i]], [e[i]], marker="*", color="tab:red", s=160, label="best", zorder=3)
-            ax.annotate(f'{r["lanes"]} lanes, {r["banks"]} banks, results {r["results"]}, bound {r["bound"]}',
+            ax.annotate(f'{r["lanes"]} lanes, {r["banks"]} banks, results {r["results"]}, bound {r["bound"]}'
+                        + (f', stream {r["fpga_stream_limit"]}' if r["fpga_stream_limit"] else ''),
                         (t[i], e[i]), fontsize=7, xytext=(5, 5), textcoords="offset points")
     ax.set_xlabel("simulated seconds")
     ax.set_ylabel("energy, joules")

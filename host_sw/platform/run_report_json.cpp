@@ -5,92 +5,226 @@
 
 #include "host_sw/platform/run_bounds.h"
 #include "host_sw/platform/run_bounds_json.h"
+#include "host_sw/platform/fields_json.h"
+
+namespace rc::fields {
+
+// ---- every field of a run report, under its one name (fields_json.h) --------------------------------
+
+template <>
+struct FieldList<WorkTally> {
+  static constexpr auto list = std::make_tuple(field("count", &WorkTally::count), field("seconds", &WorkTally::seconds));
+};
+template <>
+struct FieldList<RunTime> {
+  static constexpr auto list = std::make_tuple(
+      field("host_compute_seconds", &RunTime::host_compute), field("driver_cpu_seconds", &RunTime::driver_cpu),
+      field("pci_transfer_seconds", &RunTime::pci_transfer), field("waiting_seconds", &RunTime::waiting),
+      field("fpga_busy_seconds", &RunTime::fpga_busy), field("overlap_seconds", &RunTime::overlap),
+      field("second_cpu", &RunTime::second_cpu), field("second_cpu_compute_seconds", &RunTime::second_cpu_compute),
+      field("second_cpu_wait_seconds", &RunTime::second_cpu_wait));
+};
+template <>
+struct FieldList<DesignReport> {
+  static constexpr auto list = std::make_tuple(
+      field("block_multiplier_lanes", &DesignReport::block_multiplier_lanes),
+      field("slice_multiplier_lanes", &DesignReport::slice_multiplier_lanes), field("slices", &DesignReport::slices),
+      field("slices_available", &DesignReport::slices_available),
+      field("block_multipliers", &DesignReport::block_multipliers),
+      field("block_multipliers_available", &DesignReport::block_multipliers_available),
+      field("pipeline_clock_mhz", &DesignReport::pipeline_clock_mhz),
+      field("resources_modelled", &DesignReport::resources_modelled));
+};
+template <>
+struct FieldList<DeviceReport> {
+  static constexpr auto list = std::make_tuple(
+      field("profile", &DeviceReport::profile), field("lanes", &DeviceReport::lanes), field("bits", &DeviceReport::bits),
+      field("clock_hz", &DeviceReport::clock_hz), field("banks", &DeviceReport::banks),
+      field("bank_capacity_bytes", &DeviceReport::bank_capacity_bytes),
+      field("bank_word_bits", &DeviceReport::bank_word_bits), field("bank_clock_hz", &DeviceReport::bank_clock_hz),
+      field("pci_width_bits", &DeviceReport::pci_width_bits), field("pci_clock_hz", &DeviceReport::pci_clock_hz),
+      field("pipeline_latency_cycles", &DeviceReport::pipeline_latency_cycles),
+      field("wrapper_model", &DeviceReport::wrapper_model), field("design", &DeviceReport::design));
+};
+template <>
+struct FieldList<RayGroupReport> {
+  static constexpr auto list =
+      std::make_tuple(field("banks", &RayGroupReport::banks), field("lanes", &RayGroupReport::lanes),
+                      field("first_lane", &RayGroupReport::first_lane), field("rate_per_lane", &RayGroupReport::rate_per_lane));
+};
+template <>
+struct FieldList<LayoutReport> {
+  static constexpr auto list = std::make_tuple(
+      field("coordinates_per_word", &LayoutReport::coordinates_per_word), field("field_bits", &LayoutReport::field_bits),
+      field("face_bank", &LayoutReport::face_bank), field("result_bank", &LayoutReport::result_bank),
+      field("own_face_table", &LayoutReport::own_face_table), field("ray_groups", &LayoutReport::ray_groups),
+      field("spare_banks", &LayoutReport::spare_banks),
+      field("nominal_rays_per_cycle", &LayoutReport::nominal_rays_per_cycle));
+};
+template <>
+struct FieldList<BatchingReport> {
+  static constexpr auto list = std::make_tuple(
+      field("passes", &BatchingReport::passes), field("ray_batches", &BatchingReport::ray_batches),
+      field("max_batches_per_step", &BatchingReport::max_batches_per_step),
+      field("face_sets", &BatchingReport::face_sets), field("face_set_uploads", &BatchingReport::face_set_uploads));
+};
+template <>
+struct FieldList<PciReport> {
+  static constexpr auto list = std::make_tuple(
+      field("bytes_to_board", &PciReport::bytes_to_board), field("bytes_to_host", &PciReport::bytes_to_host),
+      field("dma_transfers", &PciReport::dma_transfers), field("pio_transfers", &PciReport::pio_transfers),
+      field("register_accesses", &PciReport::register_accesses),
+      field("bus_transactions", &PciReport::bus_transactions), field("bus_busy_seconds", &PciReport::bus_busy_seconds));
+};
+template <>
+struct FieldList<BankUseReport> {
+  static constexpr auto list = std::make_tuple(
+      field("bank", &BankUseReport::bank), field("role", &BankUseReport::role), field("reads", &BankUseReport::reads),
+      field("writes", &BankUseReport::writes), field("bytes_read", &BankUseReport::bytes_read),
+      field("bytes_written", &BankUseReport::bytes_written), field("busy_seconds", &BankUseReport::busy_seconds),
+      field("bytes_per_second", &BankUseReport::bytes_per_second),
+      field("bytes_per_second_while_fpga_busy", &BankUseReport::bytes_per_second_while_fpga_busy));
+};
+template <>
+struct FieldList<LaneReport> {
+  static constexpr auto list =
+      std::make_tuple(field("lane", &LaneReport::lane), field("rate", &LaneReport::rate), field("rays", &LaneReport::rays),
+                      field("utilisation", &LaneReport::utilisation));
+};
+template <>
+struct FieldList<StreamLimitReport> {
+  static constexpr auto list =
+      std::make_tuple(field("limit", &StreamLimitReport::limit), field("passes", &StreamLimitReport::passes),
+                      field("fpga_busy_seconds", &StreamLimitReport::fpga_busy_seconds));
+};
+template <>
+struct FieldList<IntersectionReport> {
+  static constexpr auto list = std::make_tuple(
+      field("tests", &IntersectionReport::tests), field("per_second", &IntersectionReport::per_second),
+      field("per_second_while_fpga_busy", &IntersectionReport::per_second_while_fpga_busy));
+};
+template <>
+struct FieldList<CardReport> {
+  static constexpr auto list = std::make_tuple(
+      field("card", &CardReport::card), field("faces", &CardReport::faces), field("passes", &CardReport::passes),
+      field("tests", &CardReport::tests), field("fpga_busy_seconds", &CardReport::fpga_busy_seconds),
+      field("bytes_to_board", &CardReport::bytes_to_board), field("bytes_to_host", &CardReport::bytes_to_host),
+      field("pci_bus_busy_seconds", &CardReport::pci_bus_busy_seconds),
+      field("pci_bus_wait_seconds", &CardReport::pci_bus_wait_seconds),
+      field("driver_cpu_seconds", &CardReport::driver_cpu_seconds),
+      field("pci_transfer_seconds", &CardReport::pci_transfer_seconds),
+      field("waiting_seconds", &CardReport::waiting_seconds), field("idle_seconds", &CardReport::idle_seconds));
+};
+template <>
+struct FieldList<BusReport> {
+  static constexpr auto list =
+      std::make_tuple(field("cards", &BusReport::cards), field("busy_seconds", &BusReport::busy_seconds),
+                      field("utilisation", &BusReport::utilisation));
+};
+template <>
+struct FieldList<CardsReport> {
+  static constexpr auto list =
+      std::make_tuple(field("count", &CardsReport::count), field("split", &CardsReport::split),
+                      field("bus", &CardsReport::bus), field("buses", &CardsReport::buses),
+                      field("per_card", &CardsReport::per_card));
+};
+template <>
+struct FieldList<BoardDetail> {
+  static constexpr auto list = std::make_tuple(
+      field("device", &BoardDetail::device), field("layout", &BoardDetail::layout),
+      field("max_rays_per_batch", &BoardDetail::max_rays_per_batch),
+      field("max_faces_per_set", &BoardDetail::max_faces_per_set), field("batching", &BoardDetail::batching),
+      field("pci", &BoardDetail::pci), field("banks", &BoardDetail::banks), field("lanes", &BoardDetail::lanes),
+      field("stream_limits", &BoardDetail::stream_limits), field("driver_model", &BoardDetail::driver_model),
+      tallies<DriverWork>("driver", &BoardDetail::driver), field("cards", &BoardDetail::cards));
+};
+template <>
+struct FieldList<energy::Figure> {
+  static constexpr auto list =
+      std::make_tuple(field("key", &energy::Figure::path), field("value", &energy::Figure::value),
+                      field("unit", &energy::Figure::unit), field("source", &energy::Figure::source));
+};
+template <>
+struct FieldList<energy::EnergyTerm> {
+  static constexpr auto list = std::make_tuple(
+      field("component", &energy::EnergyTerm::component), field("counter", &energy::EnergyTerm::counter),
+      field("count", &energy::EnergyTerm::count), word("kind", &energy::EnergyTerm::is_static, "static", "dynamic"),
+      field("figure", &energy::EnergyTerm::figure), field("joules", &energy::EnergyTerm::joules));
+};
+template <>
+struct FieldList<energy::ComponentEnergy> {
+  static constexpr auto list = std::make_tuple(
+      field("name", &energy::ComponentEnergy::name), derived("joules", &energy::ComponentEnergy::joules),
+      field("static_joules", &energy::ComponentEnergy::static_joules),
+      field("dynamic_joules", &energy::ComponentEnergy::dynamic_joules),
+      field("average_watts", &energy::ComponentEnergy::average_watts));
+};
+template <>
+struct FieldList<energy::EnergyReport> {
+  static constexpr auto list = std::make_tuple(
+      field("joules", &energy::EnergyReport::joules), field("joules_per_step", &energy::EnergyReport::joules_per_step),
+      field("joules_per_intersection", &energy::EnergyReport::joules_per_intersection),
+      field("average_watts", &energy::EnergyReport::average_watts),
+      field("energy_delay_product_joule_seconds", &energy::EnergyReport::energy_delay_product),
+      field("seconds", &energy::EnergyReport::seconds), field("host", &energy::EnergyReport::host_table),
+      field("device", &energy::EnergyReport::device_table), field("components", &energy::EnergyReport::components),
+      field("terms", &energy::EnergyReport::terms));
+};
+template <>
+struct FieldList<RunReport> {
+  static constexpr auto list = std::make_tuple(
+      field("board_run", &RunReport::board_run), field("simulated_seconds", &RunReport::simulated_seconds),
+      field("time", &RunReport::time), field("intersections", &RunReport::intersections),
+      field("profile", &RunReport::host_profile), tallies<HostWork>("work", &RunReport::work),
+      field("board", &RunReport::board), field("has_wall", &RunReport::has_wall),
+      field("wall_seconds", &RunReport::wall_seconds), field("wall_seconds_per_step", &RunReport::wall_seconds_per_step),
+      field("energy", &RunReport::energy), field("energy_missing", &RunReport::energy_missing));
+};
+
+}  // namespace rc::fields
 
 namespace rc {
 
-// ---- the internal codec (every field, by name) ------------------------------------------------------
+using fields::add;
+using fields::name_of;
+using fields::out;
 
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(WorkTally, count, seconds)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(RunTime, host_compute, driver_cpu, pci_transfer, waiting, fpga_busy, overlap, second_cpu,
-                                   second_cpu_compute, second_cpu_wait)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DesignReport, block_multiplier_lanes, slice_multiplier_lanes, slices, slices_available,
-                                   block_multipliers, block_multipliers_available, pipeline_clock_mhz, resources_modelled)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DeviceReport, profile, lanes, bits, clock_hz, banks, bank_capacity_bytes, bank_word_bits,
-                                   bank_clock_hz, pci_width_bits, pci_clock_hz, pipeline_latency_cycles, wrapper_model, design)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(RayGroupReport, banks, lanes, first_lane, rate_per_lane)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LayoutReport, coordinates_per_word, field_bits, face_bank, result_bank, own_face_table,
-                                   ray_groups, spare_banks, nominal_rays_per_cycle)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(BatchingReport, passes, ray_batches, max_batches_per_step, face_sets, face_set_uploads)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PciReport, bytes_to_board, bytes_to_host, dma_transfers, pio_transfers, register_accesses,
-                                   bus_transactions, bus_busy_seconds)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(BankUseReport, bank, role, reads, writes, bytes_read, bytes_written, busy_seconds,
-                                   bytes_per_second, bytes_per_second_while_fpga_busy)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LaneReport, lane, rate, rays, utilisation)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(StreamLimitReport, limit, passes, fpga_busy_seconds)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(IntersectionReport, tests, per_second, per_second_while_fpga_busy)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CardReport, card, faces, passes, tests, fpga_busy_seconds, bytes_to_board, bytes_to_host,
-                                   pci_bus_busy_seconds, pci_bus_wait_seconds, driver_cpu_seconds, pci_transfer_seconds,
-                                   waiting_seconds, idle_seconds)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(BusReport, cards, busy_seconds, utilisation)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CardsReport, count, split, bus, buses, per_card)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(BoardDetail, device, layout, max_rays_per_batch, max_faces_per_set, batching, pci, banks,
-                                   lanes, stream_limits, driver_model, driver, cards)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(RunReport, board_run, simulated_seconds, time, intersections, host_profile, work, board,
-                                   has_wall, wall_seconds, wall_seconds_per_step)
+// ---- the internal codec: every field of the lists above ---------------------------------------------
 
-}  // namespace rc
-
-namespace rc::energy {
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Figure, value, path, unit, source)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(EnergyTerm, component, counter, count, figure, is_static, joules)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(ComponentEnergy, name, static_joules, dynamic_joules, average_watts)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(EnergyReport, terms, components, joules, seconds, average_watts, joules_per_step,
-                                   joules_per_intersection, energy_delay_product, device_table, host_table)
-}  // namespace rc::energy
-
-namespace rc {
-
-// The energy is optional, which this nlohmann has no conversion for: written beside the macro's fields.
 std::string encode(const RunReport& report) {
-  nlohmann::json j = report;
-  j["energy"] = report.energy ? nlohmann::json(*report.energy) : nlohmann::json();
-  j["energy_missing"] = report.energy_missing;
+  const nlohmann::json j = fields::write_all<nlohmann::json>(report);
   return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);  // a foreign byte: U+FFFD
 }
 
 RunReport decode(const std::string& text) {
   try {
-    const nlohmann::json j = nlohmann::json::parse(text);
-    RunReport r = j.get<RunReport>();
-    if (!j.at("energy").is_null()) r.energy = j.at("energy").get<energy::EnergyReport>();
-    r.energy_missing = j.at("energy_missing").get<std::string>();
+    RunReport r;
+    fields::read_all(nlohmann::json::parse(text), r);
     return r;
   } catch (const nlohmann::json::exception& e) {
+    throw std::invalid_argument(std::string("a run report from a worker process is malformed: ") + e.what());
+  } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(std::string("a run report from a worker process is malformed: ") + e.what());
   }
 }
 
-// ---- the writer (docs/outputs.md) -------------------------------------------------------------------
+// ---- the writer (docs/outputs.md): the fields above, grouped as the document groups them ---------------
 
 namespace {
 
 using nlohmann::ordered_json;
 
 ordered_json time_json(const RunTime& t, unsigned cards) {
-  ordered_json j = {{"host_compute_seconds", t.host_compute},
-                    {"driver_cpu_seconds", t.driver_cpu},
-                    {"pci_transfer_seconds", t.pci_transfer},
-                    {"waiting_seconds", t.waiting},
-                    {"fpga_busy_seconds", t.fpga_busy},
-                    {"overlap_seconds", t.overlap}};
+  ordered_json j;
+  add(j, t, &RunTime::host_compute, &RunTime::driver_cpu, &RunTime::pci_transfer, &RunTime::waiting, &RunTime::fpga_busy,
+      &RunTime::overlap);
   const std::string several =
       cards > 1 ? " With several cards the drivers run on their own threads (cards.per_card: driver_cpu + "
                   "pci_transfer + waiting + idle = simulated_seconds each): the host thread's driver_cpu and "
                   "pci_transfer are 0, waiting is its wait for the cards, fpga_busy the sum over the cards."
                 : "";
   if (t.second_cpu) {
-    j["second_cpu_compute_seconds"] = t.second_cpu_compute;
-    j["second_cpu_wait_seconds"] = t.second_cpu_wait;
+    add(j, t, &RunTime::second_cpu_compute, &RunTime::second_cpu_wait);
     j["note"] = "host_compute + driver_cpu + pci_transfer + waiting + second_cpu_wait = simulated_seconds (the "
                 "first processor's timeline); the second computes the form factors (second_cpu_compute) beside "
                 "it; fpga_busy overlaps host compute by overlap_seconds" + several;
@@ -101,92 +235,12 @@ ordered_json time_json(const RunTime& t, unsigned cards) {
   return j;
 }
 
-ordered_json device_json(const DeviceReport& d) {
-  const DesignReport& f = d.design;
-  return {{"profile", d.profile},
-          {"lanes", d.lanes},
-          {"bits", d.bits},
-          {"clock_hz", d.clock_hz},
-          {"banks", d.banks},
-          {"bank_capacity_bytes", d.bank_capacity_bytes},
-          {"bank_word_bits", d.bank_word_bits},
-          {"bank_clock_hz", d.bank_clock_hz},
-          {"pci_width_bits", d.pci_width_bits},
-          {"pci_clock_hz", d.pci_clock_hz},
-          {"pipeline_latency_cycles", d.pipeline_latency_cycles},
-          {"wrapper_model", d.wrapper_model},
-          {"design", {{"block_multiplier_lanes", f.block_multiplier_lanes},
-                      {"slice_multiplier_lanes", f.slice_multiplier_lanes},
-                      {"slices", f.slices},
-                      {"slices_available", f.slices_available},
-                      {"block_multipliers", f.block_multipliers},
-                      {"block_multipliers_available", f.block_multipliers_available},
-                      {"pipeline_clock_mhz", f.pipeline_clock_mhz},
-                      {"resources_modelled", f.resources_modelled}}}};
-}
-
-ordered_json layout_json(const LayoutReport& l) {
-  ordered_json groups = ordered_json::array();
-  for (const RayGroupReport& g : l.ray_groups) {
-    groups.push_back({{"banks", g.banks}, {"lanes", g.lanes}, {"first_lane", g.first_lane}, {"rate_per_lane", g.rate_per_lane}});
-  }
-  return {{"coordinates_per_word", l.coordinates_per_word},
-          {"field_bits", l.field_bits},
-          {"face_bank", l.face_bank},
-          {"result_bank", l.result_bank},
-          {"own_face_table", l.own_face_table},
-          {"ray_groups", groups},
-          {"spare_banks", l.spare_banks},
-          {"nominal_rays_per_cycle", l.nominal_rays_per_cycle}};
-}
-
-ordered_json banks_json(const std::vector<BankUseReport>& banks) {
-  ordered_json out = ordered_json::array();
-  for (const BankUseReport& b : banks) {
-    out.push_back({{"bank", b.bank},
-                   {"role", b.role},
-                   {"reads", b.reads},
-                   {"writes", b.writes},
-                   {"bytes_read", b.bytes_read},
-                   {"bytes_written", b.bytes_written},
-                   {"busy_seconds", b.busy_seconds},
-                   {"bytes_per_second", b.bytes_per_second},
-                   {"bytes_per_second_while_fpga_busy", b.bytes_per_second_while_fpga_busy}});
-  }
-  return out;
-}
-
-ordered_json cards_json(const CardsReport& c) {
-  ordered_json buses = ordered_json::array();
-  for (const BusReport& b : c.buses) {
-    buses.push_back({{"cards", b.cards}, {"busy_seconds", b.busy_seconds}, {"utilisation", b.utilisation}});
-  }
-  ordered_json cards = ordered_json::array();
-  for (const CardReport& k : c.per_card) {
-    cards.push_back({{"card", k.card},
-                     {"faces", k.faces},
-                     {"passes", k.passes},
-                     {"tests", k.tests},
-                     {"fpga_busy_seconds", k.fpga_busy_seconds},
-                     {"bytes_to_board", k.bytes_to_board},
-                     {"bytes_to_host", k.bytes_to_host},
-                     {"pci_bus_busy_seconds", k.pci_bus_busy_seconds},
-                     {"pci_bus_wait_seconds", k.pci_bus_wait_seconds},
-                     {"driver_cpu_seconds", k.driver_cpu_seconds},
-                     {"pci_transfer_seconds", k.pci_transfer_seconds},
-                     {"waiting_seconds", k.waiting_seconds},
-                     {"idle_seconds", k.idle_seconds}});
-  }
-  return {{"count", c.count}, {"split", c.split}, {"bus", c.bus}, {"buses", buses}, {"per_card", cards}};
-}
-
 // "energy": the estimate, or null beside "energy_missing" saying which profile has no table.
 void add_energy(ordered_json& j, const RunReport& r) {
   if (r.energy) {
-    j["energy"] = energy_report_json(*r.energy);
+    j[name_of<RunReport>(&RunReport::energy)] = energy_report_json(*r.energy);
   } else {
-    j["energy"] = nullptr;
-    j["energy_missing"] = r.energy_missing;
+    add(j, r, &RunReport::energy, &RunReport::energy_missing);
   }
 }
 
@@ -194,59 +248,41 @@ ordered_json board_json(const RunReport& r) {
   const BoardDetail& b = r.board;
   ordered_json j;
   j["schema"] = "rc2000sim.board/1";
-  j["simulated_seconds"] = r.simulated_seconds;
-  j["time"] = time_json(r.time, b.cards.count);
-  j["device"] = device_json(b.device);
-  j["layout"] = layout_json(b.layout);
-  j["capacity"] = {{"max_rays_per_batch", b.max_rays_per_batch}, {"max_faces_per_set", b.max_faces_per_set}};
-  j["batching"] = {{"passes", b.batching.passes},
-                   {"ray_batches", b.batching.ray_batches},
-                   {"max_batches_per_step", b.batching.max_batches_per_step},
-                   {"face_sets", b.batching.face_sets},
-                   {"face_set_uploads", b.batching.face_set_uploads}};
-  j["pci"] = {{"bytes_to_board", b.pci.bytes_to_board},
-              {"bytes_to_host", b.pci.bytes_to_host},
-              {"dma_transfers", b.pci.dma_transfers},
-              {"pio_transfers", b.pci.pio_transfers},
-              {"register_accesses", b.pci.register_accesses},
-              {"bus_transactions", b.pci.bus_transactions},
-              {"bus_busy_seconds", b.pci.bus_busy_seconds}};
-  if (b.cards.count > 1) j["cards"] = cards_json(b.cards);
-  j["banks"] = banks_json(b.banks);
-  ordered_json lanes = ordered_json::array();
-  for (const LaneReport& l : b.lanes) {
-    lanes.push_back({{"lane", l.lane}, {"rate", l.rate}, {"rays", l.rays}, {"utilisation", l.utilisation}});
-  }
-  j["lanes"] = lanes;
-  ordered_json limits = ordered_json::array();
-  for (const StreamLimitReport& l : b.stream_limits) {
-    limits.push_back({{"limit", l.limit}, {"passes", l.passes}, {"fpga_busy_seconds", l.fpga_busy_seconds}});
-  }
-  j["stream_limits"] = limits;
+  add(j, r, &RunReport::simulated_seconds);
+  j[name_of<RunReport>(&RunReport::time)] = time_json(r.time, b.cards.count);
+  add(j, b, &BoardDetail::device, &BoardDetail::layout);
+  ordered_json capacity;
+  add(capacity, b, &BoardDetail::max_rays_per_batch, &BoardDetail::max_faces_per_set);
+  j["capacity"] = capacity;
+  add(j, b, &BoardDetail::batching, &BoardDetail::pci);
+  if (b.cards.count > 1) add(j, b, &BoardDetail::cards);
+  add(j, b, &BoardDetail::banks, &BoardDetail::lanes, &BoardDetail::stream_limits);
   j["bounds"] = run_bounds_json(run_bounds(r));  // docs/board.md, "What bounds a run"
-  j["intersections"] = {{"tests", r.intersections.tests},
-                        {"per_second", r.intersections.per_second},
-                        {"per_second_while_fpga_busy", r.intersections.per_second_while_fpga_busy}};
-  ordered_json driver;
-  for (int k = 0; k < kDriverWorkKinds; ++k) {
-    driver[to_string(DriverWork(k))] = {{"count", b.driver[k].count}, {"seconds", b.driver[k].seconds}};
-  }
-  j["host"] = {{"profile", r.host_profile}, {"driver_model", b.driver_model}, {"work", work_json(r.work)}, {"driver", driver}};
+  add(j, r, &RunReport::intersections);
+  ordered_json host;
+  add(host, r, &RunReport::host_profile);
+  add(host, b, &BoardDetail::driver_model);
+  add(host, r, &RunReport::work);
+  add(host, b, &BoardDetail::driver);
+  j["host"] = host;
   add_energy(j, r);
-  if (r.has_wall) {
-    j["wall_seconds"] = r.wall_seconds;
-    j["wall_seconds_per_step"] = r.wall_seconds_per_step;
-  }
+  if (r.has_wall) add(j, r, &RunReport::wall_seconds, &RunReport::wall_seconds_per_step);
   return j;
 }
 
 ordered_json software_json(const RunReport& r) {
   ordered_json j;
   j["schema"] = "rc2000sim.software/1";
-  j["simulated_seconds"] = r.simulated_seconds;
-  j["time"] = {{"host_compute_seconds", r.time.host_compute}};
-  j["intersections"] = {{"tests", r.intersections.tests}, {"per_second", r.intersections.per_second}};
-  j["host"] = {{"profile", r.host_profile}, {"work", work_json(r.work)}};
+  add(j, r, &RunReport::simulated_seconds);
+  ordered_json time;
+  add(time, r.time, &RunTime::host_compute);
+  j[name_of<RunReport>(&RunReport::time)] = time;
+  ordered_json intersections;
+  add(intersections, r.intersections, &IntersectionReport::tests, &IntersectionReport::per_second);
+  j[name_of<RunReport>(&RunReport::intersections)] = intersections;
+  ordered_json host;
+  add(host, r, &RunReport::host_profile, &RunReport::work);
+  j["host"] = host;
   add_energy(j, r);
   return j;
 }
@@ -254,43 +290,24 @@ ordered_json software_json(const RunReport& r) {
 }  // namespace
 
 nlohmann::ordered_json work_json(const std::array<WorkTally, kHostWorkKinds>& work) {
+  RunReport r;
+  r.work = work;
   ordered_json j;
-  for (int k = 0; k < kHostWorkKinds; ++k) {
-    j[to_string(HostWork(k))] = {{"count", work[k].count}, {"seconds", work[k].seconds}};
-  }
-  return j;
+  add(j, r, &RunReport::work);
+  return j.front();
 }
 
 nlohmann::ordered_json energy_report_json(const energy::EnergyReport& e) {
-  using nlohmann::ordered_json;
-  ordered_json components = ordered_json::array();
-  for (const energy::ComponentEnergy& c : e.components) {
-    components.push_back({{"name", c.name},
-                          {"joules", c.joules()},
-                          {"static_joules", c.static_joules},
-                          {"dynamic_joules", c.dynamic_joules},
-                          {"average_watts", c.average_watts}});
-  }
-  ordered_json terms = ordered_json::array();
-  for (const energy::EnergyTerm& t : e.terms) {
-    terms.push_back({{"component", t.component},
-                     {"counter", t.counter},
-                     {"count", t.count},
-                     {"kind", t.is_static ? "static" : "dynamic"},
-                     {"figure", {{"key", t.figure.path}, {"value", t.figure.value}, {"unit", t.figure.unit},
-                                 {"source", t.figure.source}}},
-                     {"joules", t.joules}});
-  }
-  ordered_json tables = {{"host", e.host_table}};
-  if (!e.device_table.empty()) tables["device"] = e.device_table;
-  return {{"joules", e.joules},
-          {"joules_per_step", e.joules_per_step},
-          {"joules_per_intersection", e.joules_per_intersection},
-          {"average_watts", e.average_watts},
-          {"energy_delay_product_joule_seconds", e.energy_delay_product},
-          {"tables", tables},
-          {"components", components},
-          {"terms", terms}};
+  using energy::EnergyReport;
+  ordered_json j;
+  add(j, e, &EnergyReport::joules, &EnergyReport::joules_per_step, &EnergyReport::joules_per_intersection,
+      &EnergyReport::average_watts, &EnergyReport::energy_delay_product);
+  ordered_json tables;
+  add(tables, e, &EnergyReport::host_table);
+  if (!e.device_table.empty()) add(tables, e, &EnergyReport::device_table);
+  j["tables"] = tables;
+  add(j, e, &EnergyReport::components, &EnergyReport::terms);
+  return j;
 }
 
 nlohmann::ordered_json to_json(const RunReport& report) { return report.board_run ? board_json(report) : software_json(report); }

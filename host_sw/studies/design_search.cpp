@@ -10,6 +10,7 @@
 
 #include "board/design_fit.h"
 #include "board/throughput_estimates.h"
+#include "host_sw/platform/run_bounds.h"
 #include "host_sw/studies/paper_workload.h"
 #include "host_sw/studies/study.h"
 
@@ -26,7 +27,7 @@ double energy_or_worst(const SweepRow& r) {
   return std::isfinite(r.energy_joules) ? r.energy_joules : std::numeric_limits<double>::infinity();
 }
 
-ProfileSetting setting(const std::string& path, const nlohmann::ordered_json& value, const DesignSpace& space) {
+ProfileSetting setting(const std::string& path, const profiles::FieldValue& value, const DesignSpace& space) {
   ProfileSetting s{resolve_study_field(path, {space.device}, {space.host}), value};
   check_setting_value(s.field, s.value, "design search");
   return s;
@@ -37,9 +38,9 @@ ProfileSetting setting(const std::string& path, const nlohmann::ordered_json& va
 std::vector<ProfileSetting> design_settings(const DesignSpace& space, const board::DeviceProfile& device,
                                             board::ResultStore results, double bank_clock, Multipliers m) {
   std::vector<ProfileSetting> s;
-  s.push_back(setting("wrapper.results", board::to_string(results), space));
+  s.push_back(setting("wrapper.results", std::string(board::to_string(results)), space));
   s.push_back(setting("banks.clock_mhz", bank_clock, space));
-  s.push_back(setting("fpga.block_multipliers", m == Multipliers::block ? device.block_multipliers : 0, space));
+  s.push_back(setting("fpga.block_multipliers", std::int64_t{m == Multipliers::block ? device.block_multipliers : 0}, space));
   return s;
 }
 
@@ -75,14 +76,10 @@ Multipliers parse_multipliers(const std::string& text) {
   throw std::invalid_argument("--multipliers: '" + text + "' is not one of block, slice");
 }
 
-std::string DesignBound::text() const {
-  char share[32];
-  std::snprintf(share, sizeof share, "%.0f%%", 100.0 * fpga_share);
-  if (fpga.empty()) return run;
-  return run + " (stream: " + fpga + ", " + share + " of FPGA time)";
+DesignBound design_bound(const RunReport& report) {
+  const RunBounds b = run_bounds(report);
+  return {b.run.front().name, b.stream_bound_name(), b.stream_bound_share, b.stream_next_name(), b.summary()};
 }
-
-DesignBound design_bound(const SweepRow& row) { return {row.bottleneck, row.fpga_limit, row.fpga_limit_share}; }
 
 std::string describe(const DesignConfig& d) {
   const SweepConfig& c = d.config;
@@ -232,7 +229,7 @@ DesignPoint design_point(const DesignConfig& design, const TimingOutcome& outcom
   DesignPoint p;
   p.design = design;
   p.row = row_from_report(design.config, outcome.report, steps);
-  p.bound = design_bound(p.row);
+  p.bound = design_bound(outcome.report);
   const RunReport& r = outcome.report;
   p.tests = r.intersections.tests;
   double bank_bytes = 0;

@@ -64,17 +64,19 @@ struct DesignConstraints {
   double max_watts = std::numeric_limits<double>::infinity();
 };
 
-// What bounds a design: the part of the run that took the most time (SweepRow::bottleneck: the FPGA's
-// stream limit when the host waits for it, else host compute, the driver or PCI), and what bounded
-// the FPGA's stream and its share of FPGA time. The one place the search reads a bound from a run
-// (PassRecord::limit, tallied per run as stream_limits): the lead switches it to the bandwidth model.
+// What bounds a design, from the one bound model of a board run (host_sw/platform/run_bounds.h, whose
+// summary `run` prints as its "bound" line): the largest part of the run's host timeline, what bounded
+// the FPGA's stream (its share of FPGA time) and what comes next. `design` and `run` name the same
+// bound in the same words for the same design.
 struct DesignBound {
-  std::string run;       // "fpga_result_bank", "host_compute", ...
-  std::string fpga;      // "bank 4 (results)", "lanes", ...
-  double fpga_share = 0; // of the FPGA busy time
-  std::string text() const;  // "fpga_result_bank (bank 4 (results), 100% of FPGA time)"
+  std::string run;        // RunPart::name: "fpga" (waiting for the FPGA), "host_compute", "host_driver", "pci"
+  std::string fpga;       // RunBounds::stream_bound_name(): "bank 4 (results, read-modify-write)", "lanes"
+  double fpga_share = 0;  // of the FPGA busy time, in the passes it bounded
+  std::string next;       // RunBounds::stream_next_name(): what a design that relieves the bound meets
+  std::string summary;    // RunBounds::summary(), as `run` prints it
+  std::string text() const { return summary; }
 };
-DesignBound design_bound(const SweepRow& row);
+DesignBound design_bound(const RunReport& report);  // report.board_run must be true
 
 // One design of the space as a configuration the sweep machinery checks and simulates.
 struct DesignConfig {

@@ -8,14 +8,6 @@ namespace rc {
 
 namespace {
 
-// The study codec's value as the profile edge writes it: a whole number stays whole.
-profiles::FieldValue field_value(const nlohmann::ordered_json& value) {
-  if (value.is_string()) return value.get<std::string>();
-  if (value.is_number_integer() && (!value.is_number_unsigned() || value.get<std::uint64_t>() <= INT64_MAX))
-    return value.get<std::int64_t>();
-  return value.get<double>();
-}
-
 std::string last_part(const std::string& path) {
   const std::size_t dot = path.rfind('.');
   return dot == std::string::npos ? path : path.substr(dot + 1);
@@ -66,7 +58,7 @@ profiles::ProfileDocument applied(profiles::ProfileDocument document, const std:
     }
     check_setting_value(s.field, s.value, "study " + study);
     const std::string was = document.value_text(s.field.field);
-    document = document.with_field(s.field.field, field_value(s.value),
+    document = document.with_field(s.field.field, s.value,
                                    "study " + study + ": " + s.text() + " (the profile's value: " + was + ")");
   }
   return document;
@@ -105,19 +97,19 @@ ProfileField resolve_profile_field(const std::string& path, const profiles::Prof
 }
 
 std::string ProfileSetting::text() const {
-  return field.path + "=" + (value.is_string() ? value.get<std::string>() : value.dump());
+  return field.path + "=" + profiles::plain_text(value);
 }
 
-void check_setting_value(const ProfileField& field, const nlohmann::ordered_json& value, const std::string& where) {
+void check_setting_value(const ProfileField& field, const profiles::FieldValue& value, const std::string& where) {
   // A caller that names the place itself (a study file's "file:line: key: ") gives no `where`.
   const std::string place = where.empty() ? "" : where + ": " + field.path + ": ";
-  if (field.numeric && !value.is_number()) {
+  if (field.numeric && !profiles::is_number(value)) {
     throw std::invalid_argument(place + "expected a number (the profile's " + field.field + " is a number), got " +
-                                value.dump());
+                                profiles::json_text(value));
   }
-  if (!field.numeric && !value.is_string()) {
+  if (!field.numeric && profiles::is_number(value)) {
     throw std::invalid_argument(place + "expected a name (the profile's " + field.field + " is a name), got " +
-                                value.dump());
+                                profiles::json_text(value));
   }
 }
 

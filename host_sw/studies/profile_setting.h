@@ -11,18 +11,16 @@
 // with its settings is then read by the profile's own loader, so ranges and relations are checked
 // in one place (board::device_profile_from_document, host_profile_from_document). The settings are
 // applied to the profile's document at the profile edge (profiles::ProfileDocument::with_field).
-//
-// ProfileSetting::value is still the study codec's JSON value (study.*, study_file.*, config_sweep.*
-// read and write it): this header is on the JSON-edge check's allow-list until that codec is typed.
+// A value is typed (profiles::FieldValue); the study codecs convert it at their edges
+// (host_sw/profiles/field_value_json.h).
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "board/device_profile.h"
 #include "host_sw/driver/host_cpu_model.h"
+#include "host_sw/profiles/field_value.h"
 
 namespace rc {
 
@@ -45,13 +43,13 @@ ProfileField resolve_profile_field(const std::string& path, const profiles::Prof
 
 struct ProfileSetting {
   ProfileField field;
-  nlohmann::ordered_json value;  // a number or a string, of the field's type
+  profiles::FieldValue value;    // a number or a name, of the field's type
   std::string text() const;      // "banks.clock_mhz=133"
 };
 
 // Throws std::invalid_argument (naming `where` and the path, unless `where` is empty) unless `value`
 // has the field's type.
-void check_setting_value(const ProfileField& field, const nlohmann::ordered_json& value, const std::string& where);
+void check_setting_value(const ProfileField& field, const profiles::FieldValue& value, const std::string& where);
 
 // The profile with every setting of its kind applied and read back by the profile's own loader
 // (errors name the profile file, the settings and `study`, e.g. "xc2v6000.json with

@@ -29,7 +29,7 @@ void check_values(const Study& s, const Profile& profile, ProfileKind kind) {
   (void)with_settings(profile, s.fixed, study);
   for (const ProfileAxis& a : s.axes.profile) {
     if (a.field.kind != kind) continue;
-    for (const nlohmann::ordered_json& v : a.values) {
+    for (const ProfileValue& v : a.values) {
       std::vector<ProfileSetting> settings = s.fixed;
       settings.push_back({a.field, v});
       (void)with_settings(profile, settings, study);
@@ -73,9 +73,9 @@ std::set<std::string> driver_choices(const Study& s, const std::string& choice) 
   const std::string field = "driver_model." + choice;
   for (const ProfileAxis& a : s.axes.profile)
     if (a.field.kind == ProfileKind::host && a.field.field == field)
-      for (const auto& v : a.values) values.insert(v.get<std::string>());
+      for (const ProfileValue& v : a.values) values.insert(std::get<std::string>(v));
   for (const ProfileSetting& f : s.fixed)
-    if (f.field.kind == ProfileKind::host && f.field.field == field) values = {f.value.get<std::string>()};
+    if (f.field.kind == ProfileKind::host && f.field.field == field) values = {std::get<std::string>(f.value)};
   if (!values.empty()) return values;
   for (const std::string& h : s.axes.hosts) values.insert(profiles::json_of(find_host_profile(h).document).at("driver_model").at(choice).at("value").get<std::string>());
   return values;

@@ -63,8 +63,8 @@ class Reader {
     if (x < min || x > max) fail(node, key, std::to_string(x) + " is outside " + std::to_string(min) + ".." + std::to_string(max));
     return static_cast<int>(x);
   }
-  // A JSON number or string with the TOML node's type (integers stay integers).
-  nlohmann::ordered_json value(const toml::node& node, const std::string& key) const {
+  // A number or a name with the TOML node's type (integers stay integers).
+  profiles::FieldValue value(const toml::node& node, const std::string& key) const {
     if (node.is_integer()) return *node.value<std::int64_t>();
     if (node.is_floating_point()) return number(node, key);
     if (node.is_string()) return *node.value<std::string>();
@@ -83,7 +83,7 @@ bool is_range_table(const toml::node& node) {
 
 // {from, to, step}: from, from + step, ... up to `to` (each from + i step, not a running sum).
 // Whole numbers stay whole.
-std::vector<nlohmann::ordered_json> range_values(const Reader& r, const toml::table& t, const std::string& key) {
+std::vector<profiles::FieldValue> range_values(const Reader& r, const toml::table& t, const std::string& key) {
   r.only(t, key + ".", {"from", "to", "step"});
   const toml::node& from = *t.get("from");
   const toml::node& to = *t.get("to");
@@ -100,7 +100,7 @@ std::vector<nlohmann::ordered_json> range_values(const Reader& r, const toml::ta
                                                           : std::string("spans more than 10^18")) +
                        " values (at most 10000)");
   }
-  std::vector<nlohmann::ordered_json> values;
+  std::vector<profiles::FieldValue> values;
   for (long long i = 0; i < static_cast<long long>(count); ++i) {
     const double x = a + static_cast<double>(i) * d;
     if (whole) {
@@ -113,8 +113,8 @@ std::vector<nlohmann::ordered_json> range_values(const Reader& r, const toml::ta
 }
 
 // A list of values: an array, a {from, to, step} table, or one value.
-std::vector<nlohmann::ordered_json> values_of(const Reader& r, const toml::node& node, const std::string& key) {
-  std::vector<nlohmann::ordered_json> values;
+std::vector<profiles::FieldValue> values_of(const Reader& r, const toml::node& node, const std::string& key) {
+  std::vector<profiles::FieldValue> values;
   if (is_range_table(node)) return range_values(r, *node.as_table(), key);
   if (const toml::array* a = node.as_array()) {
     if (a->empty()) r.fail(node, key, "empty list");
@@ -136,9 +136,9 @@ std::vector<int> int_axis(const Reader& r, const toml::node& node, const std::st
     }
   }
   std::vector<int> values;
-  for (const nlohmann::ordered_json& v : values_of(r, node, key)) {
-    if (!v.is_number_integer()) r.fail(node, key, "expected whole numbers, got " + v.dump());
-    const std::int64_t x = v.get<std::int64_t>();
+  for (const profiles::FieldValue& v : values_of(r, node, key)) {
+    if (!profiles::is_whole(v)) r.fail(node, key, "expected whole numbers, got " + profiles::json_text(v));
+    const std::int64_t x = std::get<std::int64_t>(v);
     if (x < min || x > max) r.fail(node, key, std::to_string(x) + " is outside " + std::to_string(min) + ".." + std::to_string(max));
     values.push_back(static_cast<int>(x));
   }
@@ -367,7 +367,7 @@ void read_axes(const Reader& r, const toml::table& t, Study& s, bool form_factor
   for (const PathNode& p : in_file_order(profile_paths)) {
     const std::string key = "axes." + p.path;
     ProfileAxis axis{resolve(r, p, key, s), values_of(r, *p.node, key)};
-    for (const nlohmann::ordered_json& v : axis.values) {
+    for (const profiles::FieldValue& v : axis.values) {
       try {
         check_setting_value(axis.field, v, "");  // r.fail names the file, line and key
       } catch (const std::invalid_argument& e) {

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "host_sw/profiles/field_value_json.h"
+
 namespace rc {
 
 namespace {
@@ -33,7 +35,15 @@ StudyScene scene_from_json(const nlohmann::ordered_json& j) {
   return s;
 }
 
-nlohmann::ordered_json setting_json(const ProfileSetting& s) { return {{"path", s.field.path}, {"value", s.value}}; }
+nlohmann::ordered_json setting_json(const ProfileSetting& s) {
+  return {{"path", s.field.path}, {"value", profiles::field_value_json(s.value)}};
+}
+
+nlohmann::ordered_json values_json(const std::vector<ProfileValue>& values) {
+  nlohmann::ordered_json j = nlohmann::ordered_json::array();
+  for (const ProfileValue& v : values) j.push_back(profiles::field_value_json(v));
+  return j;
+}
 
 }  // namespace
 
@@ -54,7 +64,7 @@ nlohmann::ordered_json study_json(const Study& s) {
   // Recorded when not the paper's point rule, so records of point studies read as before it existed.
   if (s.form_factor != Study{}.form_factor) j["solver"]["form_factor"] = s.form_factor;
   nlohmann::ordered_json profile = nlohmann::ordered_json::array();
-  for (const ProfileAxis& a : s.axes.profile) profile.push_back({{"path", a.field.path}, {"values", a.values}});
+  for (const ProfileAxis& a : s.axes.profile) profile.push_back({{"path", a.field.path}, {"values", values_json(a.values)}});
   nlohmann::ordered_json concurrent = nlohmann::ordered_json::array();
   for (bool c : s.axes.concurrent) concurrent.push_back(c);
   j["axes"] = {{"devices", s.axes.devices},         {"bits", s.axes.bits},
@@ -100,12 +110,12 @@ Study study_from_json(const nlohmann::ordered_json& j) {
     s.axes.banks = axes.at("banks").get<std::vector<int>>();
     for (const auto& a : axes.at("profile")) {
       ProfileAxis axis{resolve_study_field(a.at("path").get<std::string>(), s.axes.devices, s.axes.hosts), {}};
-      for (const auto& v : a.at("values")) axis.values.push_back(v);
+      for (const auto& v : a.at("values")) axis.values.push_back(profiles::field_value_from_json(v, "axes.profile " + axis.field.path));
       s.axes.profile.push_back(axis);
     }
     for (const auto& f : j.at("fixed")) {
       s.fixed.push_back({resolve_study_field(f.at("path").get<std::string>(), s.axes.devices, s.axes.hosts),
-                         f.at("value")});
+                         profiles::field_value_from_json(f.at("value"), "fixed " + f.at("path").get<std::string>())});
     }
   } catch (const nlohmann::json::exception& e) {
     throw std::invalid_argument(std::string("resolved study: ") + e.what());

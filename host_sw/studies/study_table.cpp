@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "host_sw/studies/sweep_columns.h"
 #include "host_sw/studies/sweep_csv.h"
 
 namespace rc {

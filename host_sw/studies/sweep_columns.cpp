@@ -82,12 +82,9 @@ SweepCell number(double x) { return std::isnan(x) ? none() : SweepCell{SweepCell
 // A profile setting's value as the study gave it: a name, an integer or a number. (The one place
 // here that reads a setting's value; it follows profile_setting.h's type.)
 SweepCell setting_cell(const ProfileValue& v) {
-  if (v.is_string()) return text(v.get<std::string>());
-  if (v.is_number_unsigned() && v.get<unsigned long long>() <= static_cast<unsigned long long>(LLONG_MAX))
-    return integer(static_cast<long long>(v.get<unsigned long long>()));
-  if (v.is_number_integer() && !v.is_number_unsigned()) return integer(v.get<long long>());
-  if (v.is_number()) return SweepCell{SweepCell::Kind::number, {}, 0, v.get<double>()};
-  throw std::logic_error("a profile setting value is neither a name nor a number: " + v.dump());
+  if (const std::string* name = std::get_if<std::string>(&v)) return text(*name);
+  if (const std::int64_t* whole = std::get_if<std::int64_t>(&v)) return integer(*whole);
+  return SweepCell{SweepCell::Kind::number, {}, 0, std::get<double>(v)};
 }
 
 // The value of an extra column: the host, the cards, or the setting of the profile axis with that path.

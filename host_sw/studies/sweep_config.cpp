@@ -22,9 +22,6 @@ std::string software_key(int bits, const std::string& host, const std::vector<Pr
 
 std::string software_key(const SweepConfig& c) { return software_key(c.bits, c.host, c.settings); }
 
-namespace {
-
-// Every combination of the profile axes' values, the first axis varying slowest.
 std::vector<std::vector<ProfileSetting>> profile_combinations(const std::vector<ProfileAxis>& axes) {
   std::vector<std::vector<ProfileSetting>> combos = {{}};
   for (const ProfileAxis& axis : axes) {
@@ -39,8 +36,6 @@ std::vector<std::vector<ProfileSetting>> profile_combinations(const std::vector<
   }
   return combos;
 }
-
-}  // namespace
 
 std::vector<SweepConfig> enumerate_configs(const SweepAxes& a) {
   if (a.devices.empty() || a.bits.empty() || a.concurrent.empty() || a.hosts.empty() || a.lanes.empty() ||

@@ -59,6 +59,9 @@ struct SweepConfig {
 std::string software_key(int bits, const std::string& host, const std::vector<ProfileSetting>& settings);
 std::string software_key(const SweepConfig& config);
 
+// Every combination of the axes' values, the first axis varying slowest ({{}} without axes).
+std::vector<std::vector<ProfileSetting>> profile_combinations(const std::vector<ProfileAxis>& axes);
+
 // A sweep bigger than this is almost certainly a typo (and would take hours); narrow the lists.
 constexpr std::size_t kMaxSweepConfigs = 20000;
 

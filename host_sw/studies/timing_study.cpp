@@ -13,8 +13,8 @@
 
 #include "host_sw/platform/software_system.h"
 #include "host_sw/studies/child_guard.h"
+#include "host_sw/studies/timing_study_json.h"
 #include "host_sw/visibility/visibility_factory.h"
-#include "host_sw/platform/run_report_json.h"
 
 namespace rc {
 
@@ -120,31 +120,15 @@ std::vector<std::vector<std::size_t>> deal(const std::vector<TimingCase>& cases,
   return out;
 }
 
-// Between the study's processes (run_report.h's codec for the report).
-nlohmann::json to_message(const TimingOutcome& o) {
-  return {{"label", o.label}, {"steps", o.steps}, {"report", encode(o.report)}};
-}
-
-TimingOutcome from_message(const nlohmann::json& j) {
-  TimingOutcome o;
-  o.label = j.at("label").get<std::string>();
-  o.steps = j.at("steps").get<int>();
-  o.report = decode(j.at("report").get<std::string>());
-  o.simulated_seconds = o.report.simulated_seconds;
-  return o;
-}
-
 // A child process: runs its shard and writes one JSON document (outcomes or an error) to `fd`.
 [[noreturn]] void run_child(const std::vector<TimingCase>& cases, const std::vector<std::size_t>& shard, int fd) {
-  nlohmann::json answer;
+  WorkerAnswer answer;
   try {
-    nlohmann::json list = nlohmann::json::array();
-    for (const TimingOutcome& o : run_here(cases, shard)) list.push_back(to_message(o));
-    answer["outcomes"] = std::move(list);
+    answer.outcomes = run_here(cases, shard);
   } catch (const std::exception& e) {
-    answer["error"] = e.what();
+    answer.error = e.what();
   }
-  const std::string text = answer.dump();
+  const std::string text = encode_worker_answer(answer);
   std::size_t done = 0;
   while (done < text.size()) {
     const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
@@ -197,10 +181,9 @@ std::string finish_worker(Worker& w, const std::vector<std::vector<std::size_t>>
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || w.text.empty()) {
     return "timing study: worker process for shard " + std::to_string(w.shard) + " died (status " + std::to_string(status) + ")";
   }
-  const nlohmann::json answer = nlohmann::json::parse(w.text);
-  if (answer.contains("error")) return answer["error"].get<std::string>();
-  const auto& list = answer.at("outcomes");
-  for (std::size_t k = 0; k < list.size(); ++k) out[dealt[w.shard][k]] = from_message(list[k]);
+  WorkerAnswer answer = decode_worker_answer(w.text);
+  if (!answer.error.empty()) return answer.error;
+  for (std::size_t k = 0; k < answer.outcomes.size(); ++k) out[dealt[w.shard][k]] = std::move(answer.outcomes[k]);
   return "";
 }
 

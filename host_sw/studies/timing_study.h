@@ -12,8 +12,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "host_sw/platform/board_run.h"
 #include "host_sw/radiosity/radiosity.h"
 #include "host_sw/visibility/visibility_recording.h"

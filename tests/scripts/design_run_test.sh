@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # `rc2000sim design` (docs/design.md): the run command it prints for the best design, run, gives the
-# same simulated seconds, energy and tests as the search reported; the search with its pruning and
+# same simulated seconds, energy and tests as the search reported, and the same bound in the same
+# words (run_bounds.h's summary); the search with its pruning and
 # the exhaustive one (--exhaustive) choose the same best design and the same Pareto front; a cap
 # that no design meets says so; options that cannot apply are refused. A small workload (seconds).
 #   design_run_test.sh RC2000SIM
@@ -29,6 +30,12 @@ assert search["best"]["design"] == everything["best"]["design"], (search["best"]
 front = lambda d: sorted(p["design"] for p in d["front"])
 assert front(search) == front(everything), (front(search), front(everything))
 assert best["bound"]["run"], "the best design names no bound"
+# One bound model (host_sw/platform/run_bounds.h): the search names the bound in the words the run does.
+bounds = run["board"]["bounds"]
+got = (best["bound"]["text"], best["bound"]["run"], best["bound"]["fpga_stream"], best["bound"]["fpga_next"])
+want = (bounds["summary"], bounds["run"]["bound"], bounds["fpga_stream"]["bound"], bounds["fpga_stream"]["next"])
+if got != want:
+    sys.exit(f"design and run name different bounds: design {got}, run {want}")
 print("design: the best design's run gives its figures;", len(search["points"]), "of", len(everything["points"]),
       "designs simulated give the exhaustive best and front")
 PY

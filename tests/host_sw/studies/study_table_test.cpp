@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "host_sw/studies/sweep_columns.h"
 #include "host_sw/studies/sweep_csv.h"
-#include "host_sw/studies/sweep_row.h"
 #include "host_sw/studies/study_table.h"
 
 namespace rc {

@@ -107,6 +107,7 @@ HostProfile with_driver_model(const HostProfile& base, const DriverModel& model)
   p.driver_model.transfer = model.transfer;
   p.driver_model.face_upload = model.face_upload;
   p.driver_model.overlap = model.overlap;
+  p.driver_model.cpu_split = model.cpu_split;
   p.document = with_driver_model(base.document, model, source);
   return p;
 }

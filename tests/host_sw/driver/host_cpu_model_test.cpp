@@ -58,6 +58,13 @@ TEST(HostProfile, WithDriverModelRoundTrips) {
   EXPECT_EQ(typed.clock_hz, reread.clock_hz);
   EXPECT_TRUE(typed.document == reread.document);
   EXPECT_EQ(typed.document.value_text("driver_model.transfer"), "\"pio\"");
+  // The CPU/FPGA split travels too (a lost split turned the paper's "balanced on 2 cpus" mechanism
+  // into the profile's "off" after the typed edge landed).
+  DriverModel split = m;
+  split.cpu_split = parse_cpu_split("balanced", 2);
+  const HostProfile with_split = with_driver_model(base, split);
+  EXPECT_TRUE(with_split.driver_model.cpu_split == split.cpu_split);
+  EXPECT_TRUE(host_profile_from_document(with_split.document, base.file).driver_model.cpu_split == split.cpu_split);
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "apps/plot.h"
 #include "apps/progress.h"
 #include "apps/report.h"
+#include "host_sw/profiles/profile_json.h"
 #include "host_sw/studies/paper_workload.h"
 
 namespace rc {
@@ -105,7 +106,7 @@ int run_design(const DesignOptions& o) {
   outputs.add(dir + "/design.csv", design_csv(r));
   outputs.add(dir + "/roofline.csv", roofline_csv({roofline}));
   outputs.add(dir + "/design.md", design_markdown(doc));
-  if (r.best) outputs.add(dir + "/best-device.json", pretty_json(r.points[*r.best].profile.json));
+  if (r.best) outputs.add(dir + "/best-device.json", pretty_json(profiles::json_of(r.points[*r.best].profile.document)));
   outputs.write();
   plotter.draw(dir + "/design.csv", dir + "/design.png");
   plotter.draw(dir + "/roofline.csv", dir + "/roofline.png");

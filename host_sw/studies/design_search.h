@@ -98,7 +98,7 @@ std::vector<DesignCandidate> enumerate_designs(const DesignSpace& space, const D
 // One simulated design.
 struct DesignPoint {
   DesignConfig design;
-  SweepRow row;  // simulated seconds, energy, watts, bound columns (config_sweep.h)
+  SweepRow row;  // simulated seconds, energy, watts, bound columns (sweep_row.h)
   DesignBound bound;
   std::uint64_t tests = 0;
   double bank_bytes_per_test = 0;  // every bank's bytes read and written / ray-face tests

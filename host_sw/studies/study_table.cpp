@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
-#include "host_sw/studies/config_sweep.h"
+#include "host_sw/studies/sweep_csv.h"
 
 namespace rc {
 

@@ -11,7 +11,8 @@ namespace rc::board::reg {
 constexpr std::uint64_t kId = 0x00;           // RO  0x52433230 ("RC20")
 constexpr std::uint64_t kConfig = 0x04;       // RO  lanes [7:0], fractional bits (float lanes: 1+E+M) [15:8], groups [23:16], banks [31:24]
 constexpr std::uint64_t kControl = 0x08;      // WO  bit 0 START, bit 1 CLEAR (first face overwrites results);
-                                              // a START written during a pass waits for its end (one deep)
+                                              // each START snapshots the registers and is queued (two deep,
+                                              // ControlRegs::kStartQueue); a pass starts when the last ends
 constexpr std::uint64_t kStatus = 0x0C;       // R/W1C  bit 0 BUSY (RO), bit 1 DONE, bit 2 ERROR
 constexpr std::uint64_t kRayCount = 0x10;     // rays in the ray banks (the pass's batch)
 constexpr std::uint64_t kFaceCount = 0x14;    // face records in the face bank (the pass's set)

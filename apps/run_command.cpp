@@ -124,6 +124,7 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   out.visibility_name = "board " + board.device + ", " + std::to_string(board.lanes.value()) + " lane(s), " +
                         (float_arith(o) ? o.arith.name() : std::to_string(o.bits) + "-bit") + (board.concurrent ? ", concurrent" : ", serial") +
                         (board.cpu_split.on() ? ", cpu share " + board.cpu_split.name() : "") +
+                        (board.chunk_rays != 0 ? ", chunks of " + std::to_string(board.chunk_rays) : "") +
                         (o.board.cards > 1 ? ", " + std::to_string(o.board.cards) + " cards (split " + choice_name(o.board.card_split) + ", " +
                                            choice_name(o.board.card_bus) + " bus)"
                                      : "");
@@ -279,13 +280,16 @@ pipeline::Arithmetic parse_arith_option(const std::string& text) {
 void check_run_options(const CLI::App& cmd, const RunOptions& o) {
   if (o.impl != Impl::board) {
     refuse_given(cmd, {"--device", "--lanes", "--banks", "--concurrent", "--cards", "--card-split", "--card-bus",
-                       "--lanes-compute", "--host", "--trace", "--trace-steps", "--vcd", "--cpu-share", "--cpu-cores"},
+                       "--lanes-compute", "--host", "--trace", "--trace-steps", "--vcd", "--cpu-share", "--cpu-cores", "--chunk-rays"},
                  "applies to --impl board only (the simulated RC2000); this run answers visibility in software");
   } else {
     refuse_given(cmd, {"--visibility"}, "applies to --impl software only: with --impl board the board's lanes answer "
                                         "visibility (bit-exact at --bits, or --arith float:E,M)");
   }
   if (o.board.cards == 1) refuse_given(cmd, {"--card-split", "--card-bus"}, "applies only with more than one card (--cards)");
+  if (o.board.chunk_rays != 0 && o.board.cards > 1) {
+    refuse_option("--chunk-rays", "the pipelined driver drives one card (--cards " + std::to_string(o.board.cards.value()) + ")");
+  }
   if (o.cpu_share.empty()) refuse_given(cmd, {"--cpu-cores"}, "applies only with --cpu-share (the CPU/FPGA split)");
   if (!o.cpu_share.empty()) {
     if (o.board.cards > 1) refuse_option("--cpu-share", "a CPU/FPGA split drives one card (--cards " + std::to_string(o.board.cards.value()) + ")");
@@ -385,6 +389,11 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--banks", b.banks, "Board: memory banks, 1..64 (default: the profile's)")->check(CLI::Range(1, 64))
       ->capture_default_str();
   cmd->add_flag("--concurrent", b.concurrent, "Board: form factors while the FPGA works (paper sec 4.3)");
+  cmd->add_option("--chunk-rays", b.chunk_rays,
+                  "Board: the pipelined driver, rays per chunk (chunks go to alternating halves of the banks, so "
+                  "transfers overlap the passes; docs/board.md, Pipelined passes); default: the host profile's, "
+                  "usually the unpipelined driver")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{4294967295u}));
   cmd->add_option("--cpu-share", options->cpu_share,
                   "Board: the CPU/FPGA split, the fraction 0..1 of each step's segments the host CPU tests in software "
                   "while the board tests the rest, or 'balanced' (per step, both finish together; docs/board.md, "

@@ -27,8 +27,10 @@ void ControlRegs::acknowledge_now() {
 }
 
 std::uint32_t ControlRegs::take_start() {
-  m_start_pending = false;
-  return m_start_bits;
+  const std::uint32_t bits = m_starts.front().bits;
+  m_pass = m_starts.front().regs;
+  m_starts.pop_front();
+  return bits;
 }
 
 void ControlRegs::set_busy(bool busy) {
@@ -52,9 +54,12 @@ void ControlRegs::write(std::uint64_t offset, std::uint32_t value, const sc_core
       return;  // read-only
     case reg::kControl:
       if (value & reg::kStart) {
-        m_start_pending = true;
-        m_start_bits = value;
-        m_start_time = effective;
+        if (m_starts.size() >= kStartQueue) {
+          m_regs[reg::kStatus / 4] |= reg::kError;
+          m_regs[reg::kErrorCode / 4] = reg::kStartWhileBusy;
+          return;
+        }
+        m_starts.push_back({effective, value, m_regs});
         m_start_event.notify(effective - sc_core::sc_time_stamp());
       }
       return;

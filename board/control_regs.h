@@ -25,6 +25,7 @@
 #pragma once
 
 #include <array>
+#include <deque>
 #include <cstdint>
 #include <functional>
 
@@ -44,10 +45,16 @@ class ControlRegs : public sc_core::sc_module {
 
   // ---- device side ----
   std::uint32_t value(std::uint64_t offset) const { return m_regs[offset / 4]; }
-  const sc_core::sc_event& start_event() const { return m_start_event; }  // notified at start_time()
-  bool start_pending() const { return m_start_pending; }
-  sc_core::sc_time start_time() const { return m_start_time; }
-  std::uint32_t take_start();  // clears the pending START, returns the CONTROL bits written with it
+  // A START takes a snapshot of the registers as they are when it is written and joins a queue of
+  // at most kStartQueue (a START beyond it is dropped and sets ERROR with kStartWhileBusy): a host
+  // running ahead of simulated time may write the next pass's registers and START before this pass
+  // has begun, and each pass still reads its own (the pipelined driver, docs/board.md).
+  static constexpr std::size_t kStartQueue = 2;
+  const sc_core::sc_event& start_event() const { return m_start_event; }  // notified at each START's time
+  bool start_pending() const { return !m_starts.empty(); }
+  sc_core::sc_time start_time() const { return m_starts.front().time; }  // the oldest queued START's
+  std::uint32_t take_start();  // dequeues the oldest START, returns its CONTROL bits
+  std::uint32_t pass_value(std::uint64_t offset) const { return m_pass[offset / 4]; }  // the taken START's snapshot
   void set_busy(bool busy);
   void finish_pass(std::uint64_t cycles, std::uint32_t error);  // DONE (and ERROR), counters
   void on_acknowledge(std::function<void()> callback) { m_acknowledge = std::move(callback); }
@@ -64,9 +71,13 @@ class ControlRegs : public sc_core::sc_module {
 
   sc_core::sc_time m_access_time;
   std::array<std::uint32_t, reg::kSize / 4> m_regs{};
-  bool m_start_pending = false;
-  std::uint32_t m_start_bits = 0;
-  sc_core::sc_time m_start_time = sc_core::SC_ZERO_TIME;
+  struct StartCommand {
+    sc_core::sc_time time;
+    std::uint32_t bits = 0;
+    std::array<std::uint32_t, reg::kSize / 4> regs{};
+  };
+  std::deque<StartCommand> m_starts;
+  std::array<std::uint32_t, reg::kSize / 4> m_pass{};
   sc_core::sc_event m_start_event;
   std::function<void()> m_acknowledge;
   sc_core::sc_event m_acknowledge_event;

@@ -25,12 +25,14 @@ std::uint64_t CycleWrapper::allowed(std::uint64_t t) const {
   return t * m_timing.device_period.value() / m_timing.bank_period.value();
 }
 
+// A START written during a pass (register_map.h) begins the next pass on the edge that ends this one,
+// as the fast model's does.
 void CycleWrapper::on_edge() {
+  if (m_running && m_phase == Phase::Tail && m_cycle == m_done_cycle) finish();
   if (!m_running) {
     if (!m_regs.start_pending() || m_regs.start_time() > sc_core::sc_time_stamp()) return;
     begin();
   }
-  if (m_phase == Phase::Tail && m_cycle == m_done_cycle) return finish();
   advance_pipeline();
   controller();
   ++m_cycle;

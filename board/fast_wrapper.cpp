@@ -30,7 +30,8 @@ void FastWrapper::run() {
     if (!m_regs.start_pending()) sc_core::wait(m_regs.start_event());
     if (!m_regs.start_pending()) continue;
     if (m_regs.start_time() > sc_core::sc_time_stamp()) sc_core::wait(m_regs.start_time() - sc_core::sc_time_stamp());
-    const sc_core::sc_time start = next_edge(m_regs.start_time());
+    // Now, not the START's time: a START written during the last pass (register_map.h) starts at its end.
+    const sc_core::sc_time start = next_edge(sc_core::sc_time_stamp());
     begin_pass();
     PassInputs& in = m_in;
     read_inputs(in);

@@ -10,7 +10,9 @@ namespace rc::board::reg {
 
 constexpr std::uint64_t kId = 0x00;           // RO  0x52433230 ("RC20")
 constexpr std::uint64_t kConfig = 0x04;       // RO  lanes [7:0], fractional bits (float lanes: 1+E+M) [15:8], groups [23:16], banks [31:24]
-constexpr std::uint64_t kControl = 0x08;      // WO  bit 0 START, bit 1 CLEAR (first face overwrites results)
+constexpr std::uint64_t kControl = 0x08;      // WO  bit 0 START, bit 1 CLEAR (first face overwrites results);
+                                              // each START snapshots the registers and is queued (two deep,
+                                              // ControlRegs::kStartQueue); a pass starts when the last ends
 constexpr std::uint64_t kStatus = 0x0C;       // R/W1C  bit 0 BUSY (RO), bit 1 DONE, bit 2 ERROR
 constexpr std::uint64_t kRayCount = 0x10;     // rays in the ray banks (the pass's batch)
 constexpr std::uint64_t kFaceCount = 0x14;    // face records in the face bank (the pass's set)
@@ -26,7 +28,13 @@ constexpr std::uint64_t kPasses = 0x38;       // RO  passes completed
 constexpr std::uint64_t kErrorCode = 0x3C;    // RO  why ERROR was set (ErrorCode)
 constexpr std::uint64_t kSourceFaces = 0x40;  // faces of the shooter's sheet from SOURCE_FACE on; 1 at reset
                                               // (scenes/sheets.h; written only when it changes)
-constexpr std::uint64_t kSize = 0x44;         // bytes of register space in use
+// The pipelined driver's windows (docs/board.md, "Pipelined passes"): where in its banks a pass finds its
+// rays, writes its result words and finds its own-surface table, in bank words. 0 at reset, so a
+// driver that never writes them (the unpipelined protocol) uses the banks from word 0 as before.
+constexpr std::uint64_t kRayBase = 0x44;      // word offset of the pass's rays in every ray bank
+constexpr std::uint64_t kResultBase = 0x48;   // word offset of the pass's result words in the result bank
+constexpr std::uint64_t kTableBase = 0x4C;    // word offset of the own-surface table from its usual place
+constexpr std::uint64_t kSize = 0x50;         // bytes of register space in use
 constexpr std::uint64_t kBarSize = 0x1000;    // BAR0 size
 
 constexpr std::uint32_t kIdValue = 0x52433230;
@@ -46,8 +54,9 @@ enum ErrorCode : std::uint32_t {
   kTooManyRays = 1,     // RAY_COUNT beyond the ray or result banks (or, results on chip, the block RAM)
   kTooManyFaces = 2,    // FACE_COUNT beyond the face bank
   kMaskOverrun = 3,     // MASK_START + table entries exceed RAY_COUNT
-  kStartWhileBusy = 4,
+  kStartWhileBusy = 4,  // a START beyond the queue (ControlRegs::kStartQueue)
   kBadStartPoint = 5,   // START_X/Y/Z not a 0.N code of the configured width
+  kWindowOverrun = 6,   // RAY_BASE, RESULT_BASE or TABLE_BASE puts the pass's words beyond their bank
 };
 
 }  // namespace rc::board::reg

@@ -1,5 +1,7 @@
 #include "board/wrapper_base.h"
 
+#include <algorithm>
+
 #include "board/word_format.h"
 
 namespace rc::board {
@@ -18,6 +20,7 @@ WrapperBase::WrapperBase(const sc_core::sc_module_name& name, const BankLayout& 
       m_addresses(std::move(bank_addresses)),
       m_signals(signals) {
   m_stats.lane_rays.assign(layout.lanes, 0);
+  m_window.assign(m_addresses.size(), 0);
   m_regs.on_acknowledge([this] { acknowledge(); });
   for (std::size_t b = 0; b < m_addresses.size(); ++b) {
     m_dmi.emplace_back(std::string(this->name()) + ": bank " + std::to_string(b),
@@ -33,10 +36,23 @@ sc_core::sc_time WrapperBase::next_edge(const sc_core::sc_time& t) const {
   return sc_core::sc_time::from_value((t.value() + p - 1) / p * p);
 }
 
+// Latched by read_inputs: the driver may write the next pass's registers while this one runs.
 WrapperBase::OwnSurfaceTable WrapperBase::own_surface_table() {
-  if (m_layout.mask_bank) return {this, *m_layout.mask_bank, 0};
-  const std::uint64_t base = static_cast<std::uint64_t>(m_regs.value(reg::kFaceCount)) * m_layout.face_words();
-  return {this, m_layout.face_bank, base};
+  return {this, m_layout.mask_bank ? *m_layout.mask_bank : m_layout.face_bank, m_table_first};
+}
+
+// The windows put every word of the pass inside its bank: each ray bank's words of the split after
+// RAY_BASE, the result words after RESULT_BASE, the table (one word per face) after TABLE_BASE.
+std::uint32_t WrapperBase::window_error(const PassInputs& in) const {
+  const std::uint64_t capacity = m_layout.bank_words;
+  for (std::size_t g = 0; g < m_layout.groups.size(); ++g) {
+    const RayGroup& group = m_layout.groups[g];
+    for (unsigned j = 0; j < group.k(); ++j)
+      if (in.ray_base + group_bank_words(group, j, in.split.packets[g]) > capacity) return reg::kWindowOverrun;
+  }
+  if (in.result_base + in.split.result_words > capacity) return reg::kWindowOverrun;
+  if (m_table_first + in.faces > capacity) return reg::kWindowOverrun;
+  return reg::kOk;
 }
 
 // The record's 9 words, in place when one DMI region holds them all.
@@ -65,18 +81,28 @@ pipeline::FloatFaceRecord WrapperBase::float_face_record(std::uint64_t face_in_s
 void WrapperBase::read_inputs(PassInputs& in) {
   in.error = reg::kOk;
   in.clear = (m_regs.take_start() & reg::kClear) != 0;
-  in.rays = m_regs.value(reg::kRayCount);
-  in.faces = m_regs.value(reg::kFaceCount);
-  in.face_first = m_regs.value(reg::kFaceFirst);
-  in.source_face = m_regs.value(reg::kSourceFace);
-  in.source_faces = m_regs.value(reg::kSourceFaces);
-  in.mask_start = m_regs.value(reg::kMaskStart);
-  in.start = {m_regs.value(reg::kStartX), m_regs.value(reg::kStartY), m_regs.value(reg::kStartZ)};
+  in.rays = m_regs.pass_value(reg::kRayCount);
+  in.faces = m_regs.pass_value(reg::kFaceCount);
+  in.face_first = m_regs.pass_value(reg::kFaceFirst);
+  in.source_face = m_regs.pass_value(reg::kSourceFace);
+  in.source_faces = m_regs.pass_value(reg::kSourceFaces);
+  in.mask_start = m_regs.pass_value(reg::kMaskStart);
+  in.start = {m_regs.pass_value(reg::kStartX), m_regs.pass_value(reg::kStartY), m_regs.pass_value(reg::kStartZ)};
+  in.ray_base = m_regs.pass_value(reg::kRayBase);
+  in.result_base = m_regs.pass_value(reg::kResultBase);
+  in.table_base = m_regs.pass_value(reg::kTableBase);
   in.split = m_split(in.rays);
+  const std::uint64_t table_home = m_layout.mask_bank ? 0 : in.faces * m_layout.face_words();
+  m_table_first = table_home + in.table_base;
+  for (const RayGroup& group : m_layout.groups)
+    for (unsigned b : group.banks) m_window[b] = in.ray_base;
+  m_window[m_layout.result_bank] = in.result_base;
   if (!in.split.fits) {
     in.error = reg::kTooManyRays;
   } else if (in.faces > m_layout.max_faces_per_set) {
     in.error = reg::kTooManyFaces;
+  } else if (window_error(in) != reg::kOk) {
+    in.error = reg::kWindowOverrun;
   } else {
     OwnSurfaceRange masked(in.mask_start);
     const OwnSurfaceTable table = own_surface_table();
@@ -86,10 +112,18 @@ void WrapperBase::read_inputs(PassInputs& in) {
   const std::int64_t limit = std::int64_t(1) << m_layout.value_bits;  // a code, or a float's bit pattern
   if (in.error == reg::kOk && (in.start.x >= limit || in.start.y >= limit || in.start.z >= limit))
     in.error = reg::kBadStartPoint;
-  if (in.error != reg::kOk) in.rays = in.faces = 0, in.split = m_split(0);
+  if (in.error != reg::kOk) {
+    in.rays = in.faces = 0, in.split = m_split(0);
+    std::fill(m_window.begin(), m_window.end(), 0);
+  }
 }
 
 void WrapperBase::begin_pass() {
+  if (!m_sideband.empty()) {
+    m_oracle = m_sideband.front().oracle;
+    m_timing_only = m_sideband.front().timing_only;
+    m_sideband.pop_front();
+  }
   m_regs.set_busy(true);
   write_signal(m_signals.start, true);
   write_signal(m_signals.busy, true);

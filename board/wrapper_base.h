@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <string>
 #include <vector>
@@ -35,6 +36,7 @@ namespace rc::board {
 struct PassInputs {
   std::uint64_t rays = 0, faces = 0;
   std::uint32_t face_first = 0, source_face = reg::kNoFace, source_faces = 1, mask_start = 0;
+  std::uint32_t ray_base = 0, result_base = 0, table_base = 0;  // the windows (register_map.h), in words
   pipeline::FixedVec3 start{0, 0, 0};  // codes (float lanes: the values' bit patterns)
   bool clear = false;
   RaySplit split;
@@ -111,10 +113,19 @@ class WrapperBase : public sc_core::sc_module {
   // model proven bit-identical to them (a recording, or a culled kernel). The pass then copies it
   // instead of computing every ray against every face; its timing, bank traffic and result words
   // are unchanged. nullptr: compute. Only the fast model supports it.
-  void set_oracle(const std::uint8_t* flags) { m_oracle = flags; }
+  // The pipelined driver sets the next pass's answer before this pass has begun in simulated time:
+  // each setting is queued and a pass takes the oldest at its start (none queued: the current one).
+  void set_oracle(const std::uint8_t* flags) { m_sideband.push_back({flags, m_timing_only, true}); }
   // Timing replay: the next passes neither compute nor write result words (their values are not
   // wanted); timing and the banks' traffic counters are unchanged. Only the fast model.
-  void set_timing_only(bool timing_only) { m_timing_only = timing_only; }
+  void set_timing_only(bool timing_only) {
+    if (!m_sideband.empty() && m_sideband.back().open) {
+      m_sideband.back().timing_only = timing_only;
+      m_sideband.back().open = false;
+    } else {
+      m_sideband.push_back({m_sideband.empty() ? m_oracle : m_sideband.back().oracle, timing_only, false});
+    }
+  }
 
   // First device clock edge at or after t (edges at multiples of the device period from time 0).
   sc_core::sc_time next_edge(const sc_core::sc_time& t) const;
@@ -125,8 +136,10 @@ class WrapperBase : public sc_core::sc_module {
  protected:
   // Word `index` of bank b (word_bits wide, little-endian), through DMI: in place when one region
   // holds the word (always, for pages of at least a word), else pieced together across regions.
+  // Ray and result banks are read and written through the pass's window (RAY_BASE, RESULT_BASE,
+  // latched by read_inputs): word `index` of the pass is word window + index of the bank.
   std::uint64_t bank_word(unsigned b, std::uint64_t index) {
-    const std::uint64_t address = m_addresses[b] + index * m_word_bytes;
+    const std::uint64_t address = m_addresses[b] + (m_window[b] + index) * m_word_bytes;
     if (const std::uint8_t* p = m_dmi[b].read_pointer(address, m_word_bytes)) return load_word(p, 0, m_word_bytes);
     std::uint8_t bytes[8];
     m_dmi[b].read(address, bytes, m_word_bytes);
@@ -136,13 +149,13 @@ class WrapperBase : public sc_core::sc_module {
   // usually lie in one page), else nullptr: bulk loops then run at raw-pointer speed, and fall back
   // to bank_word / set_bank_word when they cross a region.
   const std::uint8_t* bank_words(unsigned b, std::uint64_t words) {
-    return m_dmi[b].read_pointer(m_addresses[b], words * m_word_bytes);
+    return m_dmi[b].read_pointer(m_addresses[b] + m_window[b] * m_word_bytes, words * m_word_bytes);
   }
   std::uint8_t* writable_bank_words(unsigned b, std::uint64_t words) {
-    return m_dmi[b].write_pointer(m_addresses[b], words * m_word_bytes);
+    return m_dmi[b].write_pointer(m_addresses[b] + m_window[b] * m_word_bytes, words * m_word_bytes);
   }
   void set_bank_word(unsigned b, std::uint64_t index, std::uint64_t value) {
-    const std::uint64_t address = m_addresses[b] + index * m_word_bytes;
+    const std::uint64_t address = m_addresses[b] + (m_window[b] + index) * m_word_bytes;
     if (std::uint8_t* p = m_dmi[b].write_pointer(address, m_word_bytes)) return store_word(p, 0, m_word_bytes, value);
     std::uint8_t bytes[8];
     store_word(bytes, 0, m_word_bytes, value);
@@ -180,15 +193,24 @@ class WrapperBase : public sc_core::sc_module {
 
  private:
   void acknowledge();
+  std::uint32_t window_error(const PassInputs& in) const;
   void face_words(std::uint64_t face_in_set, std::uint64_t words[9]);
   void invalidate_direct_mem_ptr(sc_dt::uint64 start, sc_dt::uint64 end);
   void write_signal(sc_core::sc_signal<bool, sc_core::SC_MANY_WRITERS>* s, bool v) {
     if (s != nullptr && s->read() != v) s->write(v);
   }
 
+  struct Sideband {
+    const std::uint8_t* oracle;
+    bool timing_only;
+    bool open;  // set_oracle without its set_timing_only yet
+  };
+  std::deque<Sideband> m_sideband;
   std::vector<tlmx::DmiActivitySink*> m_sinks;
   std::vector<std::uint64_t> m_addresses;
   std::vector<tlmx::SparseDmiCache> m_dmi;  // per bank
+  std::vector<std::uint64_t> m_window;      // per bank: the pass's word offset (ray and result banks)
+  std::uint64_t m_table_first = 0;          // word index of the pass's own-surface table entry of face 0
   WrapperSignals m_signals;
   WrapperStats m_stats;
   std::function<void(const PassRecord&)> m_on_pass;

@@ -201,6 +201,7 @@ void BoardVisibility::load_triangles(const std::vector<Triangle>& faces) {
   if (options_.cpu_kernel != nullptr && options_.cpu_kernel != options_.oracle) options_.cpu_kernel->load_faces(faces, sheets());
   stats_.face_sets = faces_.empty() ? 0 : (faces_.size() + faces_per_set_ - 1) / faces_per_set_;
   resident_set_ = -1;
+  if (pipelined()) check_chunks();
   if (stats_.face_sets == 1) upload_faces(0);  // resident for the whole run
 }
 
@@ -310,7 +311,7 @@ void BoardVisibility::submit(const SegmentBatch& batch) {
   if (options_.oracle != nullptr) ask_oracle(batch);
   answer_cpu_part(batch);
   rays_ = total_rays_ - cpu_rays_;
-  charge_end_points(rays_);
+  if (!pipelined()) charge_end_points(rays_);  // pipelined: per chunk, while the board works
   run_step();
   if (!options_.concurrent) cpu_.join_second_cpu();  // the serial driver returns with every answer
 }
@@ -331,7 +332,7 @@ void BoardVisibility::submit_timing_only(std::size_t segments, int source_face) 
   }
   start_ = {0, 0, 0};
   set_source(source_face);
-  charge_end_points(rays_);
+  if (!pipelined()) charge_end_points(rays_);
   timing_only_ = true;
   run_step();
   if (!options_.concurrent) cpu_.join_second_cpu();
@@ -346,9 +347,11 @@ void BoardVisibility::run_step() {
   if (rays_ == 0 || faces_.empty()) {
     passes_.clear();
     next_pass_ = 0;
+    chunks_ = 0;
     if (options_.cpu_split.cores == 1) charge_cpu_part();
     return;
   }
+  if (pipelined()) return start_chunks();
   plan_passes();
   start_pass(passes_[0]);
   if (options_.cpu_split.cores == 1) charge_cpu_part();  // while the board works its first pass
@@ -370,6 +373,7 @@ void BoardVisibility::collect(std::vector<std::uint8_t>& blocked) {
 }
 
 void BoardVisibility::finish_step() {
+  if (pipelined()) return finish_chunks();
   if (next_pass_ < passes_.size()) {
     finish_pass(passes_[next_pass_]);  // started by submit()
     for (++next_pass_; next_pass_ < passes_.size(); ++next_pass_) {
@@ -414,9 +418,9 @@ void BoardVisibility::upload_rays(std::size_t batch) {
 // end on the face's sheet, with reg::kSameSheet on a face that continues its predecessor's sheet in
 // the set. A one-sided face is its own sheet: its word is the count of rays ending on it, the paper's
 // own-face table. MASK_START (start_pass) is the first ray ending on the set's first face's sheet.
-void BoardVisibility::upload_mask(std::size_t batch, std::size_t set) {
-  const auto begin = end_faces_.begin() + static_cast<long>(batch_first(batch));
-  const auto end = begin + static_cast<long>(batch_size(batch));
+void BoardVisibility::upload_mask(std::size_t first_ray, std::size_t ray_count, std::size_t set, std::uint64_t table_base) {
+  const auto begin = end_faces_.begin() + static_cast<long>(first_ray);
+  const auto end = begin + static_cast<long>(ray_count);
   const int f0 = static_cast<int>(set_first(set));
   const std::size_t n = set_size(set);
   const int f1 = f0 + static_cast<int>(n);
@@ -435,8 +439,9 @@ void BoardVisibility::upload_mask(std::size_t batch, std::size_t set) {
     }
     it = next;
   }
-  const std::uint64_t address = layout_.mask_bank ? ports_.board.bank_address(*layout_.mask_bank)
-                                                  : ports_.board.bank_address(layout_.face_bank) + n * 9 * word_bytes_;
+  const std::uint64_t address = (layout_.mask_bank ? ports_.board.bank_address(*layout_.mask_bank)
+                                                   : ports_.board.bank_address(layout_.face_bank) + n * 9 * word_bytes_) +
+                                table_base * word_bytes_;
   transfer(tlmx::DmaDirection::to_device, buffer_.data(), address, buffer_.size(), "own-face table");  // the trace's name since before sheets
 }
 
@@ -444,7 +449,7 @@ void BoardVisibility::start_pass(const Pass& pass) {
   if (pass.first_of_batch) upload_rays(pass.batch);
   const bool faces_every_pass = cpu_.profile().driver_model.face_upload == DriverModel::FaceUpload::EveryPass;
   if (resident_set_ != static_cast<long>(pass.set) || faces_every_pass) upload_faces(pass.set);
-  upload_mask(pass.batch, pass.set);
+  upload_mask(batch_first(pass.batch), batch_size(pass.batch), pass.set);
   const auto begin = end_faces_.begin() + static_cast<long>(batch_first(pass.batch));
   const auto mask_start = std::lower_bound(begin, begin + static_cast<long>(batch_size(pass.batch)),
                                            sheets().first(static_cast<int>(set_first(pass.set)))) - begin;
@@ -465,6 +470,7 @@ void BoardVisibility::start_pass(const Pass& pass) {
   }
   cpu_.clear_intervals();  // host compute from here on may overlap the pass
   write_registers(reg::kControl, {reg::kStart | (pass.first_of_batch ? reg::kClear : 0u)});
+  ++passes_started_;
   host_event("start pass", from);
 }
 

@@ -74,6 +74,11 @@ struct BoardVisibilityOptions {
   // or the float lanes' format), which the platform provides.
   CpuSplit cpu_split;
   VisibilityBackend* cpu_kernel = nullptr;
+  // The pipelined driver (board_visibility_pipelined.cpp; docs/board.md, "Pipelined passes"): a
+  // step's board segments go in chunks of this many into alternating halves of the ray and result
+  // banks and of the own-surface table, so packing and sending chunk k+1 and reading back chunk k-1
+  // overlap the wrapper's pass over chunk k. 0: off (the unpipelined protocol).
+  std::size_t chunk_rays = 0;
 };
 
 // Passes whose stream was bounded by one term of the pass time (PassRecord::limit: "lanes",
@@ -171,8 +176,22 @@ class BoardVisibility : public VisibilityBackend, public TimingReplayTarget {
   void upload_rays(std::size_t batch);
   void upload_faces(std::size_t set);
   void set_source(int source_face);
-  void upload_mask(std::size_t batch, std::size_t set);
+  // The own-surface table of rays [first, first + rays) against face set `set`, at `table_base` words
+  // after its usual place (TABLE_BASE).
+  void upload_mask(std::size_t first, std::size_t rays, std::size_t set, std::uint64_t table_base = 0);
   void read_results(std::size_t batch);
+
+  // The pipelined driver (board_visibility_pipelined.cpp).
+  bool pipelined() const { return options_.chunk_rays != 0; }
+  void check_chunks() const;  // at load: the chunk's halves fit their banks, one face set
+  void start_chunks();        // the step's first chunk (serial: every chunk)
+  void finish_chunks();       // the remaining chunks, and the read-backs
+  void send_chunk(std::size_t k);
+  void await_chunk(std::size_t k);  // until PASSES counts chunk k done
+  void read_chunk(std::size_t k);
+  std::size_t chunk_first(std::size_t k) const { return k * options_.chunk_rays; }
+  std::size_t chunk_size(std::size_t k) const { return std::min(rays_, chunk_first(k) + options_.chunk_rays) - chunk_first(k); }
+  std::uint64_t half_words() const { return layout_.bank_words / 2; }
 
   // Bus access from the host thread; each syncs the host's local time first.
   void write_registers(std::uint64_t offset, std::initializer_list<std::uint32_t> values);
@@ -242,6 +261,10 @@ class BoardVisibility : public VisibilityBackend, public TimingReplayTarget {
   bool timing_only_ = false;                 // the current step came from submit_timing_only
   std::vector<Pass> passes_;
   std::size_t next_pass_ = 0;
+  std::size_t chunks_ = 0, next_chunk_ = 0;  // the pipelined step: its chunks, the next to send
+  std::uint32_t passes_started_ = 0;         // STARTs written, as the PASSES register counts (mod 2^32)
+  std::uint32_t passes_done_ = 0;            // PASSES as last read
+  std::uint32_t chunk_base_ = 0;             // PASSES before the step's first chunk
   board::RaySplitMemo split_{layout_};  // of the current batch in the ray banks
   board::PassRecord last_record_;
   tlm::tlm_generic_payload register_trans_;

@@ -41,12 +41,14 @@ const char* to_string(DriverModel::Overlap overlap) { return kOverlaps[static_ca
 
 std::string DriverModel::name() const {
   return std::string(to_string(cost_unit)) + "/" + to_string(transfer) + "/" + to_string(face_upload) + "/" +
-         to_string(overlap) + (cpu_split.on() ? "/cpu " + cpu_split.name() : "");
+         to_string(overlap) + (cpu_split.on() ? "/cpu " + cpu_split.name() : "") +
+         (chunk_rays != 0 ? "/chunks of " + std::to_string(chunk_rays) : "");
 }
 
 bool DriverModel::operator==(const DriverModel& o) const {
   return cost_unit == o.cost_unit && transfer == o.transfer && face_upload == o.face_upload && overlap == o.overlap &&
-         pio_read_round_trip == o.pio_read_round_trip && cpu_split == o.cpu_split;
+         pio_read_round_trip == o.pio_read_round_trip && cpu_split == o.cpu_split &&
+         chunk_rays == o.chunk_rays;
 }
 
 namespace {
@@ -82,6 +84,9 @@ DriverModel read_driver_model(const profiles::ProfileReader& r) {
   m.pio_read_round_trip =
       sc_core::sc_time(r.number("driver_model.pio_read_round_trip_seconds", 0, 1e-3), sc_core::SC_SEC);
   m.cpu_split = read_cpu_split(r);
+  if (r.has("driver_model.chunk_rays")) {  // a 32-bit RAY_COUNT bounds a chunk
+    m.chunk_rays = static_cast<std::uint64_t>(r.number("driver_model.chunk_rays", 0, 4294967295.0, true));
+  }
   return m;
 }
 

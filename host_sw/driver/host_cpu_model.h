@@ -61,6 +61,9 @@ struct DriverModel {
   // cpu_balance ("fixed" or "balanced") and cpu_cores (1 or 2); absent or a fixed share of 0: off.
   // A study sweeps them as profile fields ("host.cpu_share"); `run --cpu-share` overrides them.
   CpuSplit cpu_split;
+  // The pipelined driver (BoardVisibilityOptions::chunk_rays): optional driver_model.chunk_rays, rays
+  // per chunk; absent or 0: off. Swept as "host.chunk_rays"; `run --chunk-rays` overrides it.
+  std::uint64_t chunk_rays = 0;
 
   std::string name() const;  // e.g. "per_word/pio/every_pass/form_factors" (+ "/cpu 0.25 on 2 cpus" when split)
   bool operator==(const DriverModel& other) const;

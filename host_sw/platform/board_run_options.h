@@ -32,6 +32,9 @@ struct BoardRunOptions {
   // (driver_model.cpu_*, usually off). Its answers come from the oracle, if any, else from a host
   // kernel at the lanes' width or float format that the system makes.
   CpuSplit cpu_split;
+  // The pipelined driver (host_sw/driver/board_visibility_pipelined.cpp; one card only): rays per
+  // chunk; 0: the host profile's (driver_model.chunk_rays, usually absent: the unpipelined driver).
+  std::size_t chunk_rays = 0;
   // configs/hosts/NAME.json, or a path. The command's default: the profile fitted to the paper's
   // measurements (docs/calibration.md), so a library call gives `rc2000sim run --impl board`'s times.
   std::string host = "athlon-mp-2600-calibrated";

@@ -26,6 +26,11 @@ BoardSetup make_board_setup(const BoardRunOptions& o) {
     throw std::invalid_argument("--cpu-share: a CPU/FPGA split drives one card (got " +
                                 std::to_string(o.cards.value()) + " cards)");
   }
+  s.driver.chunk_rays = o.chunk_rays != 0 ? o.chunk_rays : s.host.driver_model.chunk_rays;  // the option, else the profile's
+  if (s.driver.chunk_rays != 0 && o.cards > 1) {
+    throw std::invalid_argument("--chunk-rays: the pipelined driver drives one card (got " +
+                                std::to_string(o.cards.value()) + " cards)");
+  }
   if (o.trace) {
     s.trace_first_step = o.trace_first_step;
     s.trace_last_step = o.trace_last_step;

@@ -98,11 +98,17 @@ profiles::ProfileDocument with_driver_model(const profiles::ProfileDocument& pro
                                     .with_field("driver_model.transfer", to_string(model.transfer), source)
                                     .with_field("driver_model.face_upload", to_string(model.face_upload), source)
                                     .with_field("driver_model.overlap", to_string(model.overlap), source);
-  if (!model.cpu_split.on() && !profile.is_sourced("driver_model.cpu_share")) return d;
-  const char* balance = kCpuBalances[model.cpu_split.mode == CpuSplit::Mode::balanced ? 1 : 0];
-  return d.with_field("driver_model.cpu_share", model.cpu_split.share, source)
-      .with_field("driver_model.cpu_balance", std::string(balance), source)
-      .with_field("driver_model.cpu_cores", static_cast<std::int64_t>(model.cpu_split.cores), source);
+  if (model.cpu_split.on() || profile.is_sourced("driver_model.cpu_share")) {
+    const char* balance = kCpuBalances[model.cpu_split.mode == CpuSplit::Mode::balanced ? 1 : 0];
+    d = d.with_field("driver_model.cpu_share", model.cpu_split.share, source)
+            .with_field("driver_model.cpu_balance", std::string(balance), source)
+            .with_field("driver_model.cpu_cores", static_cast<std::int64_t>(model.cpu_split.cores), source);
+  }
+  // Optional (absent: 0, off): written only when the model's differs, so a profile keeps its own source.
+  const bool has_chunks = profile.is_sourced("driver_model.chunk_rays");
+  if ((has_chunks ? profile.value_text("driver_model.chunk_rays") : "0") != std::to_string(model.chunk_rays))
+    d = d.with_field("driver_model.chunk_rays", static_cast<std::int64_t>(model.chunk_rays), source);
+  return d;
 }
 
 HostProfile with_driver_model(const HostProfile& base, const DriverModel& model) {
@@ -113,6 +119,7 @@ HostProfile with_driver_model(const HostProfile& base, const DriverModel& model)
   p.driver_model.face_upload = model.face_upload;
   p.driver_model.overlap = model.overlap;
   p.driver_model.cpu_split = model.cpu_split;
+  p.driver_model.chunk_rays = model.chunk_rays;
   p.document = with_driver_model(base.document, model, source);
   return p;
 }

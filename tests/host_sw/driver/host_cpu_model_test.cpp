@@ -65,6 +65,13 @@ TEST(HostProfile, WithDriverModelRoundTrips) {
   const HostProfile with_split = with_driver_model(base, split);
   EXPECT_TRUE(with_split.driver_model.cpu_split == split.cpu_split);
   EXPECT_TRUE(host_profile_from_document(with_split.document, base.file).driver_model.cpu_split == split.cpu_split);
+  DriverModel chunked = m;
+  chunked.chunk_rays = 256;
+  const HostProfile with_chunks = with_driver_model(base, chunked);
+  EXPECT_EQ(with_chunks.driver_model.chunk_rays, 256u);
+  EXPECT_EQ(host_profile_from_document(with_chunks.document, base.file).driver_model.chunk_rays, 256u);
+  EXPECT_TRUE(with_driver_model(base, m).document.value_text("driver_model.chunk_rays") ==
+              base.document.value_text("driver_model.chunk_rays"));  // unchanged: the profile keeps its source
 }
 
 }  // namespace

@@ -111,17 +111,11 @@ profiles::ProfileDocument with_driver_model(const profiles::ProfileDocument& pro
   return d;
 }
 
+// The document is the profile's one truth (as with a study's settings): the typed profile is read back
+// from it, so no driver-model field can be set in one and forgotten in the other.
 HostProfile with_driver_model(const HostProfile& base, const DriverModel& model) {
   const std::string source = "variant " + model.name() + " (docs/calibration.md, Variants)";
-  HostProfile p = base;
-  p.driver_model.cost_unit = model.cost_unit;
-  p.driver_model.transfer = model.transfer;
-  p.driver_model.face_upload = model.face_upload;
-  p.driver_model.overlap = model.overlap;
-  p.driver_model.cpu_split = model.cpu_split;
-  p.driver_model.chunk_rays = model.chunk_rays;
-  p.document = with_driver_model(base.document, model, source);
-  return p;
+  return host_profile_from_document(with_driver_model(base.document, model, source), base.file);
 }
 
 HostProfile load_host_profile(const std::string& path) {

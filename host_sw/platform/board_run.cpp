@@ -3,7 +3,7 @@
 #include <chrono>
 #include <stdexcept>
 
-#include "host_sw/driver/trace_json.h"
+#include "host_sw/platform/trace_json.h"
 
 namespace rc {
 

@@ -12,7 +12,7 @@
 
 #include <unistd.h>
 
-#include "host_sw/driver/trace_json.h"
+#include "host_sw/platform/trace_json.h"
 #include "host_sw/visibility/visibility_factory.h"
 #include "host_sw/visibility/visibility_recording.h"
 #include "tests/host_sw/platform/system_support.h"

@@ -47,7 +47,7 @@ nlohmann::ordered_json sweep_json(const Study& s, const SceneSweep& r, const std
   j["modelled_bank_capacity_bytes"] = banks;
   j["bank_capacity_note"] =
       "0: the profile's banks. Otherwise banks of this size, which change no pass, transfer or time for this "
-      "scene (no step batches with either size; studies/config_sweep.cpp), to keep the model's memory small";
+      "scene (no step batches with either size; host_sw/studies/config_checker.cpp, compact_bank_capacity), to keep the model's memory small";
   nlohmann::ordered_json estimates = nlohmann::ordered_json::array();
   for (const SweptFit& f : fits) {
     nlohmann::ordered_json e = {{"device", f.cannot_exist.empty() ? f.estimates.model.device : f.device}, {"bits", f.bits}};

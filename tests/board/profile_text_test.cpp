@@ -16,31 +16,25 @@
 
 #include "board/device_profile.h"
 #include "host_sw/profiles/profile_json.h"
+#include "tests/common/temp_folder.h"
 
 namespace rc::board::test {
 namespace {
 
 namespace fs = std::filesystem;
 
-class ProfileText : public ::testing::Test {
+class ProfileText : public ::rc::test::TempFolderTest {
  protected:
+  ProfileText() : TempFolderTest("rc_profile_text") {}
+
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("rc_profile_text_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    TempFolderTest::SetUp();
     std::ifstream in(profiles::default_config_dir() + "/devices/xc2v6000.json", std::ios::binary);
     std::ostringstream text;
     text << in.rdbuf();
     shipped_ = text.str();
   }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string write(const std::string& bytes) {
-    const std::string path = (dir_ / "p.json").string();
-    std::ofstream(path, std::ios::binary) << bytes;
-    return path;
-  }
+  std::string write(const std::string& bytes) const { return TempFolderTest::write("p.json", bytes); }
   static std::string error_of(const std::string& path) {
     try {
       (void)find_device_profile(path);
@@ -61,7 +55,6 @@ class ProfileText : public ::testing::Test {
     return 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
   }
 
-  fs::path dir_;
   std::string shipped_;
 };
 

@@ -17,6 +17,7 @@
 #include "scenes/mesh_import.h"
 #include "scenes/prepare.h"
 #include "scenes/scene_source.h"
+#include "tests/common/temp_folder.h"
 
 namespace rc {
 namespace {
@@ -27,20 +28,9 @@ const std::string kScene =
     "material w reflectance 0.5 0.5 0.5 emission 1 1 1\n"
     "quad floor w  0 0 0  0 0 1  1 0 1  1 0 0\n";
 
-class SceneSourceTest : public ::testing::Test {
+class SceneSourceTest : public ::rc::test::TempFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("rc_scene_source_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string write(const std::string& name, const std::string& bytes) {
-    std::ofstream(dir_ / name, std::ios::binary) << bytes;
-    return (dir_ / name).string();
-  }
+  SceneSourceTest() : TempFolderTest("rc_scene_source") {}
   static std::string prepare_error(const std::string& path) {
     SceneOptions o;
     o.file = path;
@@ -60,7 +50,6 @@ class SceneSourceTest : public ::testing::Test {
     return "{\"schema\": \"rc2000sim.composition/1\", " + body + "}";
   }
 
-  fs::path dir_;
 };
 
 // Both used to go to Assimp ("DXF: no data blocks loaded"): the format was sniffed from 64 KiB.

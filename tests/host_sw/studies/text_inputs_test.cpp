@@ -18,26 +18,16 @@
 #include "host_sw/studies/calibration_variants.h"
 #include "host_sw/studies/paper_workload.h"
 #include "host_sw/studies/study_file.h"
+#include "tests/common/temp_folder.h"
 
 namespace rc {
 namespace {
 
 namespace fs = std::filesystem;
 
-class TextInputs : public ::testing::Test {
+class TextInputs : public ::rc::test::TempFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("rc_text_inputs_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string write(const std::string& name, const std::string& bytes) {
-    std::ofstream(dir_ / name, std::ios::binary) << bytes;
-    return (dir_ / name).string();
-  }
+  TextInputs() : TempFolderTest("rc_text_inputs") {}
   static std::string read(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     std::ostringstream text;
@@ -52,8 +42,6 @@ class TextInputs : public ::testing::Test {
     }
     return "(no error)";
   }
-
-  fs::path dir_;
 };
 
 TEST_F(TextInputs, TheTable2FileRefusesKeysTwiceCommentsDepthAndEncodings) {

@@ -21,6 +21,8 @@
 #include "host_sw/platform/run_report_json.h"
 #include "host_sw/studies/calibration_variants.h"
 #include "host_sw/studies/paper_prediction.h"
+#include "host_sw/studies/workload.h"
+#include "host_sw/studies/workload_json.h"
 #include "host_sw/visibility/visibility_factory.h"
 
 namespace rc {
@@ -128,6 +130,13 @@ ordered_json paper_json(const PaperDocument& d) {
       {"left_out_errors", d.left_out_errors},
       {"left_out_error_low", d.left_out_error_low},
       {"left_out_error_high", d.left_out_error_high}};
+  // Each scene's workload (workload.h), recorded as report.json and sweep.json record theirs.
+  ordered_json workloads = ordered_json::array();
+  for (std::size_t i = 0; i < d.rows.size(); i += kPaperImplementations) {
+    const PaperRow& s = d.rows[i].scene;
+    workloads.push_back(workload_json(paper_workload(s), s.faces, s.patches, s.steps));
+  }
+  j["workloads"] = workloads;
   j["scene_records"] = scenes;
   j["estimate_records"] = estimates;
   j["energy_records"] = energy;

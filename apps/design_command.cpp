@@ -2,11 +2,11 @@
 // workload, and the Pareto front of time, energy and banks, every figure simulated
 // (host_sw/studies/design_search.h). Writes design.json, design.csv, design.md, roofline.csv,
 // best-device.json (the best design's profile, for `rc2000sim run --device`) and two plots.
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "apps/cli_options.h"
 #include "apps/design_document.h"

@@ -1,7 +1,7 @@
 // rc2000tlm._core: the thin C++ side of the Python module (python/rc2000tlm/__init__.py). Each
 // function calls the library's typed API once (host_sw/platform/board_run.h, host_sw/studies/) and
 // hands the result back through the JSON documents the library already writes (run report,
-// sweep rows), which the Python side turns into typed objects. SystemC elaborates once per process:
+// sweep rows, design.json), which the Python side turns into typed objects. SystemC elaborates once per process:
 // the Python side calls each of these in a fresh worker process. Errors are the library's own
 // exceptions, which pybind11 raises as ValueError (std::invalid_argument) or RuntimeError, with the
 // same message the command line prints.
@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <systemc>
 
+#include "design_module_json.h"
 #include "host_sw/platform/board_run.h"
 #include "host_sw/platform/run_report.h"
 #include "host_sw/platform/run_report_json.h"
@@ -147,4 +148,7 @@ PYBIND11_MODULE(_core, m) {
         "A study given as TOML text (`name` labels it in errors); its rows as JSON text");
   m.def("paper_table", &paper_table, py::arg("host") = "athlon-mp-2600-calibrated", py::arg("progress") = false,
         "Table 2 as `rc2000sim paper` predicts it; one record per scene and implementation, as JSON text");
+  m.def("design", &rc::design_search, py::arg("options"), py::arg("progress") = false,
+        "`rc2000sim design` with the options given (JSON, snake_case names); design.json's document as JSON text");
+  m.def("design_defaults", &rc::design_defaults, "The design search's defaults by option name, as JSON text");
 }

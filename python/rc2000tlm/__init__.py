@@ -9,13 +9,16 @@
     s.to_dataframe()                                # one row per configuration (and scene)
     rc2000tlm.study("configs/studies/default.toml") # a study file (docs/studies.md)
     rc2000tlm.paper().to_dataframe()                # Table 2 as `rc2000sim paper` predicts it
-    rc2000tlm.load("out/sweep")                     # outputs rc2000sim already wrote
+    d = rc2000tlm.design(device="virtex4-sx55", lanes="1-4", steps=30)  # `rc2000sim design`
+    d.best, d.front, d.to_dataframe()               # the fastest design, the Pareto front, every design
+    rc2000tlm.load("out/sweep")                     # outputs rc2000sim already wrote (design too)
 
 SystemC elaborates once per process, so every simulation runs in a worker process of a pool sized to
 the machine's cores (rc2000tlm.workers); errors come back as ValueError or RuntimeError with the
 command line's message. README, "Use it from Python".
 """
-from .results import PaperResult, RunResult, SweepResult, load
-from .workers import paper, run, run_many, study, sweep
+from .results import DesignBound, DesignPoint, DesignResult, PaperResult, RunResult, SweepResult, load
+from .workers import design, design_defaults, paper, run, run_many, study, sweep
 
-__all__ = ["PaperResult", "RunResult", "SweepResult", "load", "paper", "run", "run_many", "study", "sweep"]
+__all__ = ["DesignBound", "DesignPoint", "DesignResult", "PaperResult", "RunResult", "SweepResult", "design",
+           "design_defaults", "load", "paper", "run", "run_many", "study", "sweep"]

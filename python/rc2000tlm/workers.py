@@ -5,12 +5,13 @@ whose main module is no file (`python3 -`, notebooks) work the same."""
 import builtins
 import concurrent.futures
 import json
+import math
 import os
 import subprocess
 import sys
 import tempfile
 
-from .results import PaperResult, RunResult, SweepResult
+from .results import DesignResult, PaperResult, RunResult, SweepResult
 
 
 def _find_configs(env):
@@ -156,3 +157,39 @@ def paper(host="athlon-mp-2600-calibrated", progress=False):
     driver-model variants); a PaperResult. Minutes of work: progress shows its phases on stderr."""
     kwargs = {"host": host, "progress": progress}
     return PaperResult(_submit_all([("paper_table", kwargs)], False, "paper", progress)[0])
+
+
+def _design_value(v):
+    """A value as the C++ side reads it: a list or tuple joined as the command line lists it ("1,2,4"),
+    a number that JSON cannot hold (NaN, infinity) as its text, so that it is refused by name."""
+    if isinstance(v, (list, tuple)):
+        return ",".join(str(_design_value(x)) for x in v)
+    if hasattr(v, "item") and not isinstance(v, (str, bytes)):  # a numpy or pandas scalar
+        v = v.item()
+    if isinstance(v, float) and not math.isfinite(v):
+        return repr(v)
+    return v
+
+
+def design(progress=False, **options):
+    """A design search as `rc2000sim design` runs it (docs/design.md): the fastest feasible design of one
+    device for one workload and the Pareto front of time, energy and banks, every figure simulated.
+    The options are the command's, by the same names in snake_case (scene, faces, face_levels,
+    patch_levels, patch_size, steps, culled, form_factor, device, host, lanes, banks, bank_clocks,
+    results, bits, multipliers, cards, concurrent, max_banks, min_bits, max_energy, max_power,
+    exhaustive), with the command's defaults (design_defaults() lists them); an axis takes the
+    command's text ("1-4"), a list ([1, 2, 4]) or one value. An option the command does not have is a
+    TypeError; a value it refuses is a ValueError with its message. progress: the search's phases on
+    stderr. Returns a DesignResult."""
+    given = {k: _design_value(v) for k, v in options.items() if v is not None}
+    kwargs = {"options": json.dumps(given), "progress": progress}
+    response = _submit_all([("design", kwargs)], False, "design", progress)[0]
+    return DesignResult(response["design"], response["best_device"])
+
+
+def design_defaults():
+    """The design search's defaults by option name, from the C++ options (the command line's); None
+    where the command's rule applies (lanes: 1 .. the most that fit; banks: 5 .. max_banks; bank
+    clocks: the profile's; steps: Table 2's for a paper scene, else to convergence; max_banks: the
+    profile's count; no energy or power cap)."""
+    return _submit_all([("design_defaults", {})], False, "design")[0]

@@ -10,7 +10,8 @@
 #     (its study.csv) gives the same rows;
 #  4. a bad study arrives as an exception (ValueError, RuntimeError) carrying the command line's message;
 #  5. paper() gives the installed `rc2000sim paper`'s Table 2 cells (paper.csv's scene records);
-#  5. with MODE=notebook: examples/python/sweep-results.ipynb runs headless (nbclient).
+#  6. design() gives the installed `rc2000sim design`'s design.json (load() of its folder);
+#  with MODE=notebook: examples/python/sweep-results.ipynb runs headless (nbclient).
 # Prints "SKIP: <reason>" and exits 77 when a Debian package it needs is missing (python3-pandas,
 # python3-nbclient, python3-ipykernel) or the module was not built (RC_BUILD_PYTHON).
 # usage: python_test.sh BUILD_DIR REPO_ROOT PYTHON MODE(module|notebook)
@@ -160,4 +161,13 @@ for col in ("seconds", "paper_seconds", "spread_min_seconds", "spread_max_second
         assert (a is None or a != a) == (b != b) and (b != b or abs(a - b) <= 1e-9 * abs(b)), (col, a, b)
 print("   %d Table 2 cells equal paper.csv's" % len(got))
 PY
-echo "PASS: the installed module runs sweeps, runs, studies and the paper's table into DataFrames; errors carry the command's message"
+step "6. design() from the installed prefix is the installed rc2000sim design (tests/python/design_test.py: the rest)"
+"$prefix/bin/rc2000sim" design --device virtex4-sx55 --faces 70 --patch-levels 1 --steps 5 --lanes 1 --max-banks 6 --quiet \
+  --out "$work/cli-design" > /dev/null
+"$python" - "$work/cli-design" <<'PY'
+import sys, rc2000tlm
+got = rc2000tlm.design(device="virtex4-sx55", faces=70, patch_levels=1, steps=5, lanes=1, max_banks=6)
+assert got.to_dict() == rc2000tlm.load(sys.argv[1]).to_dict() and got.best is not None
+print("   %d designs simulated; best %s" % (len(got.to_dataframe()), got.best.design))
+PY
+echo "PASS: the installed module runs sweeps, runs, studies, the paper's table and design searches into DataFrames; errors carry the command's message"

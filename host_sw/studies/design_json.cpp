@@ -1,0 +1,130 @@
+#include "host_sw/studies/design_json.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace rc {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json number(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
+
+std::string fmt(const char* format, double v) {
+  char text[64];
+  std::snprintf(text, sizeof text, format, v);
+  return text;
+}
+
+std::string scene_arguments(const SceneOptions& s) {
+  std::string a;
+  if (!s.file.empty()) a += " --scene " + s.file;
+  if (s.face_target > 0) a += " --faces " + std::to_string(s.face_target);
+  if (s.face_levels > 0) a += " --face-levels " + std::to_string(s.face_levels);
+  if (s.patch_size > 0) a += " --patch-size " + fmt("%.17g", s.patch_size);
+  else a += " --patch-levels " + std::to_string(s.patch_levels);
+  return a;
+}
+
+Json point_json(const DesignPoint& p, const DesignSearchResult& r) {
+  const SweepConfig& c = p.design.config;
+  Json j;
+  j["design"] = describe(p.design);
+  j["device"] = c.device;
+  j["lanes"] = c.lanes;
+  j["banks"] = c.banks;
+  j["bank_clock_mhz"] = p.design.bank_clock_mhz;
+  j["results"] = board::to_string(p.design.results);
+  j["bits"] = c.bits;
+  j["multipliers"] = to_string(p.design.multipliers);
+  j["cards"] = c.cards;
+  j["concurrent"] = c.concurrent;
+  j["clock_mhz"] = number(p.row.clock_mhz);
+  j["simulated_seconds"] = p.row.simulated_seconds;
+  j["speedup_vs_reference"] = r.reference ? number(r.reference->row.simulated_seconds / p.row.simulated_seconds) : Json(nullptr);
+  j["speedup_vs_software"] = number(r.software_seconds / p.row.simulated_seconds);
+  j["energy_joules"] = number(p.row.energy_joules);
+  j["average_watts"] = number(p.row.average_watts);
+  j["tests"] = p.tests;
+  j["tests_per_second"] = p.tests_per_second;
+  j["tests_per_second_while_fpga_busy"] = number(p.row.intersections_per_second_while_busy);
+  j["bank_bytes_per_test"] = p.bank_bytes_per_test;
+  j["pci_bytes_per_test"] = p.pci_bytes_per_test;
+  j["bound"] = {{"run", p.bound.run}, {"fpga_stream", p.bound.fpga}, {"fpga_share", p.bound.fpga_share},
+                {"fpga_next", p.bound.next}, {"text", p.bound.text()}};
+  j["meets_constraints"] = p.meets_constraints;
+  j["on_front"] = p.on_front;
+  return j;
+}
+
+Json roofline_json(const Roofline& r) {
+  Json j;
+  j["device"] = r.device;
+  j["lanes_tests_per_second"] = r.lanes_tests_per_second;
+  j["lanes"] = r.lanes;
+  j["clock_mhz"] = r.clock_mhz;
+  j["sram_bytes_per_second"] = r.sram_bytes_per_second;
+  j["banks"] = r.banks;
+  j["bank_clock_mhz"] = r.bank_clock_mhz;
+  j["pci_bytes_per_second"] = r.pci_bytes_per_second;
+  j["pci_tests_per_second"] = r.pci_tests_per_second;
+  j["host_tests_per_second"] = r.host_tests_per_second;
+  return j;
+}
+
+}  // namespace
+
+std::string run_command(const DesignDocument& doc, const DesignPoint& p, const std::string& profile_file) {
+  const SweepConfig& c = p.design.config;
+  const DesignWorkload& w = doc.result.workload;
+  std::string cmd = "rc2000sim run --impl board --device " + doc.out_dir + "/" + profile_file + " --host " + doc.space.host +
+                    " --lanes " + std::to_string(c.lanes) + " --banks " + std::to_string(c.banks) + " --bits " +
+                    std::to_string(c.bits);
+  if (c.cards > 1) cmd += " --cards " + std::to_string(c.cards);
+  if (c.concurrent) cmd += " --concurrent";
+  cmd += scene_arguments(w.scene) + " --steps " + std::to_string(doc.result.steps) + " --form-factor " + w.form_factor;
+  if (w.paper_faithful) cmd += " --paper-faithful";
+  return cmd + " --out " + doc.out_dir + "/best-run";
+}
+
+Json design_json(const DesignDocument& doc) {
+  const DesignSearchResult& r = doc.result;
+  Json j;
+  j["schema"] = "rc2000sim.design/1";
+  j["device"] = r.device;
+  j["workload"] = {{"scene", r.workload.scene.file.empty() ? "cornell-box" : r.workload.scene.file},
+                   {"faces", r.faces},
+                   {"patches", r.patches},
+                   {"steps", r.steps},
+                   {"paper_faithful", r.workload.paper_faithful},
+                   {"form_factor", r.workload.form_factor}};
+  j["constraints"] = {{"max_banks", r.max_banks},
+                      {"min_bits", doc.constraints.min_bits},
+                      {"max_energy_joules", number(doc.constraints.max_energy_joules)},
+                      {"max_watts", number(doc.constraints.max_watts)}};
+  j["designs"] = r.designs;
+  j["infeasible"] = r.infeasible;
+  j["pruned_spare_banks"] = r.pruned;
+  j["simulated"] = r.points.size();
+  j["infeasible_examples"] = r.infeasible_reasons;
+  j["software_seconds"] = r.software_seconds;
+  if (r.best) {
+    j["best"] = point_json(r.points[*r.best], r);
+    j["best"]["run_command"] = run_command(doc, r.points[*r.best], "best-device.json");
+  } else {
+    j["best"] = nullptr;
+  }
+  if (r.reference) j["reference"] = point_json(*r.reference, r);
+  Json front = Json::array();
+  for (const DesignPoint& p : r.points)
+    if (p.on_front) front.push_back(point_json(p, r));
+  j["front"] = front;
+  j["roofline"] = roofline_json(doc.roofline);
+  Json points = Json::array();
+  for (const DesignPoint& p : r.points) points.push_back(point_json(p, r));
+  j["points"] = points;
+  return j;
+}
+
+}  // namespace rc

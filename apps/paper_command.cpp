@@ -137,6 +137,10 @@ ordered_json paper_json(const PaperDocument& d) {
     workloads.push_back(workload_json(paper_workload(s), s.faces, s.patches, s.steps));
   }
   j["workloads"] = workloads;
+  j["concurrent_mechanisms"] = {
+      {"splits", "CPU/FPGA split, software tests balanced against the board on 1 or 2 CPUs (docs/calibration.md)"},
+      {"pipelined", "the pipelined driver, alone and with the split on 2 CPUs (\"/chunks of N\" in a mechanism's name)"},
+      {"pipelined_chunk_rule", kPipelinedChunkRule}};
   j["scene_records"] = scenes;
   j["estimate_records"] = estimates;
   j["energy_records"] = energy;
@@ -201,7 +205,7 @@ std::string with_spread(const PaperTableRow& row) {
 void print_table(const PaperDocument& d) {
   std::printf("\nTable 2 (seconds; paper figures in brackets; * = calibration column; predictions with [an interval:\n"
               "the driver-model variants within %.0f%% of the best cross-validated error, the concurrent column's CPU/FPGA\n"
-              "split mechanisms, widened by the %.0f%%-%.0f%% quantiles of the calibration's left-out errors, %+.1f%%..%+.1f%%])\n",
+              "split and pipelined-driver mechanisms, widened by the %.0f%%-%.0f%% quantiles of the calibration's left-out errors, %+.1f%%..%+.1f%%])\n",
               100 * kVariantTolerance, 100 * kIntervalQuantiles[0], 100 * kIntervalQuantiles[1], 100 * d.left_out_error_low,
               100 * d.left_out_error_high);
   std::printf("%6s %7s %6s %6s | %17s | %17s | %24s | %24s | %7s\n", "faces", "patches", "steps", "ours", "software*",

@@ -106,7 +106,8 @@ void prediction_intervals(std::ostream& md, const PaperDocument& d) {
         "Each withheld cell with an interval (how it is made: [../calibration.md](../calibration.md), \"Prediction\n"
         "intervals\"): from the fastest to the slowest of the driver-model variants above and, for the concurrent\n"
         "column, the CPU/FPGA split mechanisms (software tests balanced against the board on the solver's processor or\n"
-        "on the second Athlon, under both overlaps), each bound divided by 1 + the "
+        "on the second Athlon, under both overlaps) and the pipelined driver alone and with the split on the second\n"
+        "Athlon (\"/chunks of N\": " << kPipelinedChunksPerStep << " chunks per step; under sec 4.3's overlap),\neach bound divided by 1 + the "
      << fixed(100 * kIntervalQuantiles[0], 0) << "% or " << fixed(100 * kIntervalQuantiles[1], 0)
      << "% quantile of the calibration's\nleft-out relative errors (" << d.left_out_errors << " pooled over the in-spread variants: "
      << percent(d.left_out_error_low) << " and " << percent(d.left_out_error_high) << ").\n\n"

@@ -16,12 +16,23 @@ namespace {
 // balanced against the board on the solver's processor or on the second Athlon.
 std::vector<CpuSplit> split_mechanisms() { return {parse_cpu_split("balanced", 1), parse_cpu_split("balanced", 2)}; }
 
+// The concurrent column under `model` (a split, a pipelined driver or both) as a mechanism case.
+void add_mechanism(std::size_t scene_index, const PaperScene& scene, const HostProfile& variant, const DriverModel& model,
+                   const std::string& host_name, std::vector<SpreadCase>& out, std::vector<TimingCase>& cases) {
+  TimingCase c = paper_timing_case(scene, PaperImplementation::Concurrent, host_name);
+  c.label += " " + model.name();
+  c.board.host_profile = with_driver_model(variant, model);
+  out.push_back({scene_index, static_cast<int>(PaperImplementation::Concurrent), model.name(), true, cases.size()});
+  cases.push_back(c);
+}
+
 // A spread case that is the main column's own case (the default profile itself) is not simulated
 // twice: its outcome is the main one (main_index).
 std::vector<SpreadCase> spread_cases(const std::vector<PaperScene>& scenes, const std::vector<CalibratedVariant>& variants,
                                      const HostProfile& host, std::vector<TimingCase>& cases) {
   std::vector<SpreadCase> out;
   for (std::size_t i = 0; i < scenes.size(); ++i) {
+    const std::uint64_t chunk = pipelined_chunk_rays(scenes[i]);
     for (const CalibratedVariant& v : variants) {
       if (!v.in_spread) continue;
       for (const DriverModel& m : with_each_overlap(v.profile.driver_model)) {
@@ -40,14 +51,19 @@ std::vector<SpreadCase> spread_cases(const std::vector<PaperScene>& scenes, cons
           }
           out.push_back(spread);
         }
-        for (const CpuSplit& split : split_mechanisms()) {  // the concurrent column only
+        // The concurrent column only: each split under each overlap; the pipelined driver alone and with the
+        // split on 2 CPUs under sec 4.3's overlap (pipelined_splits).
+        for (const CpuSplit& split : split_mechanisms()) {
           DriverModel with_split = m;
           with_split.cpu_split = split;
-          TimingCase c = paper_timing_case(scenes[i], PaperImplementation::Concurrent, host.name);
-          c.label += " " + with_split.name();
-          c.board.host_profile = with_driver_model(v.profile, with_split);
-          out.push_back({i, static_cast<int>(PaperImplementation::Concurrent), with_split.name(), true, cases.size()});
-          cases.push_back(c);
+          add_mechanism(i, scenes[i], v.profile, with_split, host.name, out, cases);
+        }
+        if (m.overlap != DriverModel::Overlap::FormFactors) continue;
+        for (const CpuSplit& split : pipelined_splits()) {
+          DriverModel pipelined = m;
+          pipelined.cpu_split = split;
+          pipelined.chunk_rays = chunk;
+          add_mechanism(i, scenes[i], v.profile, pipelined, host.name, out, cases);
         }
       }
     }
@@ -64,6 +80,17 @@ TimingCase bank_variant_case(const PaperScene& s, const BankVariant& v, const st
 }
 
 }  // namespace
+
+std::vector<CpuSplit> pipelined_splits() { return {CpuSplit{}, parse_cpu_split("balanced", 2)}; }
+
+std::uint64_t pipelined_chunk_rays(const PaperScene& scene) {
+  const VisibilityRecording& recording = scene.functional.recording;
+  const std::size_t steps = std::min<std::size_t>(recording.steps(), static_cast<std::size_t>(scene.row.steps));
+  std::uint64_t largest = 0;
+  for (std::size_t step = 0; step < steps; ++step) largest = std::max<std::uint64_t>(largest, recording.segments(step));
+  if (largest == 0) throw std::invalid_argument("pipelined_chunk_rays: scene " + scene.row.label() + " has no segments to chunk");
+  return (largest + kPipelinedChunksPerStep - 1) / kPipelinedChunksPerStep;
+}
 
 std::vector<std::pair<std::string, double>> PaperPrediction::spread_of(std::size_t scene, int impl, bool mechanisms) const {
   std::vector<std::pair<std::string, double>> out;

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,8 +22,9 @@
 namespace rc {
 
 // One spread case: a withheld column of one scene under one variant. A mechanism case (`mechanism`)
-// is the concurrent column under a CPU/FPGA split (host_sw/driver/cpu_split.h) the paper's words
-// allow beside sec 4.3's form factors; it widens the range, not the variants' spread.
+// is the concurrent column under a CPU/FPGA split (host_sw/driver/cpu_split.h), the pipelined driver
+// (BoardVisibilityOptions::chunk_rays) or both, which the paper's words allow beside sec 4.3's form
+// factors; it widens the range, not the variants' spread.
 struct SpreadCase {
   std::size_t scene = 0;
   int implementation = 0;
@@ -32,6 +34,26 @@ struct SpreadCase {
   std::size_t main_index = ~std::size_t{0};  // or the main column's outcome it equals (not simulated twice)
   std::size_t index() const { return main_index != ~std::size_t{0} ? main_index : outcome_index; }
 };
+
+// The pipelined driver as a mechanism of the concurrent column (docs/calibration.md, "The concurrent
+// column"), under sec 4.3's overlap of each in-spread variant, alone and with the balanced split on the
+// second Athlon (pipelined_splits). Not with the split on the solver's processor: that processor would
+// test its share after the first chunk's START instead of sending the later chunks, so the board idles
+// and the pipeline is undone. Not under the dual_cpu overlap: simulated once, inside the range on every
+// scene, so left out for the command's wall time (docs/calibration.md says when to look again). The chunk follows one stated rule, the same for every scene and fixed
+// before any simulation of it: the scene's largest step in kPipelinedChunksPerStep chunks, rounded up.
+// Nothing about the withheld columns enters it.
+inline constexpr std::uint64_t kPipelinedChunksPerStep = 2;
+inline constexpr const char* kPipelinedChunkRule =
+    "chunk_rays = ceil(S / 2), S the most segments of any of the scene's steps: each step fills the two halves of "
+    "the ray and result banks once, the fewest chunks that overlap anything, so the per-pass costs a chunk repeats "
+    "(the calibrated driver sends the faces with every pass) are paid least; half a bank (the board's limit on a "
+    "chunk) would hold every step of Table 2 whole, one chunk that overlaps nothing";
+// Off (the pipelined driver alone) and balanced on 2 CPUs.
+std::vector<CpuSplit> pipelined_splits();
+// ceil(S / kPipelinedChunksPerStep), S the most segments of the scene's first row.steps recorded steps;
+// throws std::invalid_argument when there are none.
+std::uint64_t pipelined_chunk_rays(const PaperScene& scene);
 
 // Sec 4.1's six- and seven-bank variants against five banks, on the largest scene: at 15 bits a
 // word holds two coordinates, so five banks feed two full-rate lanes, and one or two more banks

@@ -3,6 +3,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "host_sw/studies/workload.h"
+#include "host_sw/studies/workload_json.h"
+
 namespace rc {
 
 namespace {
@@ -93,12 +96,8 @@ Json design_json(const DesignDocument& doc) {
   Json j;
   j["schema"] = "rc2000sim.design/1";
   j["device"] = r.device;
-  j["workload"] = {{"scene", r.workload.scene.file.empty() ? "cornell-box" : r.workload.scene.file},
-                   {"faces", r.faces},
-                   {"patches", r.patches},
-                   {"steps", r.steps},
-                   {"paper_faithful", r.workload.paper_faithful},
-                   {"form_factor", r.workload.form_factor}};
+  // As report.json, sweep.json and paper.json record theirs (workload.h).
+  j["workload"] = workload_json(design_workload(r.workload), r.faces, r.patches, r.steps);
   j["constraints"] = {{"max_banks", r.max_banks},
                       {"min_bits", doc.constraints.min_bits},
                       {"max_energy_joules", number(doc.constraints.max_energy_joules)},

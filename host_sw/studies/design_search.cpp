@@ -11,7 +11,7 @@
 #include "board/design_fit.h"
 #include "board/throughput_estimates.h"
 #include "host_sw/platform/run_bounds.h"
-#include "host_sw/studies/paper_workload.h"
+#include "host_sw/studies/workload.h"
 #include "host_sw/studies/study.h"
 
 namespace rc {
@@ -53,17 +53,6 @@ bool spare_banks(const DesignConfig& d, const board::DeviceProfile& device) {
 template <class T>
 void require(const std::vector<T>& axis, const char* option) {
   if (axis.empty()) throw std::invalid_argument(std::string(option) + ": the design space needs at least one value");
-}
-
-// Table 2's step count when the scene is one of the paper's; 0 otherwise.
-int paper_steps(const SceneOptions& o, const Scene& scene) {
-  if (!o.file.empty() || o.face_target != 70) return 0;
-  for (const PaperRow& row : load_paper_table(default_paper_table_path())) {
-    if (static_cast<std::size_t>(row.faces) == scene.faces.size() &&
-        static_cast<std::size_t>(row.patches) == scene.patches.size())
-      return row.steps;
-  }
-  return 0;
 }
 
 }  // namespace
@@ -291,7 +280,7 @@ DesignSearchResult search_designs(const DesignWorkload& workload, const DesignSp
   const Scene scene = prepare_scene(workload.scene).scene;
   r.faces = scene.faces.size();
   r.patches = scene.patches.size();
-  const int steps = workload.steps > 0 ? workload.steps : paper_steps(workload.scene, scene);
+  const int steps = workload.steps > 0 ? workload.steps : table2_steps(design_workload(workload), r.faces, r.patches);
   std::map<int, Width> widths;
   for (const DesignCandidate& c : candidates)
     if (c.check.validity == Validity::ok) widths.emplace(c.design.config.bits, Width{});

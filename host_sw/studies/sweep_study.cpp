@@ -23,18 +23,6 @@ using Progress = std::function<void(const std::string&)>;
 
 // ---- the workload ---------------------------------------------------------------------------------
 
-// Table 2's step count when the scene is one of the paper's, built the paper's way (workload.h:
-// our Cornell Box refined to 70 faces, then split); 0 otherwise.
-int paper_steps(const Workload& w, const Scene& scene) {
-  if (check_construction(w, scene.faces.size(), scene.patches.size()).kind != Construction::paper) return 0;
-  for (const PaperRow& row : load_paper_table(default_paper_table_path())) {
-    if (static_cast<std::size_t>(row.faces) == scene.faces.size() &&
-        static_cast<std::size_t>(row.patches) == scene.patches.size())
-      return row.steps;
-  }
-  return 0;
-}
-
 SolverOptions base_solver(const Study& s, const StudyScene& scene) { return solver_options(study_workload(s, scene)); }
 
 // The steps every configuration of a scene replays: fixed, the paper's, or 0 (to convergence).
@@ -42,7 +30,7 @@ int fixed_steps(const Study& s, const StudyScene& study_scene, const Scene& scen
   const StepsChoice steps = s.steps;
   if (steps.kind == StepsChoice::Kind::fixed) return steps.steps;
   if (steps.kind == StepsChoice::Kind::converge) return 0;
-  const int paper = paper_steps(study_workload(s, study_scene), scene);
+  const int paper = table2_steps(study_workload(s, study_scene), scene.faces.size(), scene.patches.size());
   if (paper == 0) {
     std::fprintf(stderr, "note: scene %s is not one of Table 2's; steps \"paper\" falls back to converge\n",
                  study_scene.name.c_str());

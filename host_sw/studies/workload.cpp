@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "host_sw/studies/design_search.h"
 #include "host_sw/studies/paper_workload.h"
 #include "host_sw/studies/study.h"
 
@@ -39,6 +40,25 @@ Workload paper_workload(const PaperRow& row) {
   w.paper_faithful = true;
   w.form_factor = FormFactorKind::PointToPoint;  // the paper's rule (sec 2)
   return w;
+}
+
+Workload design_workload(const DesignWorkload& design) {
+  Workload w;
+  w.source = design.scene.file.empty() ? "embedded:cornell-box" : design.scene.file;
+  w.scene = design.scene;
+  w.steps.kind = design.steps > 0 ? StepsChoice::Kind::fixed : StepsChoice::Kind::paper;
+  w.steps.steps = design.steps;
+  w.paper_faithful = design.paper_faithful;
+  w.form_factor = parse_form_factor_kind(design.form_factor);
+  return w;
+}
+
+int table2_steps(const Workload& w, std::uint64_t faces, std::uint64_t patches) {
+  if (check_construction(w, faces, patches).kind != Construction::paper) return 0;
+  for (const PaperRow& row : load_paper_table(default_paper_table_path())) {
+    if (static_cast<std::uint64_t>(row.faces) == faces && static_cast<std::uint64_t>(row.patches) == patches) return row.steps;
+  }
+  return 0;
 }
 
 SolverOptions solver_options(const Workload& w, int steps) {

@@ -24,6 +24,7 @@
 
 namespace rc {
 
+struct DesignWorkload;
 struct PaperRow;
 struct Study;
 struct StudyScene;
@@ -43,6 +44,8 @@ Workload run_workload(const SceneOptions& scene, const SolverOptions& solver);
 Workload study_workload(const Study& study, const StudyScene& scene);
 // A Table 2 row as `paper` solves it: the paper's construction and step count, every segment, point.
 Workload paper_workload(const PaperRow& row);
+// `design`'s workload (design_search.h): a fixed count, or Table 2's for a paper scene, else to convergence.
+Workload design_workload(const DesignWorkload& design);
 
 // The solver's options for `w`; `steps` > 0 runs exactly that many (the paper's count, resolved by
 // the caller), else the workload's own policy (a fixed count, or to convergence).
@@ -65,6 +68,10 @@ struct ConstructionCheck {
 // How `w`'s scene, which came out with `faces` faces and `patches` patches, relates to the paper's
 // construction for those counts.
 ConstructionCheck check_construction(const Workload& w, std::uint64_t faces, std::uint64_t patches);
+
+// Table 2's step count when `w`'s scene (`faces`, `patches` as it came out) is one of the paper's,
+// built the paper's way; 0 otherwise (StepsChoice::Kind::paper then converges).
+int table2_steps(const Workload& w, std::uint64_t faces, std::uint64_t patches);
 
 // "--faces 70 --face-levels 1 --patch-levels 2": the options that build `scene`.
 std::string construction_text(const SceneOptions& scene);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "host_sw/studies/design_search.h"
 #include "host_sw/studies/paper_workload.h"
 #include "host_sw/studies/study_file.h"
 #include "host_sw/studies/workload.h"
@@ -95,6 +96,25 @@ TEST(Workload, EachCommandsWorkloadGivesItsSolverOptions) {
   EXPECT_TRUE(s.paper_faithful);
   EXPECT_EQ(s.form_factor, FormFactorKind::PointToPoint);
   EXPECT_EQ(solver_options(s, 1488).fixed_steps, 1488);  // the paper's count, resolved by the study
+}
+
+// `design` and `sweep` take Table 2's count by one rule: only for a scene built the paper's way (the
+// counts alone are not enough: another construction with them is another mesh, see above).
+TEST(Workload, DesignAndSweepTakeTable2sCountOnlyForThePapersConstruction) {
+  DesignWorkload design;  // the default: the paper's 280/4480, Table 2's count
+  const Workload d = design_workload(design);
+  EXPECT_EQ(d.steps.kind, StepsChoice::Kind::paper);
+  EXPECT_TRUE(d.paper_faithful);
+  EXPECT_EQ(d.form_factor, FormFactorKind::PointToPoint);
+  EXPECT_EQ(table2_steps(d, 280, 4480), 5889);
+  EXPECT_EQ(table2_steps(design_workload(design), 280, 1120), 0);  // counts the construction did not give
+  design.scene = built(280, 0, 2);                                  // the same counts built another way
+  EXPECT_EQ(table2_steps(design_workload(design), 280, 4480), 0);
+  design.steps = 12;
+  EXPECT_EQ(design_workload(design).steps.kind, StepsChoice::Kind::fixed);
+  EXPECT_EQ(solver_options(design_workload(design)).fixed_steps, 12);
+  const Study study = default_study_settings();
+  EXPECT_EQ(table2_steps(study_workload(study, study.scenes.front()), 280, 1120), 1488);  // its 280/1120
 }
 
 TEST(Workload, TheRecordNamesTheConstructionAndTheNoteOnlyWhenItDiffers) {

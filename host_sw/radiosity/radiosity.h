@@ -21,6 +21,7 @@
 
 #include "host_sw/radiosity/form_factor.h"
 #include "host_sw/radiosity/host_cost.h"
+#include "host_sw/radiosity/receiver_sweep.h"
 #include "host_sw/radiosity/visibility.h"
 #include "scenes/scene.h"
 
@@ -136,8 +137,10 @@ class ProgressiveRadiosity {
   // Throws SolveDiverged when the absorbed power exceeds the emitted power or the escaping power is
   // negative beyond the sums' rounding (energy created, whatever the reflectances).
   void check_balance(int step, int shooter, const SolverResult& result) const;
-  // Pairs that never exchange: sheet, coincident centres, or the cosines (PairGeometry::exchanges).
-  PairGeometry exchange_geometry(const Patch& shooter, const Patch& receiver) const;
+  // The step's receivers from sweep_ (pairs that never exchange: sheet, coincident centres, or the
+  // cosines, PairGeometry::exchanges): culled to those that exchange, or every other patch.
+  void select_exchanging_receivers(int shooter, SolverResult& result);
+  void select_every_receiver(int shooter);
   // The share of the shot power the step delivers (S) and the factor its deliveries take.
   double delivered_share(const Patch& shooter) const;
   double unscaled(double power) const { return std::ldexp(power, -emission_exponent_); }
@@ -165,8 +168,9 @@ class ProgressiveRadiosity {
   Spectrum last_shot_;       // what the last step shot (for SolveDiverged's diagnosis)
   // Per-step scratch, kept to avoid reallocating every step.
   SegmentBatch batch_;
+  PatchColumns columns_;  // the patches' geometry, for the sweep
+  ReceiverSweep sweep_;   // this step's geometry and form factors, by patch
   std::vector<int> receivers_;
-  std::vector<PairGeometry> geometry_;  // shooter-receiver geometry, by receiver
   std::vector<double> form_factors_;
   std::vector<std::uint8_t> blocked_;
 };

@@ -172,6 +172,12 @@ class WrapperBase : public sc_core::sc_module {
     std::uint32_t entry(std::uint64_t face_in_set) const {
       return static_cast<std::uint32_t>(wrapper->bank_word(bank, first + face_in_set));
     }
+    // Entries 0 .. count-1 in place (entry f is load_word(pointer, f)) when one DMI region holds
+    // them all, else nullptr (then entry() word by word).
+    const std::uint8_t* in_place(std::uint64_t count) const {
+      return wrapper->m_dmi[bank].read_pointer(
+          wrapper->m_addresses[bank] + (wrapper->m_window[bank] + first) * wrapper->m_word_bytes, count * wrapper->m_word_bytes);
+    }
   };
   OwnSurfaceTable own_surface_table();
   pipeline::FaceRecord face_record(std::uint64_t face_in_set);

@@ -115,15 +115,17 @@ def estimates(rows, out):
 def main(csv_path, out):
     rows = list(csv.DictReader(open(csv_path)))
     scenes = [r for r in rows if r["record"] == "scene"]
-    first = [lambda: table2(scenes, out), lambda: estimates([r for r in rows if r["record"] == "estimate"], out)]
-    second = [lambda: table2_intervals(scenes, out)]
+    first = [lambda: table2(scenes, out), lambda: table2_intervals(scenes, out),
+             lambda: estimates([r for r in rows if r["record"] == "estimate"], out)]
+    second = []
     # The rooflines per device (rc2000sim paper writes roofline.csv beside paper.csv; roofline.py).
     beside = os.path.join(os.path.dirname(csv_path), "roofline.csv")
     if os.path.exists(beside):
         lines = list(csv.DictReader(open(beside)))
         second.append(lambda: roofline.draw(lines, os.path.join(out, "roofline.png")))
     # At the end of `rc2000sim paper`, nothing else runs: the figures are drawn on both cores, in
-    # two groups of about equal time (table2 and estimates about 0.5 s, intervals and roofline 0.6 s).
+    # two groups of about equal time (measured idle: table2 0.15 s, intervals 0.15 s, estimates
+    # 0.09 s; the rooflines, one panel per device, 0.34 s).
     entry.side_by_side(first, second)
 
 

@@ -22,18 +22,22 @@ void ProgressiveRadiosity::charge(HostWork work, std::uint64_t count) {
   if (costs_ && count) costs_->charge(work, count);
 }
 
-double ProgressiveRadiosity::unshot_power(int patch) const {
-  return unshot_[patch].sum() * scene_.patches[patch].area;
+double ProgressiveRadiosity::unshot_power(int patch) const { return unshot_power_[patch]; }
+
+void ProgressiveRadiosity::set_unshot(int patch, const Spectrum& unshot) {
+  unshot_[patch] = unshot;
+  unshot_power_[patch] = unshot.sum() * columns_.area[patch];
 }
 
 // The patch with the most unshot power; the lowest index wins ties, so runs are deterministic. The
 // same pass sums the unshot power, in index order, as run() sums the emitted power.
 ProgressiveRadiosity::UnshotScan ProgressiveRadiosity::scan_unshot() const {
   UnshotScan scan;
-  double best_power = unshot_power(0);
+  const double* power = unshot_power_.data();
+  double best_power = power[0];
   scan.total = best_power;
-  for (int i = 1; i < static_cast<int>(scene_.patches.size()); ++i) {
-    const double p = unshot_power(i);
+  for (int i = 1; i < static_cast<int>(unshot_power_.size()); ++i) {
+    const double p = power[i];
     scan.total += p;
     if (p > best_power) scan.shooter = i, best_power = p;
   }
@@ -72,6 +76,7 @@ SolverResult ProgressiveRadiosity::run() {
   const int n = static_cast<int>(scene_.patches.size());
   radiosity_.assign(n, Spectrum{});
   unshot_.assign(n, Spectrum{});
+  unshot_power_.assign(n, 0.0);
   emission_exponent_ = emission_exponent(scene_);
   shot_total_ = 0;
   SolverResult result;
@@ -79,7 +84,8 @@ SolverResult ProgressiveRadiosity::run() {
   result.form_factor_sums.normalised = options_.form_factor == FormFactorKind::Analytic;
   for (int i = 0; i < n; ++i) {
     const Patch& p = scene_.patches[i];
-    radiosity_[i] = unshot_[i] = scaled(scene_.material_of(p).emission, emission_exponent_);
+    radiosity_[i] = scaled(scene_.material_of(p).emission, emission_exponent_);
+    set_unshot(i, radiosity_[i]);
     result.energy.emitted += unshot_power(i);
     result.max_initial_power = std::max(result.max_initial_power, unshot_power(i));
   }
@@ -180,7 +186,7 @@ void ProgressiveRadiosity::shoot(int shooter, SolverResult& result) {
   last_shot_ = shot;
   const double shot_power = shot.sum() * s.area;
   shot_total_ += shot_power;
-  unshot_[shooter] = Spectrum{};
+  set_unshot(shooter, Spectrum{});
 
   // Receivers in front of the shooter and facing it get a segment; the rest get nothing.
   // Without culling (paper-faithful) those get a segment too, marked as not needed: the hardware
@@ -238,7 +244,7 @@ void ProgressiveRadiosity::shoot(int shooter, SolverResult& result) {
     const Spectrum incident = shot * (form_factors_[k] * step_scale_);  // irradiance-like: B_s F_js
     const Spectrum delta = rho * incident;
     radiosity_[j] += delta;
-    unshot_[j] += delta;
+    set_unshot(j, unshot_[j] + delta);
     const double area = scene_.patches[j].area;
     arrived += incident.sum() * area;
     result.energy.absorbed += (incident.sum() - delta.sum()) * area;

@@ -130,7 +130,8 @@ class ProgressiveRadiosity {
     double total = 0;
   };
   UnshotScan scan_unshot() const;
-  double unshot_power(int patch) const;
+  double unshot_power(int patch) const;  // unshot x area, kept up to date by set_unshot
+  void set_unshot(int patch, const Spectrum& unshot);
   // Throws SolveDiverged when the total unshot power after `step` steps is not finite or exceeds
   // the emitted power beyond the sums' rounding; `shooter` shot last.
   void check_energy(int step, int shooter, double total_unshot, const SolverResult& result) const;
@@ -159,6 +160,7 @@ class ProgressiveRadiosity {
 
   std::vector<Spectrum> radiosity_;
   std::vector<Spectrum> unshot_;
+  std::vector<double> unshot_power_;  // by patch: unshot_[i].sum() x area, what scan_unshot reads
   double initial_max_power_ = 0;
   double energy_limit_ = 0;  // the emitted power plus the rounding of the sums that measure it
   double rounding_ = 0;      // relative rounding of one step's or the run's sums

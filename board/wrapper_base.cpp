@@ -106,11 +106,10 @@ void WrapperBase::read_inputs(PassInputs& in) {
   } else {
     OwnSurfaceRange masked(in.mask_start);
     const OwnSurfaceTable table = own_surface_table();
-    // Every pass of every system walks its whole table: from one pointer when it can (the same
-    // entries; a table that crosses DMI regions is read word by word).
+    // Every pass of every system reads its whole table: from one pointer when it can (the same
+    // entries; a table that crosses DMI regions is walked word by word).
     if (const std::uint8_t* entries = in.faces ? table.in_place(in.faces) : nullptr) {
-      for (std::uint64_t f = 0; f < in.faces; ++f)
-        masked.advance(static_cast<std::uint32_t>(load_word(entries, f, m_word_bytes)), f == 0);
+      masked.next = own_surface_end(entries, in.faces, m_word_bytes, in.mask_start);
     } else {
       for (std::uint64_t f = 0; f < in.faces; ++f) masked.advance(table.entry(f), f == 0);
     }

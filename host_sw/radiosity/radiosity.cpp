@@ -244,8 +244,10 @@ void ProgressiveRadiosity::shoot(int shooter, SolverResult& result) {
     const Spectrum incident = shot * (form_factors_[k] * step_scale_);  // irradiance-like: B_s F_js
     const Spectrum delta = rho * incident;
     radiosity_[j] += delta;
-    set_unshot(j, unshot_[j] + delta);
-    const double area = scene_.patches[j].area;
+    Spectrum& unshot = unshot_[j];  // set_unshot, inline: this loop runs for every delivery
+    unshot += delta;
+    const double area = columns_.area[j];
+    unshot_power_[j] = unshot.sum() * area;
     arrived += incident.sum() * area;
     result.energy.absorbed += (incident.sum() - delta.sum()) * area;
     ++updated;

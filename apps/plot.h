@@ -12,8 +12,9 @@ namespace rc {
 // A plot script running in a child process that takes its requests on stdin (apps/plots/entry.py).
 // The child ends with this process (studies/child_guard.h): an interrupted command leaves no script
 // drawing into its folder.
-// Start it before the last stretch of work that leaves a core idle (a single-threaded SystemC
-// study): the interpreter and matplotlib load meanwhile, and draw() costs only the drawing.
+// Start it before the last stretch of work (rc2000sim paper: before the timing study): the
+// interpreter and matplotlib load meanwhile, and draw() costs only the drawing (a script may draw
+// its figures side by side in forked copies of itself, apps/plots/entry.py).
 class PlotProcess {
  public:
   explicit PlotProcess(const std::string& script);

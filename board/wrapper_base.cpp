@@ -106,7 +106,13 @@ void WrapperBase::read_inputs(PassInputs& in) {
   } else {
     OwnSurfaceRange masked(in.mask_start);
     const OwnSurfaceTable table = own_surface_table();
-    for (std::uint64_t f = 0; f < in.faces; ++f) masked.advance(table.entry(f), f == 0);
+    // Every pass of every system reads its whole table: from one pointer when it can (the same
+    // entries; a table that crosses DMI regions is walked word by word).
+    if (const std::uint8_t* entries = in.faces ? table.in_place(in.faces) : nullptr) {
+      masked.next = own_surface_end(entries, in.faces, m_word_bytes, in.mask_start);
+    } else {
+      for (std::uint64_t f = 0; f < in.faces; ++f) masked.advance(table.entry(f), f == 0);
+    }
     if (masked.next > in.rays) in.error = reg::kMaskOverrun;
   }
   const std::int64_t limit = std::int64_t(1) << m_layout.value_bits;  // a code, or a float's bit pattern

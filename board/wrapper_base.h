@@ -67,6 +67,21 @@ struct OwnSurfaceRange {
   }
 };
 
+// Where OwnSurfaceRange's walk over `count` table entries (in place, `word_bytes` each, as
+// load_word reads them) leaves `next`: mask_start plus the ray counts of the first entry and of every
+// entry that starts a sheet. The same sum in any order (integers), so it vectorises; read_inputs
+// checks it against the pass's rays for every pass of every system (test
+// OwnSurfaceTable.EndIsWhereTheWalkEnds).
+inline std::uint64_t own_surface_end(const std::uint8_t* entries, std::uint64_t count, unsigned word_bytes,
+                                     std::uint64_t mask_start) {
+  std::uint64_t next = mask_start;
+  for (std::uint64_t f = 0; f < count; ++f) {
+    const auto entry = static_cast<std::uint32_t>(load_word(entries, f, word_bytes));
+    next += (f == 0 || (entry & reg::kSameSheet) == 0) ? (entry & reg::kSheetRays) : 0u;
+  }
+  return next;
+}
+
 // One finished pass, for reports and traces.
 struct PassRecord {
   sc_core::sc_time start, end;  // first device clock edge of the pass, DONE (interrupt raised)
@@ -171,6 +186,12 @@ class WrapperBase : public sc_core::sc_module {
     std::uint64_t first;  // word index of face 0's entry
     std::uint32_t entry(std::uint64_t face_in_set) const {
       return static_cast<std::uint32_t>(wrapper->bank_word(bank, first + face_in_set));
+    }
+    // Entries 0 .. count-1 in place (entry f is load_word(pointer, f)) when one DMI region holds
+    // them all, else nullptr (then entry() word by word).
+    const std::uint8_t* in_place(std::uint64_t count) const {
+      return wrapper->m_dmi[bank].read_pointer(
+          wrapper->m_addresses[bank] + (wrapper->m_window[bank] + first) * wrapper->m_word_bytes, count * wrapper->m_word_bytes);
     }
   };
   OwnSurfaceTable own_surface_table();

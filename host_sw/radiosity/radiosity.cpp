@@ -10,7 +10,7 @@ namespace rc {
 
 ProgressiveRadiosity::ProgressiveRadiosity(const Scene& scene, VisibilityBackend& visibility,
                                            SolverOptions options, HostCostSink* costs)
-    : scene_(scene), visibility_(visibility), options_(options), costs_(costs) {
+    : scene_(scene), visibility_(visibility), options_(options), costs_(costs), columns_(scene) {
   if (!(options_.convergence > 0 && options_.convergence < 1)) {
     throw std::invalid_argument("convergence must be in (0, 1), e.g. 0.995");
   }
@@ -22,18 +22,22 @@ void ProgressiveRadiosity::charge(HostWork work, std::uint64_t count) {
   if (costs_ && count) costs_->charge(work, count);
 }
 
-double ProgressiveRadiosity::unshot_power(int patch) const {
-  return unshot_[patch].sum() * scene_.patches[patch].area;
+double ProgressiveRadiosity::unshot_power(int patch) const { return unshot_power_[patch]; }
+
+void ProgressiveRadiosity::set_unshot(int patch, const Spectrum& unshot) {
+  unshot_[patch] = unshot;
+  unshot_power_[patch] = unshot.sum() * columns_.area[patch];
 }
 
 // The patch with the most unshot power; the lowest index wins ties, so runs are deterministic. The
 // same pass sums the unshot power, in index order, as run() sums the emitted power.
 ProgressiveRadiosity::UnshotScan ProgressiveRadiosity::scan_unshot() const {
   UnshotScan scan;
-  double best_power = unshot_power(0);
+  const double* power = unshot_power_.data();
+  double best_power = power[0];
   scan.total = best_power;
-  for (int i = 1; i < static_cast<int>(scene_.patches.size()); ++i) {
-    const double p = unshot_power(i);
+  for (int i = 1; i < static_cast<int>(unshot_power_.size()); ++i) {
+    const double p = power[i];
     scan.total += p;
     if (p > best_power) scan.shooter = i, best_power = p;
   }
@@ -72,6 +76,7 @@ SolverResult ProgressiveRadiosity::run() {
   const int n = static_cast<int>(scene_.patches.size());
   radiosity_.assign(n, Spectrum{});
   unshot_.assign(n, Spectrum{});
+  unshot_power_.assign(n, 0.0);
   emission_exponent_ = emission_exponent(scene_);
   shot_total_ = 0;
   SolverResult result;
@@ -79,7 +84,8 @@ SolverResult ProgressiveRadiosity::run() {
   result.form_factor_sums.normalised = options_.form_factor == FormFactorKind::Analytic;
   for (int i = 0; i < n; ++i) {
     const Patch& p = scene_.patches[i];
-    radiosity_[i] = unshot_[i] = scaled(scene_.material_of(p).emission, emission_exponent_);
+    radiosity_[i] = scaled(scene_.material_of(p).emission, emission_exponent_);
+    set_unshot(i, radiosity_[i]);
     result.energy.emitted += unshot_power(i);
     result.max_initial_power = std::max(result.max_initial_power, unshot_power(i));
   }
@@ -132,12 +138,38 @@ SolverResult ProgressiveRadiosity::run() {
   return result;
 }
 
-PairGeometry ProgressiveRadiosity::exchange_geometry(const Patch& shooter, const Patch& receiver) const {
-  if (scene_.sheets.same(shooter.face, receiver.face)) return {};
-  const PairGeometry g = pair_geometry(shooter.centre, shooter.normal, receiver.centre, receiver.normal);
-  const double size_squared = std::max(shooter.area, receiver.area);
-  if (g.distance_squared < kCoincidentDistance * kCoincidentDistance * size_squared) return {};
-  return g;
+// Only the receivers that exchange energy with the shooter, in patch order.
+void ProgressiveRadiosity::select_exchanging_receivers(int shooter, SolverResult& result) {
+  batch_.ends.clear();
+  batch_.end_faces.clear();
+  batch_.needed.clear();
+  receivers_.clear();
+  for (int j = 0; j < static_cast<int>(columns_.size()); ++j) {
+    if (j == shooter) continue;
+    if (!sweep_.exchanges[j]) {
+      ++result.receivers_skipped;
+      continue;
+    }
+    receivers_.push_back(j);
+    batch_.ends.push_back(columns_.centre[j]);
+    batch_.end_faces.push_back(columns_.face[j]);
+  }
+}
+
+// Every patch but the shooter, in patch order (the paper's rule), those that exchange no energy
+// marked as not needed (no mark when every one is needed).
+void ProgressiveRadiosity::select_every_receiver(int shooter) {
+  const std::size_t n = columns_.size(), s = static_cast<std::size_t>(shooter);
+  const auto without_shooter = [&](auto& to, const auto& from) {
+    to.assign(from.begin(), from.begin() + static_cast<std::ptrdiff_t>(s));
+    to.insert(to.end(), from.begin() + static_cast<std::ptrdiff_t>(s) + 1, from.end());
+  };
+  receivers_.resize(n - 1);
+  for (std::size_t k = 0; k + 1 < n; ++k) receivers_[k] = static_cast<int>(k < s ? k : k + 1);
+  without_shooter(batch_.ends, columns_.centre);
+  without_shooter(batch_.end_faces, columns_.face);
+  without_shooter(batch_.needed, sweep_.exchanges);
+  if (std::all_of(batch_.needed.begin(), batch_.needed.end(), [](std::uint8_t x) { return x != 0; })) batch_.needed.clear();
 }
 
 double ProgressiveRadiosity::delivered_share(const Patch& shooter) const {
@@ -154,47 +186,34 @@ void ProgressiveRadiosity::shoot(int shooter, SolverResult& result) {
   last_shot_ = shot;
   const double shot_power = shot.sum() * s.area;
   shot_total_ += shot_power;
-  unshot_[shooter] = Spectrum{};
+  set_unshot(shooter, Spectrum{});
 
   // Receivers in front of the shooter and facing it get a segment; the rest get nothing.
   // Without culling (paper-faithful) those get a segment too, marked as not needed: the hardware
   // tests it, but no answer about it can change the solution (its form factor is 0).
+  sweep_receivers(columns_, shooter, options_.form_factor, sweep_);
   batch_.start = s.centre;
   batch_.source_face = s.face;
   batch_.shooter = shooter;
-  batch_.ends.clear();
-  batch_.end_faces.clear();
-  batch_.needed.clear();
-  receivers_.clear();
-  geometry_.clear();
-  bool all_needed = true;
-  for (int j = 0; j < static_cast<int>(scene_.patches.size()); ++j) {
-    if (j == shooter) continue;
-    const Patch& r = scene_.patches[j];
-    const PairGeometry g = exchange_geometry(s, r);
-    const bool exchanges = g.exchanges();
-    if (options_.cull_receivers && !exchanges) {
-      ++result.receivers_skipped;
-      continue;
-    }
-    receivers_.push_back(j);
-    geometry_.push_back(g);
-    batch_.ends.push_back(r.centre);
-    batch_.end_faces.push_back(r.face);
-    batch_.needed.push_back(exchanges);
-    all_needed &= exchanges;
+  if (options_.cull_receivers) {
+    select_exchanging_receivers(shooter, result);
+  } else {
+    select_every_receiver(shooter);
   }
-  if (all_needed) batch_.needed.clear();
   charge(HostWork::SegmentSetup, receivers_.size());
   result.segments += receivers_.size();
   const std::uint64_t tests_before = visibility_.tests_performed();
   visibility_.submit(batch_);
 
-  // Form factors while visibility is being answered (overlaps on the board in concurrent mode).
+  // Form factors while visibility is being answered (overlaps on the board in concurrent mode): the
+  // point and disc rules' came with the sweep; the analytic rule integrates over the shooter.
   form_factors_.resize(receivers_.size());
-  for (std::size_t k = 0; k < receivers_.size(); ++k) {
-    const Patch& r = scene_.patches[receivers_[k]];
-    form_factors_[k] = form_factor(options_.form_factor, geometry_[k], s.tri, s.area, r.centre, r.normal);
+  for (std::size_t k = 0; k < receivers_.size(); ++k) form_factors_[k] = sweep_.form_factor[receivers_[k]];
+  if (options_.form_factor == FormFactorKind::Analytic) {
+    for (std::size_t k = 0; k < receivers_.size(); ++k) {
+      const Patch& r = scene_.patches[receivers_[k]];
+      form_factors_[k] = form_factor(options_.form_factor, sweep_.geometry(receivers_[k]), s.tri, s.area, r.centre, r.normal);
+    }
   }
   charge(HostWork::FormFactor, receivers_.size());
 
@@ -225,8 +244,10 @@ void ProgressiveRadiosity::shoot(int shooter, SolverResult& result) {
     const Spectrum incident = shot * (form_factors_[k] * step_scale_);  // irradiance-like: B_s F_js
     const Spectrum delta = rho * incident;
     radiosity_[j] += delta;
-    unshot_[j] += delta;
-    const double area = scene_.patches[j].area;
+    Spectrum& unshot = unshot_[j];  // set_unshot, inline: this loop runs for every delivery
+    unshot += delta;
+    const double area = columns_.area[j];
+    unshot_power_[j] = unshot.sum() * area;
     arrived += incident.sum() * area;
     result.energy.absorbed += (incident.sum() - delta.sum()) * area;
     ++updated;
@@ -300,7 +321,7 @@ std::string ProgressiveRadiosity::last_step_diagnosis(int shooter) const {
     const int r = receivers_[largest];
     const double F = form_factors_[largest];
     m << "; its largest form factor (" << to_string(options_.form_factor) << "), to " << patch_name(r)
-      << " at distance " << std::sqrt(geometry_[largest].distance_squared) << ", is " << F;
+      << " at distance " << std::sqrt(sweep_.distance_squared[r]) << ", is " << F;
     if (!(F <= 1)) m << " (above 1: the patches are close against their size)";
     // Two faces that share an edge and face each other: a fold. Its form factor does not shrink
     // with the patches (the geometry near the edge is the same at every scale).

@@ -21,6 +21,7 @@
 
 #include "host_sw/radiosity/form_factor.h"
 #include "host_sw/radiosity/host_cost.h"
+#include "host_sw/radiosity/receiver_sweep.h"
 #include "host_sw/radiosity/visibility.h"
 #include "scenes/scene.h"
 
@@ -129,15 +130,18 @@ class ProgressiveRadiosity {
     double total = 0;
   };
   UnshotScan scan_unshot() const;
-  double unshot_power(int patch) const;
+  double unshot_power(int patch) const;  // unshot x area, kept up to date by set_unshot
+  void set_unshot(int patch, const Spectrum& unshot);
   // Throws SolveDiverged when the total unshot power after `step` steps is not finite or exceeds
   // the emitted power beyond the sums' rounding; `shooter` shot last.
   void check_energy(int step, int shooter, double total_unshot, const SolverResult& result) const;
   // Throws SolveDiverged when the absorbed power exceeds the emitted power or the escaping power is
   // negative beyond the sums' rounding (energy created, whatever the reflectances).
   void check_balance(int step, int shooter, const SolverResult& result) const;
-  // Pairs that never exchange: sheet, coincident centres, or the cosines (PairGeometry::exchanges).
-  PairGeometry exchange_geometry(const Patch& shooter, const Patch& receiver) const;
+  // The step's receivers from sweep_ (pairs that never exchange: sheet, coincident centres, or the
+  // cosines, PairGeometry::exchanges): culled to those that exchange, or every other patch.
+  void select_exchanging_receivers(int shooter, SolverResult& result);
+  void select_every_receiver(int shooter);
   // The share of the shot power the step delivers (S) and the factor its deliveries take.
   double delivered_share(const Patch& shooter) const;
   double unscaled(double power) const { return std::ldexp(power, -emission_exponent_); }
@@ -156,6 +160,7 @@ class ProgressiveRadiosity {
 
   std::vector<Spectrum> radiosity_;
   std::vector<Spectrum> unshot_;
+  std::vector<double> unshot_power_;  // by patch: unshot_[i].sum() x area, what scan_unshot reads
   double initial_max_power_ = 0;
   double energy_limit_ = 0;  // the emitted power plus the rounding of the sums that measure it
   double rounding_ = 0;      // relative rounding of one step's or the run's sums
@@ -165,8 +170,9 @@ class ProgressiveRadiosity {
   Spectrum last_shot_;       // what the last step shot (for SolveDiverged's diagnosis)
   // Per-step scratch, kept to avoid reallocating every step.
   SegmentBatch batch_;
+  PatchColumns columns_;  // the patches' geometry, for the sweep
+  ReceiverSweep sweep_;   // this step's geometry and form factors, by patch
   std::vector<int> receivers_;
-  std::vector<PairGeometry> geometry_;  // shooter-receiver geometry, by receiver
   std::vector<double> form_factors_;
   std::vector<std::uint8_t> blocked_;
 };

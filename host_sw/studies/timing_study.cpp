@@ -141,6 +141,14 @@ std::vector<std::vector<std::size_t>> deal(const std::vector<TimingCase>& cases,
 
 }  // namespace
 
+std::size_t study_shards(std::size_t cases, unsigned processes) {
+  processes = std::max(1u, processes);
+  const std::size_t fewest = std::max<std::size_t>(std::max<std::size_t>(1, std::min<std::size_t>(processes, cases)),
+                                                   (cases + kMaxSystemsPerProcess - 1) / kMaxSystemsPerProcess);
+  if (fewest <= processes) return fewest;
+  return (fewest + processes - 1) / processes * processes;  // whole rounds: no shard runs alone at the end
+}
+
 unsigned default_study_processes() { return std::max(1u, std::min(std::thread::hardware_concurrency(), 8u)); }
 
 namespace {
@@ -246,8 +254,7 @@ std::vector<TimingOutcome> run_timing_study(const std::vector<TimingCase>& cases
   }
   processes = std::max(1u, processes);
   const std::size_t n = cases.size();
-  const std::size_t shards = std::max<std::size_t>(std::max<std::size_t>(1, std::min<std::size_t>(processes, n)),
-                                                   (n + kMaxSystemsPerProcess - 1) / kMaxSystemsPerProcess);
+  const std::size_t shards = study_shards(n, processes);
   const std::vector<std::vector<std::size_t>> dealt = deal(cases, static_cast<unsigned>(shards));
   if (shards > processes) return run_in_children(cases, dealt, processes);
   // One shard per process: this one runs the first, children the others.

@@ -51,6 +51,12 @@ unsigned default_study_processes();  // the machine's cores, at most 8
 // Larger studies are cut into shards of at most this many, each run in a process of its own.
 inline constexpr std::size_t kMaxSystemsPerProcess = 64;
 
+// How many shards run_timing_study cuts `cases` into: one per process (at most one per case) when
+// every shard then holds at most kMaxSystemsPerProcess; otherwise the fewest that do, rounded up to
+// a whole number of rounds of `processes` (3 shards on 2 cores would run the third alone while a
+// core idles: 171 systems of `rc2000sim paper` made 4 shards of about 43, not 3 of 57).
+std::size_t study_shards(std::size_t cases, unsigned processes);
+
 struct TimingOutcome {
   std::string label;
   double simulated_seconds = 0;

@@ -79,6 +79,28 @@ TEST(TimingStudy, ProcessesChangeNoOutcome) {
   EXPECT_EQ(dump(dealt), reference);
 }
 
+// The shard count: one per process while they fit; past that whole rounds of `processes` (a last
+// shard alone would leave cores idle), never more than kMaxSystemsPerProcess in one.
+TEST(TimingStudy, ShardsComeInWholeRounds) {
+  const std::size_t k = kMaxSystemsPerProcess;
+  EXPECT_EQ(study_shards(0, 2), 1u);
+  EXPECT_EQ(study_shards(1, 2), 1u);
+  EXPECT_EQ(study_shards(5, 0), 1u);  // no processes: one
+  EXPECT_EQ(study_shards(2 * k, 2), 2u);
+  EXPECT_EQ(study_shards(2 * k + 1, 2), 4u);  // 3 needed, 4 make two rounds of 2
+  EXPECT_EQ(study_shards(171, 2), 4u);        // rc2000sim paper's systems
+  EXPECT_EQ(study_shards(171, 3), 3u);
+  EXPECT_EQ(study_shards(171, 1), 3u);
+  EXPECT_EQ(study_shards(7 * k, 3), 9u);
+  for (std::size_t n : {1u, 63u, 64u, 65u, 200u, 1000u, 4000u}) {
+    for (unsigned p : {1u, 2u, 3u, 8u}) {
+      const std::size_t shards = study_shards(n, p);
+      EXPECT_LE((n + shards - 1) / shards, k) << n << " cases, " << p << " processes";
+      EXPECT_TRUE(shards <= p || shards % p == 0) << n << " cases, " << p << " processes";
+    }
+  }
+}
+
 // More systems than one process elaborates: the study is cut into shards of at most
 // kMaxSystemsPerProcess. With more shards than processes every shard runs in a child, `processes`
 // at a time (1 and 2 below); with as many, this process runs one (3, last: SystemC elaborates once

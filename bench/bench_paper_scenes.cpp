@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/systemc_benchmark_main.h"
 #include "host_sw/profiles/profile_document.h"
 #include "host_sw/studies/paper_workload.h"
 #include "host_sw/studies/workload.h"
@@ -56,11 +57,5 @@ BENCHMARK(BM_PaperScene)
 
 }  // namespace
 
-// The studies' library links SystemC, whose library owns main() and calls sc_main.
-int sc_main(int argc, char** argv) {
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}
+// SystemC's library owns main() and calls sc_main (bench/systemc_benchmark_main.h).
+int sc_main(int argc, char** argv) { return rc::bench::run_benchmarks(argc, argv); }

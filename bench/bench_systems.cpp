@@ -26,6 +26,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "bench/systemc_benchmark_main.h"
 #include "scenes/prepare.h"
 #include "host_sw/studies/timing_study.h"
 
@@ -135,11 +136,5 @@ BENCHMARK(BM_TimingStudy)
 
 }  // namespace
 
-// SystemC's library owns main() and calls sc_main.
-int sc_main(int argc, char** argv) {
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}
+// SystemC's library owns main() and calls sc_main (bench/systemc_benchmark_main.h).
+int sc_main(int argc, char** argv) { return rc::bench::run_benchmarks(argc, argv); }

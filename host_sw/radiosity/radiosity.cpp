@@ -208,12 +208,13 @@ void ProgressiveRadiosity::shoot(int shooter, SolverResult& result) {
   // Form factors while visibility is being answered (overlaps on the board in concurrent mode): the
   // point and disc rules' came with the sweep; the analytic rule integrates over the shooter.
   form_factors_.resize(receivers_.size());
-  for (std::size_t k = 0; k < receivers_.size(); ++k) form_factors_[k] = sweep_.form_factor[receivers_[k]];
   if (options_.form_factor == FormFactorKind::Analytic) {
     for (std::size_t k = 0; k < receivers_.size(); ++k) {
       const Patch& r = scene_.patches[receivers_[k]];
       form_factors_[k] = form_factor(options_.form_factor, sweep_.geometry(receivers_[k]), s.tri, s.area, r.centre, r.normal);
     }
+  } else {
+    for (std::size_t k = 0; k < receivers_.size(); ++k) form_factors_[k] = sweep_.form_factor[receivers_[k]];
   }
   charge(HostWork::FormFactor, receivers_.size());
 

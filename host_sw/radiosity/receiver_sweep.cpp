@@ -14,7 +14,6 @@ namespace rc {
 PatchColumns::PatchColumns(const Scene& scene) {
   const std::size_t n = scene.patches.size();
   for (auto* column : {&cx, &cy, &cz, &nx, &ny, &nz, &area}) column->resize(n);
-  sheet.resize(n);
   sheet_value.resize(n);
   centre.resize(n);
   face.resize(n);
@@ -23,8 +22,7 @@ PatchColumns::PatchColumns(const Scene& scene) {
     cx[i] = p.centre.x, cy[i] = p.centre.y, cz[i] = p.centre.z;
     nx[i] = p.normal.x, ny[i] = p.normal.y, nz[i] = p.normal.z;
     area[i] = p.area;
-    sheet[i] = scene.sheets.first(p.face);
-    sheet_value[i] = sheet[i];
+    sheet_value[i] = scene.sheets.first(p.face);
     centre[i] = p.centre;
     face[i] = p.face;
   }

@@ -21,8 +21,7 @@ namespace rc {
 struct PatchColumns {
   explicit PatchColumns(const Scene& scene);
   std::vector<double> cx, cy, cz, nx, ny, nz, area;
-  std::vector<int> sheet;             // the first face of the patch's face's sheet
-  std::vector<double> sheet_value;    // the same, as doubles (exact), for the vector compare
+  std::vector<double> sheet_value;  // the first face of the patch's face's sheet, as a double (exact), for the vector compare
   std::vector<Vec3> centre;
   std::vector<int> face;
   std::size_t size() const { return area.size(); }

@@ -40,9 +40,10 @@ struct SpreadCase {
 // second Athlon (pipelined_splits). Not with the split on the solver's processor: that processor would
 // test its share after the first chunk's START instead of sending the later chunks, so the board idles
 // and the pipeline is undone. Not under the dual_cpu overlap: simulated once, inside the range on every
-// scene, so left out for the command's wall time (docs/calibration.md says when to look again). The chunk follows one stated rule, the same for every scene and fixed
-// before any simulation of it: the scene's largest step in kPipelinedChunksPerStep chunks, rounded up.
-// Nothing about the withheld columns enters it.
+// scene, so left out for the command's wall time (docs/calibration.md says when to look again). The
+// chunk follows one stated rule, the same for every scene and fixed before any simulation of it: the
+// scene's largest step in kPipelinedChunksPerStep chunks, rounded up. Nothing about the withheld
+// columns enters it.
 inline constexpr std::uint64_t kPipelinedChunksPerStep = 2;
 inline constexpr const char* kPipelinedChunkRule =
     "chunk_rays = ceil(S / 2), S the most segments of any of the scene's steps: each step fills the two halves of "

@@ -131,14 +131,24 @@ void add_solver_options(CLI::App& cmd, SolverCli& solver) {
   add_form_factor_option(cmd, solver.form_factor);
 }
 
+namespace {
+
+std::string form_factor_help(const std::string& what) {
+  return what + "Form factor: analytic (exact from each receiver's centre to the shooter's triangle, never creates "
+                "energy), point (the paper's centre-to-centre rule) or disc (docs/radiosity.md)";
+}
+
+}  // namespace
+
 CLI::Option* add_form_factor_option(CLI::App& cmd, std::string& name, const std::string& what) {
   const auto& names = form_factor_names();
-  return cmd.add_option("--form-factor", name,
-                        what + "Form factor: analytic (exact from each receiver's centre to the shooter's triangle, "
-                               "never creates energy), point (the paper's centre-to-centre rule) or disc "
-                               "(docs/radiosity.md)")
+  return cmd.add_option("--form-factor", name, form_factor_help(what))
       ->check(CLI::IsMember(std::vector<std::string>(names.begin(), names.end())))
       ->capture_default_str();
+}
+
+CLI::Option* add_form_factor_option(CLI::App& cmd, FormFactorKind& kind, const std::string& what) {
+  return add_choice_option(cmd, "--form-factor", kind, form_factor_help(what));
 }
 
 void add_bits_option(CLI::App& cmd, int& bits) {

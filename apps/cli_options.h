@@ -47,6 +47,8 @@ CLI::Option* add_count_option(CLI::App& cmd, const std::string& flag, board::Che
 // --form-factor NAME, one of form_factor_names() (host_sw/radiosity/form_factor.h), its default shown; `what`
 // prefixes the help ("Base point: " for bench). Resolve with parse_form_factor_kind.
 CLI::Option* add_form_factor_option(CLI::App& cmd, std::string& name, const std::string& what = "");
+// The same option straight into the kind (the same names, help and refusal).
+CLI::Option* add_form_factor_option(CLI::App& cmd, FormFactorKind& kind, const std::string& what = "");
 
 // A convergence target: strictly between 0 and 1 (0 stops before the first step; 1 asks for no unshot
 // power at all and runs to the solver's step cap).

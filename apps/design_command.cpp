@@ -24,6 +24,7 @@ namespace {
 // What the command adds to the search's options (host_sw/studies/design_options.h, their one home).
 struct DesignCli {
   DesignOptions options;
+  int steps = 0;  // --steps as given (design_steps makes it the workload's fixed count)
   bool quiet = false;
   std::string out_dir = "out/design";
   std::string command = "rc2000sim design";  // as given, for design.md
@@ -43,9 +44,10 @@ std::string given_command(const CLI::App& cmd) {
 
 // The values given, checked where both front ends check them (design_options.h), then the axes
 // resolved; a refusal is the command line's (named option, usage hint).
-void check_and_resolve(const CLI::App& cmd, DesignOptions& o) {
+void check_and_resolve(const CLI::App& cmd, DesignCli& cli) {
+  DesignOptions& o = cli.options;
   try {
-    if (given(cmd, "--steps")) check_design_steps(o.workload.steps);
+    if (given(cmd, "--steps")) o.workload.steps = design_steps(cli.steps);
     if (given(cmd, "--max-banks")) check_design_max_banks(o.constraints.max_banks);
     if (given(cmd, "--min-bits")) check_design_min_bits(o.constraints.min_bits);
     if (given(cmd, "--max-energy")) check_design_cap("--max-energy", o.constraints.max_energy_joules);
@@ -66,7 +68,7 @@ int run_design(const DesignCli& cli) {
   for (const char* f : {"/design.json", "/design.csv", "/design.md", "/roofline.csv", "/best-device.json"})
     outputs.expect(dir + f);
   ProgressLine progress(!cli.quiet);
-  const DesignSearchResult r = search_designs(o.workload, o.space, o.constraints, o.exhaustive,
+  const DesignSearchResult r = search_designs(o.workload, o.visibility, o.space, o.constraints, o.exhaustive,
                                               [&](const std::string& what) { progress.update("%-60s", what.c_str()); });
   progress.finish();
   const double paper_rate = measured_peak_software_rate(load_paper_table(default_paper_table_path()));
@@ -97,7 +99,7 @@ void add_design_command(CLI::App& app, int& exit_code) {
       "design", "Search one device's designs for a workload: the fastest feasible one and the Pareto front of time, "
                 "energy and banks, every figure simulated (docs/design.md)");
   add_scene_options(*cmd, o->workload.scene);
-  cmd->add_option("--steps", o->workload.steps,
+  cmd->add_option("--steps", cli->steps,
                   "Steps every design replays (default: Table 2's for a paper scene, else to convergence; at most " +
                       std::to_string(SolverOptions{}.max_steps) + ")");
   cmd->add_flag("--culled", o->culled, "Cull receivers behind the shooter instead of sending every segment (the paper)");
@@ -126,7 +128,7 @@ void add_design_command(CLI::App& app, int& exit_code) {
   // rc2000tlm.design()); check_and_resolve runs them on what was given.
   cmd->callback([cli, cmd, &exit_code] {
     cli->command = given_command(*cmd);
-    check_and_resolve(*cmd, cli->options);
+    check_and_resolve(*cmd, *cli);
     exit_code = run_guarded("design", cli->out_dir + "/", [&] { return run_design(*cli); });
   });
 }

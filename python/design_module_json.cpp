@@ -114,15 +114,14 @@ const std::vector<Option>& options() {
        }, [](const DesignOptions& o) { return ordered_json(o.workload.scene.patch_levels); }},
       {"patch_size", [](DesignOptions& o, const ordered_json& v) { check_patch_size(o.workload.scene.patch_size = real("patch_size", v)); },
        [](const DesignOptions& o) { return positive_or_null(o.workload.scene.patch_size); }},
-      {"steps", [](DesignOptions& o, const ordered_json& v) {
-         const long long n = whole("steps", v);
-         check_design_steps(n);
-         o.workload.steps = static_cast<int>(n);
-       }, [](const DesignOptions& o) { return o.workload.steps > 0 ? ordered_json(o.workload.steps) : ordered_json(); }},
+      {"steps", [](DesignOptions& o, const ordered_json& v) { o.workload.steps = design_steps(whole("steps", v)); },
+       [](const DesignOptions& o) {
+         return o.workload.steps.kind == StepsChoice::Kind::fixed ? ordered_json(o.workload.steps.steps) : ordered_json();
+       }},
       {"culled", [](DesignOptions& o, const ordered_json& v) { o.culled = yes_no("culled", v); },
        [](const DesignOptions& o) { return ordered_json(o.culled); }},
-      {"form_factor", [](DesignOptions& o, const ordered_json& v) { check_form_factor(o.workload.form_factor = text("form_factor", v)); },
-       [](const DesignOptions& o) { return ordered_json(o.workload.form_factor); }},
+      {"form_factor", [](DesignOptions& o, const ordered_json& v) { o.workload.form_factor = design_form_factor(text("form_factor", v)); },
+       [](const DesignOptions& o) { return ordered_json(to_string(o.workload.form_factor)); }},
       {"device", [](DesignOptions& o, const ordered_json& v) { o.space.device = text("device", v); },
        [](const DesignOptions& o) { return ordered_json(o.space.device); }},
       {"host", [](DesignOptions& o, const ordered_json& v) { o.space.host = text("host", v); },
@@ -186,7 +185,7 @@ std::string design_defaults() {
 
 std::string design_search(const std::string& options_json, bool progress) {
   const DesignOptions o = given_options(ordered_json::parse(options_json));
-  const DesignSearchResult r = search_designs(o.workload, o.space, o.constraints, o.exhaustive, [&](const std::string& what) {
+  const DesignSearchResult r = search_designs(o.workload, o.visibility, o.space, o.constraints, o.exhaustive, [&](const std::string& what) {
     if (progress) std::fprintf(stderr, "\r%-78s", what.c_str());
   });
   if (progress) std::fprintf(stderr, "\r%-78s\r", "");

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include "host_sw/studies/workload.h"
 #include "host_sw/studies/workload_json.h"
 
 namespace rc {
@@ -80,13 +79,13 @@ Json roofline_json(const Roofline& r) {
 
 std::string run_command(const DesignDocument& doc, const DesignPoint& p, const std::string& profile_file) {
   const SweepConfig& c = p.design.config;
-  const DesignWorkload& w = doc.result.workload;
+  const Workload& w = doc.result.workload;
   std::string cmd = "rc2000sim run --impl board --device " + doc.out_dir + "/" + profile_file + " --host " + doc.space.host +
                     " --lanes " + std::to_string(c.lanes) + " --banks " + std::to_string(c.banks) + " --bits " +
                     std::to_string(c.bits);
   if (c.cards > 1) cmd += " --cards " + std::to_string(c.cards);
   if (c.concurrent) cmd += " --concurrent";
-  cmd += scene_arguments(w.scene) + " --steps " + std::to_string(doc.result.steps) + " --form-factor " + w.form_factor;
+  cmd += scene_arguments(w.scene) + " --steps " + std::to_string(doc.result.steps) + " --form-factor " + to_string(w.form_factor);
   if (w.paper_faithful) cmd += " --paper-faithful";
   return cmd + " --out " + doc.out_dir + "/best-run";
 }
@@ -97,7 +96,7 @@ Json design_json(const DesignDocument& doc) {
   j["schema"] = "rc2000sim.design/1";
   j["device"] = r.device;
   // As report.json, sweep.json and paper.json record theirs (workload.h).
-  j["workload"] = workload_json(design_workload(r.workload), r.faces, r.patches, r.steps);
+  j["workload"] = workload_json(r.workload, r.faces, r.patches, r.steps);
   j["constraints"] = {{"max_banks", r.max_banks},
                       {"min_bits", doc.constraints.min_bits},
                       {"max_energy_joules", number(doc.constraints.max_energy_joules)},

@@ -89,6 +89,12 @@ DesignOptions::DesignOptions()
       concurrent(concurrency_text(space.concurrent)) {}
 
 void check_design_steps(long long steps) { check_range("--steps", steps, 1, SolverOptions{}.max_steps); }
+
+StepsChoice design_steps(long long steps) {
+  check_design_steps(steps);
+  return {StepsChoice::Kind::fixed, static_cast<int>(steps)};
+}
+
 void check_design_max_banks(long long banks) { check_range("--max-banks", banks, board::kMinBanks, 255); }
 void check_design_min_bits(long long bits) { check_range("--min-bits", bits, 7, 31); }
 void check_design_cap(const std::string& option, double value) { check_positive_finite(option, value); }
@@ -125,6 +131,11 @@ void check_form_factor(const std::string& name) {
                                 "}");
 }
 
+FormFactorKind design_form_factor(const std::string& name) {
+  check_form_factor(name);
+  return parse_form_factor_kind(name);
+}
+
 void resolve_design_options(DesignOptions& o) {
   DesignSpace& s = o.space;
   if (!o.lanes.empty()) s.lanes = parse_int_list(o.lanes, "--lanes", board::LaneCount::kMin, board::LaneCount::kMax);
@@ -140,6 +151,7 @@ void resolve_design_options(DesignOptions& o) {
   for (const std::string& m : parse_name_list(o.multipliers, "--multipliers")) s.multipliers.push_back(parse_multipliers(m));
   s.cards = parse_int_list(o.cards, "--cards", CardCount::kMin, CardCount::kMax);
   s.concurrent = parse_concurrency(o.concurrent);
+  o.workload.source = scene_source(o.workload.scene);
   o.workload.paper_faithful = !o.culled;
   if (o.constraints.max_banks > kMaxRunBanks)
     throw std::invalid_argument("--max-banks: " + std::to_string(o.constraints.max_banks) + " is above " +

@@ -239,12 +239,10 @@ struct Width {
   std::uint64_t max_segments = 0;
 };
 
-Width solve_width(const DesignWorkload& w, const Scene& scene, int bits, int steps) {
+Width solve_width(const Workload& w, BitExactVisibility visibility, const Scene& scene, int bits, int steps) {
   Width out;
-  out.solver.cull_receivers = !w.paper_faithful;
-  out.solver.form_factor = parse_form_factor_kind(w.form_factor);
-  out.solver.fixed_steps = steps;
-  out.functional = record_functional_run(scene, out.solver, w.visibility, bits);
+  out.solver = solver_options(w, steps);
+  out.functional = record_functional_run(scene, out.solver, choice_name(visibility), bits);
   out.solver.fixed_steps = out.functional.result.steps;  // to convergence: replay what was solved
   for (int i = 0; i < out.functional.result.steps; ++i)
     out.max_segments = std::max<std::uint64_t>(out.max_segments, out.functional.recording.segments(static_cast<std::size_t>(i)));
@@ -266,7 +264,7 @@ void note_infeasible(DesignSearchResult& r, const std::vector<DesignCandidate>& 
 
 }  // namespace
 
-DesignSearchResult search_designs(const DesignWorkload& workload, const DesignSpace& space,
+DesignSearchResult search_designs(const Workload& workload, BitExactVisibility visibility, const DesignSpace& space,
                                   const DesignConstraints& constraints, bool exhaustive, const Progress& progress) {
   const ConfigChecker checker({space.device, "xc2v6000"}, space.host);
   DesignSearchResult r;
@@ -280,14 +278,14 @@ DesignSearchResult search_designs(const DesignWorkload& workload, const DesignSp
   const Scene scene = prepare_scene(workload.scene).scene;
   r.faces = scene.faces.size();
   r.patches = scene.patches.size();
-  const int steps = workload.steps > 0 ? workload.steps : table2_steps(design_workload(workload), r.faces, r.patches);
+  const int steps = steps_to_solve(workload, r.faces, r.patches);
   std::map<int, Width> widths;
   for (const DesignCandidate& c : candidates)
     if (c.check.validity == Validity::ok) widths.emplace(c.design.config.bits, Width{});
   widths.emplace(15, Width{});  // the reference's
   for (auto& [bits, w] : widths) {
     progress("solving at " + std::to_string(bits) + " bits");
-    w = solve_width(workload, scene, bits, steps);
+    w = solve_width(workload, visibility, scene, bits, steps);
   }
   r.steps = widths.at(15).solver.fixed_steps;
   std::vector<TimingCase> cases;

@@ -32,6 +32,8 @@
 #include "host_sw/studies/sweep_row.h"
 #include "host_sw/studies/roofline.h"
 #include "host_sw/studies/timing_study.h"
+#include "host_sw/studies/workload.h"
+#include "host_sw/visibility/visibility_factory.h"
 #include "scenes/prepare.h"
 
 namespace rc {
@@ -121,21 +123,9 @@ void mark_front(std::vector<DesignPoint>& points);
 // Sets meets_constraints from the caps (energy and average power).
 void apply_caps(std::vector<DesignPoint>& points, const DesignConstraints& constraints);
 
-// The workload: a scene, the steps every design replays, paper-faithful or culled, the form factor.
-// Default: the paper's 280-face, 4,480-patch Cornell Box as `sweep` and `paper` build it (our box
-// refined to 70 faces, each split into 4 faces and those into 16 patches), every segment sent, for
-// Table 2's 5,889 steps, the paper's point form factor.
-struct DesignWorkload {
-  SceneOptions scene{"", 70, 1, 2, 0};
-  int steps = 0;                // 0: Table 2's count for a paper scene, else to convergence
-  bool paper_faithful = true;
-  std::string form_factor = "point";
-  std::string visibility = "fast";
-};
-
 struct DesignSearchResult {
   std::string device;
-  DesignWorkload workload;
+  Workload workload;
   std::size_t faces = 0, patches = 0;
   int steps = 0;
   std::size_t designs = 0, infeasible = 0, pruned = 0;  // of the space within the constraints
@@ -161,8 +151,12 @@ DesignCases design_cases(const std::vector<DesignCandidate>& candidates, const S
                          const VisibilityRecording& recording, std::uint64_t max_segments, bool exhaustive);
 DesignPoint design_point(const DesignConfig& design, const TimingOutcome& outcome, int steps);
 
-// The whole search (runs a timing study: once per process). `progress` gets one line per phase.
-DesignSearchResult search_designs(const DesignWorkload& workload, const DesignSpace& space,
+// The whole search (runs a timing study: once per process) on `workload` (default_design_workload(),
+// workload.h: the paper's 280/4480 box, Table 2's steps, every segment, point), its visibility
+// answered by `visibility` at every width searched. Every design replays the steps of the
+// workload's policy (steps_to_solve); to convergence, those its width's solve took (the result's
+// `steps`: the 15-bit solve's). `progress` gets one line per phase.
+DesignSearchResult search_designs(const Workload& workload, BitExactVisibility visibility, const DesignSpace& space,
                                   const DesignConstraints& constraints, bool exhaustive,
                                   const std::function<void(const std::string&)>& progress);
 

@@ -3,7 +3,6 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "host_sw/studies/design_search.h"
 #include "host_sw/studies/paper_workload.h"
 #include "host_sw/studies/study.h"
 
@@ -11,7 +10,7 @@ namespace rc {
 
 Workload run_workload(const SceneOptions& scene, const SolverOptions& solver) {
   Workload w;
-  w.source = scene.file.empty() ? "embedded:cornell-box" : scene.file;
+  w.source = scene_source(scene);
   w.scene = scene;
   w.steps.kind = solver.fixed_steps > 0 ? StepsChoice::Kind::fixed : StepsChoice::Kind::converge;
   w.steps.steps = solver.fixed_steps;
@@ -42,16 +41,17 @@ Workload paper_workload(const PaperRow& row) {
   return w;
 }
 
-Workload design_workload(const DesignWorkload& design) {
+Workload default_design_workload() {
   Workload w;
-  w.source = design.scene.file.empty() ? "embedded:cornell-box" : design.scene.file;
-  w.scene = design.scene;
-  w.steps.kind = design.steps > 0 ? StepsChoice::Kind::fixed : StepsChoice::Kind::paper;
-  w.steps.steps = design.steps;
-  w.paper_faithful = design.paper_faithful;
-  w.form_factor = parse_form_factor_kind(design.form_factor);
+  w.scene = paper_scene_options(280, 4480);
+  w.source = scene_source(w.scene);
+  w.steps.kind = StepsChoice::Kind::paper;
+  w.paper_faithful = true;
+  w.form_factor = FormFactorKind::PointToPoint;  // the paper's rule (sec 2)
   return w;
 }
+
+std::string scene_source(const SceneOptions& scene) { return scene.file.empty() ? "embedded:cornell-box" : scene.file; }
 
 int table2_steps(const Workload& w, std::uint64_t faces, std::uint64_t patches) {
   if (check_construction(w, faces, patches).kind != Construction::paper) return 0;
@@ -59,6 +59,15 @@ int table2_steps(const Workload& w, std::uint64_t faces, std::uint64_t patches) 
     if (static_cast<std::uint64_t>(row.faces) == faces && static_cast<std::uint64_t>(row.patches) == patches) return row.steps;
   }
   return 0;
+}
+
+int steps_to_solve(const Workload& w, std::uint64_t faces, std::uint64_t patches) {
+  switch (w.steps.kind) {
+    case StepsChoice::Kind::fixed: return w.steps.steps;
+    case StepsChoice::Kind::paper: return table2_steps(w, faces, patches);
+    case StepsChoice::Kind::converge: return 0;
+  }
+  throw std::logic_error("steps_to_solve: not a StepsChoice::Kind");
 }
 
 SolverOptions solver_options(const Workload& w, int steps) {

@@ -1,8 +1,9 @@
 // One workload definition (issue 25; docs/scenes.md, "One workload") shared by `run`, studies
 // (`sweep`) and `paper`: the scene and how it is built, how many shooting steps, which segments are
 // sent and the form factor. Each command makes its Workload in one place (run_workload,
-// study_workload, paper_workload) and solves from it (solver_options); report.json and sweep.json
-// record it (workload_json.h).
+// study_workload, paper_workload; `design` starts from default_design_workload and its options set
+// the rest, host_sw/studies/design_options.h) and solves from it (solver_options); report.json,
+// sweep.json and design.json record it (workload_json.h).
 //
 // The paper's Table 2 scenes are our Cornell Box refined to 70 faces, then split (70 x 4^k faces,
 // faces x 4^m patches: paper_scene_options). The same counts can be built another way (`--faces 280
@@ -24,13 +25,12 @@
 
 namespace rc {
 
-struct DesignWorkload;
 struct PaperRow;
 struct Study;
 struct StudyScene;
 
 struct Workload {
-  std::string source = "embedded:cornell-box";  // the scene file, or the embedded box
+  std::string source = "embedded:cornell-box";  // the scene file, or the embedded box (scene_source)
   SceneOptions scene;                           // how it is built
   StepsChoice steps;                            // Table 2's count, to convergence, or a fixed count
   double convergence = SolverOptions{}.convergence;
@@ -44,8 +44,13 @@ Workload run_workload(const SceneOptions& scene, const SolverOptions& solver);
 Workload study_workload(const Study& study, const StudyScene& scene);
 // A Table 2 row as `paper` solves it: the paper's construction and step count, every segment, point.
 Workload paper_workload(const PaperRow& row);
-// `design`'s workload (design_search.h): a fixed count, or Table 2's for a paper scene, else to convergence.
-Workload design_workload(const DesignWorkload& design);
+// `design`'s default (design_search.h): the paper's 280-face, 4,480-patch Cornell Box as `sweep` and
+// `paper` build it (our box refined to 70 faces, each split into 4 faces and those into 16 patches),
+// Table 2's count (5,889 steps), every segment sent, the paper's point form factor.
+Workload default_design_workload();
+
+// Workload::source of a scene built from `scene`: its file, or "embedded:cornell-box".
+std::string scene_source(const SceneOptions& scene);
 
 // The solver's options for `w`; `steps` > 0 runs exactly that many (the paper's count, resolved by
 // the caller), else the workload's own policy (a fixed count, or to convergence).
@@ -72,6 +77,11 @@ ConstructionCheck check_construction(const Workload& w, std::uint64_t faces, std
 // Table 2's step count when `w`'s scene (`faces`, `patches` as it came out) is one of the paper's,
 // built the paper's way; 0 otherwise (StepsChoice::Kind::paper then converges).
 int table2_steps(const Workload& w, std::uint64_t faces, std::uint64_t patches);
+
+// The steps to solve `w`'s scene (`faces`, `patches` as it came out) by its policy: the fixed count,
+// Table 2's (table2_steps), or 0: to convergence (a converge policy, or a paper policy on a scene
+// that is not one of Table 2's as the paper built it).
+int steps_to_solve(const Workload& w, std::uint64_t faces, std::uint64_t patches);
 
 // "--faces 70 --face-levels 1 --patch-levels 2": the options that build `scene`.
 std::string construction_text(const SceneOptions& scene);

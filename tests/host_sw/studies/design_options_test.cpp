@@ -36,7 +36,13 @@ TEST(DesignOptions, DefaultTextResolvesToTheSearchSpaceDefaults) {
   EXPECT_EQ(o.space.concurrent, defaults.concurrent);
   EXPECT_TRUE(o.space.lanes.empty() && o.space.banks.empty() && o.space.bank_clocks_mhz.empty());
   EXPECT_EQ(o.space.device, defaults.device);
+  const Workload workload = default_design_workload();
+  EXPECT_EQ(o.workload.source, workload.source);
+  EXPECT_EQ(construction_text(o.workload.scene), construction_text(workload.scene));
+  EXPECT_EQ(o.workload.steps.kind, StepsChoice::Kind::paper);
+  EXPECT_EQ(o.workload.form_factor, workload.form_factor);
   EXPECT_TRUE(o.workload.paper_faithful);
+  EXPECT_EQ(o.visibility, BitExactVisibility::fast);
   EXPECT_EQ(o.results, "bank,on_chip");
   EXPECT_EQ(o.concurrent, "on");
 }
@@ -50,6 +56,7 @@ TEST(DesignOptions, ResolvesTheAxesGiven) {
   o.multipliers = "slice";
   o.concurrent = "both";
   o.culled = true;
+  o.workload.scene.file = "configs/scenes/room.scene";
   resolve_design_options(o);
   EXPECT_EQ(o.space.lanes, (std::vector<int>{1, 2, 3}));
   EXPECT_EQ(o.space.banks, (std::vector<int>{6, 7}));
@@ -58,6 +65,24 @@ TEST(DesignOptions, ResolvesTheAxesGiven) {
   EXPECT_EQ(o.space.multipliers, (std::vector<Multipliers>{Multipliers::slice}));
   EXPECT_EQ(o.space.concurrent, (std::vector<bool>{false, true}));
   EXPECT_FALSE(o.workload.paper_faithful);
+  EXPECT_EQ(o.workload.source, "configs/scenes/room.scene");  // as `run` records a scene file
+}
+
+// --steps and --form-factor as given become the workload's typed choices, checked on the way in the
+// words of the checks above.
+TEST(DesignOptions, StepsAndFormFactorBecomeTypedChoices) {
+  const StepsChoice twelve = design_steps(12);
+  EXPECT_EQ(twelve.kind, StepsChoice::Kind::fixed);
+  EXPECT_EQ(twelve.steps, 12);
+  EXPECT_EQ(design_steps(SolverOptions{}.max_steps).steps, SolverOptions{}.max_steps);
+  EXPECT_EQ(refusal([] { design_steps(0); }), refusal([] { check_design_steps(0); }));
+  EXPECT_EQ(refusal([] { design_steps(SolverOptions{}.max_steps + 1LL); }),
+            refusal([] { check_design_steps(SolverOptions{}.max_steps + 1LL); }));
+  EXPECT_EQ(design_form_factor("point"), FormFactorKind::PointToPoint);
+  EXPECT_EQ(design_form_factor("disc"), FormFactorKind::Disc);
+  EXPECT_EQ(design_form_factor("analytic"), FormFactorKind::Analytic);
+  EXPECT_EQ(refusal([] { design_form_factor("exact"); }), refusal([] { check_form_factor("exact"); }));
+  EXPECT_EQ(refusal([] { design_form_factor("exact"); }), "--form-factor: exact not in {point,disc,analytic}");
 }
 
 TEST(DesignOptions, ChecksNameTheOptionAndTheLimit) {

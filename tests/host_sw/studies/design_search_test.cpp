@@ -136,9 +136,9 @@ TEST(DesignSearch, SpaceKeepsToTheConstraintsAndNamesWhatCannotExist) {
 TEST(DesignSearch, PrunedSearchEqualsExhaustiveOnASmallSpace) {
   // The whole space simulated once; the search's pruning drops only spare-bank designs and must give
   // the same best design and the same front. Two devices' worth of choices, one small workload.
-  DesignWorkload w;
+  Workload w = default_design_workload();
   w.scene = SceneOptions{"", 70, 0, 1, 0};
-  w.steps = 12;
+  w.steps = {StepsChoice::Kind::fixed, 12};
   const ConfigChecker checker({"virtex4-sx55"}, "athlon-mp-2600-calibrated");
   DesignSpace space;
   space.device = "virtex4-sx55";
@@ -149,8 +149,8 @@ TEST(DesignSearch, PrunedSearchEqualsExhaustiveOnASmallSpace) {
   const Scene scene = prepare_scene(w.scene).scene;
   SolverOptions solver;
   solver.cull_receivers = false;
-  solver.form_factor = parse_form_factor_kind("point");
-  solver.fixed_steps = w.steps;
+  solver.form_factor = FormFactorKind::PointToPoint;
+  solver.fixed_steps = w.steps.steps;
   const RecordedRun run = record_functional_run(scene, solver, "fast", 15);
   std::uint64_t most = 0;
   for (int i = 0; i < run.result.steps; ++i) most = std::max<std::uint64_t>(most, run.recording.segments(static_cast<std::size_t>(i)));
@@ -161,7 +161,7 @@ TEST(DesignSearch, PrunedSearchEqualsExhaustiveOnASmallSpace) {
   std::vector<DesignPoint> every, searched;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     if (all.index[i] == ~std::size_t{0}) continue;
-    every.push_back(design_point(candidates[i].design, outcomes[all.index[i]], w.steps));
+    every.push_back(design_point(candidates[i].design, outcomes[all.index[i]], w.steps.steps));
     if (pruned.index[i] != ~std::size_t{0}) searched.push_back(every.back());
   }
   for (auto* points : {&every, &searched}) {
@@ -187,6 +187,46 @@ TEST(DesignSearch, PrunedSearchEqualsExhaustiveOnASmallSpace) {
     EXPECT_EQ(spare.row.simulated_seconds, base.row.simulated_seconds) << key(spare);
     EXPECT_GT(spare.row.energy_joules, base.row.energy_joules) << key(spare);
   }
+}
+
+// The whole search on a workload that is not the default (converge, culled, disc; the fixed backend):
+// every design replays the steps a solve to convergence of that workload takes, solved here on its
+// own with the other bit-exact backend, and the result records the workload given.
+TEST(DesignSearch, SearchSolvesTheWorkloadGivenToConvergence) {
+  Workload w = default_design_workload();
+  w.scene = SceneOptions{"", 70, 0, 1, 0};  // Table 2's 70/280 (385 steps): the converge policy ignores it
+  w.steps.kind = StepsChoice::Kind::converge;
+  w.paper_faithful = false;
+  w.form_factor = FormFactorKind::Disc;
+  DesignSpace space;
+  space.device = "virtex4-sx55";
+  space.lanes = {1};
+  space.banks = {6};
+  space.results = {board::ResultStore::bank};
+  space.multipliers = {Multipliers::block};
+  std::vector<std::string> phases;
+  const DesignSearchResult r = search_designs(w, BitExactVisibility::fixed, space, DesignConstraints{}, false,
+                                              [&](const std::string& what) { phases.push_back(what); });
+  SolverOptions solver;
+  solver.cull_receivers = true;
+  solver.form_factor = FormFactorKind::Disc;
+  const RecordedRun solved = record_functional_run(prepare_scene(w.scene).scene, solver, "fast", 15);
+  ASSERT_GT(solved.result.steps, 0);
+  EXPECT_NE(solved.result.steps, 385);
+  EXPECT_EQ(r.steps, solved.result.steps);
+  EXPECT_EQ(r.faces, 70u);
+  EXPECT_EQ(r.patches, 280u);
+  EXPECT_EQ(r.workload.steps.kind, StepsChoice::Kind::converge);
+  EXPECT_FALSE(r.workload.paper_faithful);
+  EXPECT_EQ(r.workload.form_factor, FormFactorKind::Disc);
+  // The board tests every segment sent against every face: the replay sent the culled solve's segments.
+  std::uint64_t segments = 0;
+  for (int i = 0; i < solved.result.steps; ++i) segments += solved.recording.segments(static_cast<std::size_t>(i));
+  ASSERT_EQ(r.points.size(), 1u);
+  EXPECT_EQ(r.points[0].tests, segments * r.faces);
+  ASSERT_TRUE(r.reference.has_value());
+  EXPECT_EQ(r.reference->tests, segments * r.faces);
+  EXPECT_EQ(phases, (std::vector<std::string>{"preparing the scene", "solving at 15 bits", "simulating 3 systems"}));
 }
 
 }  // namespace

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <vector>
 
-#include "host_sw/studies/design_search.h"
 #include "host_sw/studies/paper_workload.h"
 #include "host_sw/studies/study_file.h"
 #include "host_sw/studies/workload.h"
@@ -101,20 +100,46 @@ TEST(Workload, EachCommandsWorkloadGivesItsSolverOptions) {
 // `design` and `sweep` take Table 2's count by one rule: only for a scene built the paper's way (the
 // counts alone are not enough: another construction with them is another mesh, see above).
 TEST(Workload, DesignAndSweepTakeTable2sCountOnlyForThePapersConstruction) {
-  DesignWorkload design;  // the default: the paper's 280/4480, Table 2's count
-  const Workload d = design_workload(design);
-  EXPECT_EQ(d.steps.kind, StepsChoice::Kind::paper);
-  EXPECT_TRUE(d.paper_faithful);
-  EXPECT_EQ(d.form_factor, FormFactorKind::PointToPoint);
-  EXPECT_EQ(table2_steps(d, 280, 4480), 5889);
-  EXPECT_EQ(table2_steps(design_workload(design), 280, 1120), 0);  // counts the construction did not give
-  design.scene = built(280, 0, 2);                                  // the same counts built another way
-  EXPECT_EQ(table2_steps(design_workload(design), 280, 4480), 0);
-  design.steps = 12;
-  EXPECT_EQ(design_workload(design).steps.kind, StepsChoice::Kind::fixed);
-  EXPECT_EQ(solver_options(design_workload(design)).fixed_steps, 12);
+  Workload design = default_design_workload();  // the paper's 280/4480, Table 2's count
+  EXPECT_EQ(design.source, "embedded:cornell-box");
+  EXPECT_EQ(construction_text(design.scene), "--faces 70 --face-levels 1 --patch-levels 2");
+  EXPECT_EQ(design.steps.kind, StepsChoice::Kind::paper);
+  EXPECT_TRUE(design.paper_faithful);
+  EXPECT_EQ(design.form_factor, FormFactorKind::PointToPoint);
+  EXPECT_EQ(design.convergence, SolverOptions{}.convergence);
+  EXPECT_EQ(table2_steps(design, 280, 4480), 5889);
+  EXPECT_EQ(table2_steps(design, 280, 1120), 0);  // counts the construction did not give
   const Study study = default_study_settings();
   EXPECT_EQ(table2_steps(study_workload(study, study.scenes.front()), 280, 1120), 1488);  // its 280/1120
+  design.scene = built(280, 0, 2);  // the same counts built another way
+  EXPECT_EQ(table2_steps(design, 280, 4480), 0);
+}
+
+// The steps a workload solves, by its policy: a fixed count whatever the scene, Table 2's only where
+// table2_steps gives one, else (and always for converge) 0, to convergence.
+TEST(Workload, StepsToSolveFollowTheWorkloadsPolicy) {
+  Workload w = default_design_workload();
+  EXPECT_EQ(steps_to_solve(w, 280, 4480), 5889);
+  EXPECT_EQ(steps_to_solve(w, 280, 1120), 0);
+  w.steps.kind = StepsChoice::Kind::converge;
+  EXPECT_EQ(steps_to_solve(w, 280, 4480), 0);
+  EXPECT_EQ(solver_options(w).fixed_steps, 0);
+  w.steps = {StepsChoice::Kind::fixed, 12};
+  EXPECT_EQ(steps_to_solve(w, 280, 4480), 12);
+  EXPECT_EQ(steps_to_solve(w, 7, 7), 12);
+  EXPECT_EQ(solver_options(w).fixed_steps, 12);
+  w.scene = built(280, 0, 2);
+  w.steps.kind = StepsChoice::Kind::paper;
+  EXPECT_EQ(steps_to_solve(w, 280, 4480), 0);
+}
+
+TEST(Workload, SceneSourceNamesTheFileOrTheEmbeddedBox) {
+  EXPECT_EQ(scene_source(SceneOptions{}), "embedded:cornell-box");
+  SceneOptions file;
+  file.file = "configs/scenes/room.scene";
+  EXPECT_EQ(scene_source(file), "configs/scenes/room.scene");
+  SolverOptions converge;
+  EXPECT_EQ(run_workload(file, converge).source, "configs/scenes/room.scene");
 }
 
 TEST(Workload, TheRecordNamesTheConstructionAndTheNoteOnlyWhenItDiffers) {

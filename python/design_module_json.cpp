@@ -162,13 +162,14 @@ DesignOptions given_options(const ordered_json& given) {
   if (given.contains("patch_levels") && given.contains("patch_size"))
     throw std::invalid_argument("--patch-levels excludes --patch-size");
   DesignOptions o;
-  for (const auto& [name, value] : given.items()) {
+  for (const auto& item : given.items()) {
+    const std::string& name = item.key();  // not a structured binding: C++17 lambdas cannot capture one (clang refuses)
     const auto& table = options();
     const auto opt = std::find_if(table.begin(), table.end(), [&](const Option& x) { return name == x.name; });
     if (opt == table.end())
       throw pybind11::type_error("rc2000tlm.design() got an unexpected keyword argument '" + name +
                                  "' (the options of `rc2000sim design`: " + names() + ")");
-    opt->apply(o, value);
+    opt->apply(o, item.value());
   }
   resolve_design_options(o);
   return o;

@@ -27,15 +27,13 @@ SolverOptions base_solver(const Study& s, const StudyScene& scene) { return solv
 
 // The steps every configuration of a scene replays: fixed, the paper's, or 0 (to convergence).
 int fixed_steps(const Study& s, const StudyScene& study_scene, const Scene& scene) {
-  const StepsChoice steps = s.steps;
-  if (steps.kind == StepsChoice::Kind::fixed) return steps.steps;
-  if (steps.kind == StepsChoice::Kind::converge) return 0;
-  const int paper = table2_steps(study_workload(s, study_scene), scene.faces.size(), scene.patches.size());
-  if (paper == 0) {
+  const Workload w = study_workload(s, study_scene);
+  const int steps = steps_to_solve(w, scene.faces.size(), scene.patches.size());
+  if (steps == 0 && w.steps.kind == StepsChoice::Kind::paper) {
     std::fprintf(stderr, "note: scene %s is not one of Table 2's; steps \"paper\" falls back to converge\n",
                  study_scene.name.c_str());
   }
-  return paper;
+  return steps;
 }
 
 struct Solved {

@@ -57,8 +57,9 @@ void FastFixedVisibility::load_triangles(const std::vector<Triangle>& faces) {
 }
 
 // FixedPointVisibility's count: for every face outside the source's sheet, every segment not ending
-// on its sheet.
-std::uint64_t FastFixedVisibility::count_brute_force_tests(const SegmentBatch& batch) const {
+// on its sheet. From the segments grouped by end sheet (submit's counting sort): a pass over the
+// faces, not the segments.
+std::uint64_t FastFixedVisibility::count_brute_force_tests(int source_face) const {
   const FaceSheets& sheets = this->sheets();
   const int faces = static_cast<int>(faces_.size());
   // Faces of sheet [first, end) inside [0, faces).
@@ -66,10 +67,15 @@ std::uint64_t FastFixedVisibility::count_brute_force_tests(const SegmentBatch& b
     const int first = std::max(sheets.first(f), 0), end = std::min(sheets.end(f), faces);
     return end > first ? static_cast<std::uint64_t>(end - first) : 0;
   };
+  // Segments ending on no face or on a face this backend does not hold are on no held sheet
+  // (faces_of gives 0 for them), and sheet_begin_ leaves them out.
   std::uint64_t ending_on_tested_faces = 0;
-  for (int f : batch.end_faces) ending_on_tested_faces += sheets.same(f, batch.source_face) ? 0 : faces_of(f);
-  const std::uint64_t tested_faces = faces_.size() - faces_of(batch.source_face);
-  return tested_faces * batch.size() - ending_on_tested_faces;
+  for (int sheet = 0; sheet < faces; ++sheet) {
+    const auto ending = static_cast<std::uint64_t>(sheet_begin_[sheet + 1] - sheet_begin_[sheet]);
+    if (ending != 0 && sheet != source_sheet_) ending_on_tested_faces += ending * faces_of(sheet);
+  }
+  const std::uint64_t tested_faces = faces_.size() - faces_of(source_face);
+  return tested_faces * segments_ - ending_on_tested_faces;
 }
 
 void FastFixedVisibility::submit(const SegmentBatch& batch) {
@@ -109,7 +115,7 @@ void FastFixedVisibility::submit(const SegmentBatch& batch) {
     end_y_[s] = e.y;
     end_z_[s] = e.z;
   }
-  brute_force_tests_ += count_brute_force_tests(batch);
+  brute_force_tests_ += count_brute_force_tests(batch.source_face);
   for (WorkerOutput& out : outputs_) {
     out.blocked.assign(n, 0);
     out.tests = out.dense_faces = out.dense_tests = 0;

@@ -95,7 +95,7 @@ class FastFixedVisibility : public VisibilityBackend {
   std::uint64_t test_every_segment(int face, WorkerOutput& out) const;
   void block_segments_ending_at(std::uint32_t point, int sheet, WorkerOutput& out) const;
   void finish_batch();
-  std::uint64_t count_brute_force_tests(const SegmentBatch& batch) const;
+  std::uint64_t count_brute_force_tests(int source_face) const;
 
   int bits_;
   std::vector<pipeline::FaceRecord> faces_;

@@ -175,7 +175,7 @@ void ProgressiveRadiosity::select_every_receiver(int shooter) {
 double ProgressiveRadiosity::delivered_share(const Patch& shooter) const {
   double sum = 0;
   for (std::size_t k = 0; k < receivers_.size(); ++k) {
-    if (batch_.is_needed(k) && !blocked_[k]) sum += form_factors_[k] * scene_.patches[receivers_[k]].area;
+    if (batch_.is_needed(k) && !blocked_[k]) sum += form_factors_[k] * columns_.area[receivers_[k]];
   }
   return sum / shooter.area;
 }
@@ -240,7 +240,7 @@ void ProgressiveRadiosity::shoot(int shooter, SolverResult& result) {
       continue;
     }
     const int j = receivers_[k];
-    const Spectrum& rho = scene_.material_of(scene_.patches[j]).reflectance;
+    const Spectrum& rho = columns_.reflectance[j];
     // Power arriving at j is F_sj * shot_power = F_js * A_j / A_s * shot_power (reciprocity).
     const Spectrum incident = shot * (form_factors_[k] * step_scale_);  // irradiance-like: B_s F_js
     const Spectrum delta = rho * incident;

@@ -99,9 +99,9 @@ void FastFixedVisibility::submit(const SegmentBatch& batch) {
   }
   for (std::size_t f = 0; f < faces_.size(); ++f) sheet_begin_[f + 1] += sheet_begin_[f];
   sheet_segments_.resize(sheet_begin_.back());
-  std::vector<std::uint32_t> next(sheet_begin_.begin(), sheet_begin_.end() - 1);
+  sheet_next_.assign(sheet_begin_.begin(), sheet_begin_.end() - 1);
   for (std::size_t s = 0; s < n; ++s) {
-    if (held(end_sheets_[s])) sheet_segments_[next[static_cast<std::size_t>(end_sheets_[s])]++] = static_cast<std::uint32_t>(s);
+    if (held(end_sheets_[s])) sheet_segments_[sheet_next_[static_cast<std::size_t>(end_sheets_[s])]++] = static_cast<std::uint32_t>(s);
   }
   tree_.mark_batch(points_, end_sheets_.data());
   source_sheet_ = sheets().first(batch.source_face);
@@ -135,9 +135,16 @@ void FastFixedVisibility::finish_batch() {
   if (!pending_) return;
   pool_.finish();
   pending_ = false;
-  blocked_.assign(segments_, 0);
+  // One worker's flags are the answer as they are (swapped in: submit assigns them afresh).
+  if (outputs_.size() == 1) {
+    blocked_.swap(outputs_.front().blocked);
+  } else {
+    blocked_.assign(segments_, 0);
+    for (const WorkerOutput& out : outputs_) {
+      for (std::size_t s = 0; s < segments_; ++s) blocked_[s] |= out.blocked[s];
+    }
+  }
   for (const WorkerOutput& out : outputs_) {
-    for (std::size_t s = 0; s < segments_; ++s) blocked_[s] |= out.blocked[s];
     tests_ += out.tests;
     dense_faces_ += out.dense_faces;
     dense_tests_ += out.dense_tests;

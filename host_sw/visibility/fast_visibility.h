@@ -108,6 +108,7 @@ class FastFixedVisibility : public VisibilityBackend {
   // The batch's segments grouped by end sheet: those ending on sheet f are
   // sheet_segments_[sheet_begin_[f] .. sheet_begin_[f + 1]).
   std::vector<std::uint32_t> sheet_begin_, sheet_segments_;
+  std::vector<std::uint32_t> sheet_next_;  // the counting sort's scratch
   std::vector<std::int64_t> end_x_, end_y_, end_z_;  // quantised, in batch order (dense faces)
   EndPointCatalogue points_;
   EndPointTree tree_;

@@ -225,10 +225,14 @@ HitRegion::HitRegion(const FaceRecord& face, const FixedVec3& start, FracBits bi
 
 HitRegion::HitRegion(const FaceRecord& face, const FaceErrorTerms& terms, const FixedVec3& start, FracBits bits) {
   const ConditionInputs in = condition_inputs(face, terms, start, bits);
-  if (in.empty) {
-    empty_ = true;
-    for (double& t : threshold_) t = std::numeric_limits<double>::infinity();
-    for (float& t : threshold_float_) t = std::numeric_limits<float>::infinity();
+  empty_ = in.empty;
+  if (in.empty) {  // nothing passes: zero planes with infinite thresholds
+    for (int k = 0; k < 4; ++k) {
+      ax_[k] = ay_[k] = az_[k] = 0;
+      threshold_[k] = std::numeric_limits<double>::infinity();
+      threshold_float_[k] = std::numeric_limits<float>::infinity();
+      for (int i = 0; i < 3; ++i) a_float_[k][i] = 0, offset_[k][i] = 0;
+    }
     return;
   }
   const double m = static_cast<double>(std::int64_t{1} << bits), s = in.sign;

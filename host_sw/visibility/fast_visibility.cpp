@@ -86,22 +86,40 @@ void FastFixedVisibility::submit(const SegmentBatch& batch) {
   if (points_.assign(batch, bits_)) tree_.build(points_);
   // Segments are matched with faces by sheet (the own-surface rule): the end point tree notes each
   // node's one end sheet, named by its first face, exactly as it would note one end face.
-  end_sheets_.resize(n);
-  for (std::size_t s = 0; s < n; ++s) end_sheets_[s] = sheets().first(batch.end_faces[s]);
+  if (sheets().one_sided()) {  // every face its own sheet
+    end_sheets_.assign(batch.end_faces.begin(), batch.end_faces.end());
+  } else {
+    end_sheets_.resize(n);
+    for (std::size_t s = 0; s < n; ++s) end_sheets_[s] = sheets().first(batch.end_faces[s]);
+  }
   // The segments ending on each sheet, grouped by sheet (a counting sort): a dense face sets
   // its own sheet's segments back after the unmasked kernel.
   // Segments ending on no face (-1) or on a face this backend does not hold are on no face's sheet.
   const auto faces = static_cast<int>(faces_.size());
   const auto held = [faces](int sheet) { return sheet >= 0 && sheet < faces; };
+  // A solver's segments come in runs ending on one sheet (a face's patches are consecutive), so
+  // both passes go run by run: counting one segment at a time would make every increment wait
+  // for the previous one's store to the same counter.
+  const auto run_end = [&](std::size_t first) {
+    std::size_t end = first + 1;
+    while (end < n && end_sheets_[end] == end_sheets_[first]) ++end;
+    return end;
+  };
   sheet_begin_.assign(faces_.size() + 1, 0);
-  for (std::size_t s = 0; s < n; ++s) {
-    if (held(end_sheets_[s])) ++sheet_begin_[static_cast<std::size_t>(end_sheets_[s]) + 1];
+  for (std::size_t s = 0, end = 0; s < n; s = end) {
+    end = run_end(s);
+    if (held(end_sheets_[s])) sheet_begin_[static_cast<std::size_t>(end_sheets_[s]) + 1] += static_cast<std::uint32_t>(end - s);
   }
   for (std::size_t f = 0; f < faces_.size(); ++f) sheet_begin_[f + 1] += sheet_begin_[f];
   sheet_segments_.resize(sheet_begin_.back());
   sheet_next_.assign(sheet_begin_.begin(), sheet_begin_.end() - 1);
-  for (std::size_t s = 0; s < n; ++s) {
-    if (held(end_sheets_[s])) sheet_segments_[sheet_next_[static_cast<std::size_t>(end_sheets_[s])]++] = static_cast<std::uint32_t>(s);
+  for (std::size_t s = 0, end = 0; s < n; s = end) {
+    end = run_end(s);
+    if (!held(end_sheets_[s])) continue;
+    std::uint32_t& next = sheet_next_[static_cast<std::size_t>(end_sheets_[s])];
+    std::uint32_t at = next;  // a local: the stores below could alias the counter
+    for (std::size_t k = s; k < end; ++k) sheet_segments_[at++] = static_cast<std::uint32_t>(k);
+    next = at;
   }
   tree_.mark_batch(points_, end_sheets_.data());
   source_sheet_ = sheets().first(batch.source_face);

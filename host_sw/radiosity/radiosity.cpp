@@ -29,19 +29,55 @@ void ProgressiveRadiosity::set_unshot(int patch, const Spectrum& unshot) {
   unshot_power_[patch] = unshot.sum() * columns_.area[patch];
 }
 
-// The patch with the most unshot power; the lowest index wins ties, so runs are deterministic. The
-// same pass sums the unshot power, in index order, as run() sums the emitted power.
-ProgressiveRadiosity::UnshotScan ProgressiveRadiosity::scan_unshot() const {
-  UnshotScan scan;
-  const double* power = unshot_power_.data();
-  double best_power = power[0];
-  scan.total = best_power;
-  for (int i = 1; i < static_cast<int>(unshot_power_.size()); ++i) {
-    const double p = power[i];
-    scan.total += p;
-    if (p > best_power) scan.shooter = i, best_power = p;
+// The first maximum of the whole pass, as a single loop finds it: the maximum of four lanes'
+// maxima, each the first of its lane, the lowest index among equal ones. The limit test needs no
+// sum in index order, which waits on every addition in turn: four partial sums run side by side.
+// For n non-negative terms both orders lie within n u (1 + n u) of the exact sum (Higham,
+// u = epsilon / 2), so the index-order total is at most the four-way one times (1 + 2 n epsilon);
+// where that stays below the limit, so does the index-order sum. Elsewhere (a total near the
+// limit, a negative term or one that is not finite) within_limit is false.
+PowerScan scan_powers(const double* power, std::size_t n, double limit) {
+  constexpr std::size_t kLanes = 4;
+  double sum[kLanes] = {0, 0, 0, 0}, best[kLanes], least = power[0];
+  std::size_t at[kLanes];
+  for (std::size_t l = 0; l < kLanes; ++l) best[l] = power[0], at[l] = 0;
+  std::size_t i = 0;
+  for (; i + kLanes <= n; i += kLanes) {
+    for (std::size_t l = 0; l < kLanes; ++l) {
+      const double p = power[i + l];
+      sum[l] += p;
+      least = std::fmin(least, p);
+      if (p > best[l]) best[l] = p, at[l] = i + l;
+    }
   }
-  return scan;
+  for (; i < n; ++i) {
+    const double p = power[i];
+    sum[0] += p;
+    least = std::fmin(least, p);
+    if (p > best[0]) best[0] = p, at[0] = i;
+  }
+  double top = best[0];
+  std::size_t first = at[0];
+  for (std::size_t l = 1; l < kLanes; ++l) {
+    if (best[l] > top || (best[l] == top && at[l] < first)) top = best[l], first = at[l];
+  }
+  const double total = ((sum[0] + sum[1]) + sum[2]) + sum[3];
+  const double order_bound = 1.0 + 4.0 * double(n + 2) * std::numeric_limits<double>::epsilon();
+  return {first, least >= 0 && std::isfinite(total) && total * order_bound <= limit};
+}
+
+// The patch with the most unshot power; the lowest index wins ties, so runs are deterministic.
+// The same pass tells whether the energy guard's total is surely within its limit; only when it
+// is not does the guard sum it (unshot_total, in index order, as run() sums the emitted power).
+ProgressiveRadiosity::UnshotScan ProgressiveRadiosity::scan_unshot() const {
+  const PowerScan s = scan_powers(unshot_power_.data(), unshot_power_.size(), energy_limit_);
+  return {static_cast<int>(s.first_maximum), s.within_limit};
+}
+
+double ProgressiveRadiosity::unshot_total() const {
+  double total = unshot_power_[0];
+  for (std::size_t i = 1; i < unshot_power_.size(); ++i) total += unshot_power_[i];
+  return total;
 }
 
 bool ProgressiveRadiosity::done(int steps, double max_unshot) const {
@@ -117,7 +153,7 @@ SolverResult ProgressiveRadiosity::run() {
     charge(HostWork::Step, 1);
     scan = scan_unshot();
     charge(HostWork::PatchScan, n);
-    check_energy(result.steps, shooter, scan.total, result);
+    if (!scan.within_limit) check_energy(result.steps, shooter, unshot_total(), result);
     check_balance(result.steps, shooter, result);
     if (progress_) progress_({result.steps, 1.0 - unshot_power(scan.shooter) / initial_max_power_});
   }

@@ -29,41 +29,32 @@ void ProgressiveRadiosity::set_unshot(int patch, const Spectrum& unshot) {
   unshot_power_[patch] = unshot.sum() * columns_.area[patch];
 }
 
-// The first maximum of the whole pass, as a single loop finds it: the maximum of four lanes'
-// maxima, each the first of its lane, the lowest index among equal ones. The limit test needs no
-// sum in index order, which waits on every addition in turn: four partial sums run side by side.
-// For n non-negative terms both orders lie within n u (1 + n u) of the exact sum (Higham,
-// u = epsilon / 2), so the index-order total is at most the four-way one times (1 + 2 n epsilon);
-// where that stays below the limit, so does the index-order sum. Elsewhere (a total near the
-// limit, a negative term or one that is not finite) within_limit is false.
+// The first maximum, as a single loop finds it (the comparison is rarely true, so its branch is
+// predicted). The limit test needs no sum in index order, which waits on every addition in turn:
+// four partial sums run side by side. For n non-negative terms both orders lie within
+// n u (1 + n u) of the exact sum (Higham, u = epsilon / 2), so the index-order total is at most
+// the four-way one times (1 + 2 n epsilon); where that stays below the limit, so does the
+// index-order sum. Elsewhere (a total near the limit, a negative term or one that is not finite)
+// within_limit is false.
 PowerScan scan_powers(const double* power, std::size_t n, double limit) {
   constexpr std::size_t kLanes = 4;
-  double sum[kLanes] = {0, 0, 0, 0}, best[kLanes], least = power[0];
-  std::size_t at[kLanes];
-  for (std::size_t l = 0; l < kLanes; ++l) best[l] = power[0], at[l] = 0;
+  double sum[kLanes] = {0, 0, 0, 0}, best = power[0];
+  std::size_t first = 0;
+  bool negative = false;
+  const auto visit = [&](std::size_t i, double& lane) {
+    const double p = power[i];
+    lane += p;
+    negative |= p < 0;
+    if (p > best) best = p, first = i;
+  };
   std::size_t i = 0;
   for (; i + kLanes <= n; i += kLanes) {
-    for (std::size_t l = 0; l < kLanes; ++l) {
-      const double p = power[i + l];
-      sum[l] += p;
-      least = std::fmin(least, p);
-      if (p > best[l]) best[l] = p, at[l] = i + l;
-    }
+    for (std::size_t l = 0; l < kLanes; ++l) visit(i + l, sum[l]);
   }
-  for (; i < n; ++i) {
-    const double p = power[i];
-    sum[0] += p;
-    least = std::fmin(least, p);
-    if (p > best[0]) best[0] = p, at[0] = i;
-  }
-  double top = best[0];
-  std::size_t first = at[0];
-  for (std::size_t l = 1; l < kLanes; ++l) {
-    if (best[l] > top || (best[l] == top && at[l] < first)) top = best[l], first = at[l];
-  }
+  for (; i < n; ++i) visit(i, sum[0]);
   const double total = ((sum[0] + sum[1]) + sum[2]) + sum[3];
   const double order_bound = 1.0 + 4.0 * double(n + 2) * std::numeric_limits<double>::epsilon();
-  return {first, least >= 0 && std::isfinite(total) && total * order_bound <= limit};
+  return {first, !negative && std::isfinite(total) && total * order_bound <= limit};
 }
 
 // The patch with the most unshot power; the lowest index wins ties, so runs are deterministic.

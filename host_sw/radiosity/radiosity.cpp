@@ -257,13 +257,16 @@ void ProgressiveRadiosity::shoot(int shooter, SolverResult& result) {
   step_scale_ = sums.normalised && share > 1 ? 1.0 / share : 1.0;
 
   double arrived = 0;
-  std::uint64_t updated = 0;
+  // The run's absorbed power and blocked count, added to in registers: through `result` every
+  // addition would wait for the previous one's store (the same additions, in the same order).
+  double absorbed = result.energy.absorbed;
+  std::uint64_t updated = 0, blocked = 0;
   // Receivers that exchange energy and are not blocked are updated (and charged for); the others
   // are skipped, whatever the backend said about the unneeded ones.
   for (std::size_t k = 0; k < receivers_.size(); ++k) {
     if (!batch_.is_needed(k)) continue;
     if (blocked_[k]) {
-      ++result.blocked_segments;
+      ++blocked;
       continue;
     }
     const int j = receivers_[k];
@@ -277,9 +280,11 @@ void ProgressiveRadiosity::shoot(int shooter, SolverResult& result) {
     const double area = columns_.area[j];
     unshot_power_[j] = unshot.sum() * area;
     arrived += incident.sum() * area;
-    result.energy.absorbed += (incident.sum() - delta.sum()) * area;
+    absorbed += (incident.sum() - delta.sum()) * area;
     ++updated;
   }
+  result.energy.absorbed = absorbed;
+  result.blocked_segments += blocked;
   charge(HostWork::EnergyUpdate, updated);
   result.energy.escaping += shot_power - arrived;
   if (sums.normalised && !(arrived <= shot_power * (1 + rounding_))) {

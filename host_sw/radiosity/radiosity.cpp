@@ -134,6 +134,7 @@ SolverResult ProgressiveRadiosity::run() {
   rounding_ = 2.0 * (n + 2) * std::numeric_limits<double>::epsilon();
   energy_limit_ = result.energy.emitted * (1.0 + rounding_);
   visibility_.load_faces(scene_.face_triangles(), scene_.sheets);
+  every_receiver_shooter_ = -1;
 
   UnshotScan scan = scan_unshot();
   charge(HostWork::PatchScan, n);
@@ -167,6 +168,7 @@ SolverResult ProgressiveRadiosity::run() {
 
 // Only the receivers that exchange energy with the shooter, in patch order.
 void ProgressiveRadiosity::select_exchanging_receivers(int shooter, SolverResult& result) {
+  every_receiver_shooter_ = -1;
   batch_.ends.clear();
   batch_.end_faces.clear();
   batch_.needed.clear();
@@ -191,10 +193,26 @@ void ProgressiveRadiosity::select_every_receiver(int shooter) {
     to.assign(from.begin(), from.begin() + static_cast<std::ptrdiff_t>(s));
     to.insert(to.end(), from.begin() + static_cast<std::ptrdiff_t>(s) + 1, from.end());
   };
-  receivers_.resize(n - 1);
-  for (std::size_t k = 0; k + 1 < n; ++k) receivers_[k] = static_cast<int>(k < s ? k : k + 1);
-  without_shooter(batch_.ends, columns_.centre);
-  without_shooter(batch_.end_faces, columns_.face);
+  // Entry k is patch k below the shooter and k + 1 from it on. The entries built for the previous
+  // shooter differ from these only between the two shooters: below both they are the same
+  // patches, above both the same patches shifted by one.
+  std::size_t lo = 0, hi = n - 1;
+  if (every_receiver_shooter_ >= 0 && receivers_.size() == n - 1) {
+    const auto previous = static_cast<std::size_t>(every_receiver_shooter_);
+    lo = std::min(s, previous);
+    hi = std::max(s, previous);
+  } else {
+    receivers_.resize(n - 1);
+    batch_.ends.resize(n - 1);
+    batch_.end_faces.resize(n - 1);
+  }
+  for (std::size_t k = lo; k < hi; ++k) {
+    const std::size_t patch = k < s ? k : k + 1;
+    receivers_[k] = static_cast<int>(patch);
+    batch_.ends[k] = columns_.centre[patch];
+    batch_.end_faces[k] = columns_.face[patch];
+  }
+  every_receiver_shooter_ = shooter;
   without_shooter(batch_.needed, sweep_.exchanges);
   if (std::all_of(batch_.needed.begin(), batch_.needed.end(), [](std::uint8_t x) { return x != 0; })) batch_.needed.clear();
 }

@@ -184,6 +184,8 @@ class ProgressiveRadiosity {
   PatchColumns columns_;  // the patches' geometry, for the sweep
   ReceiverSweep sweep_;   // this step's geometry and form factors, by patch
   std::vector<int> receivers_;
+  // The shooter whose every receiver batch_.ends, batch_.end_faces and receivers_ hold (-1: none).
+  int every_receiver_shooter_ = -1;
   std::vector<double> form_factors_;
   std::vector<std::uint8_t> blocked_;
 };

@@ -21,7 +21,7 @@ struct FaceStartValues {
   std::int64_t t;
 };
 
-FaceStartValues face_start_values(const FaceRecord& face, const FixedVec3& start, FracBits bits) {
+[[gnu::always_inline]] inline FaceStartValues face_start_values(const FaceRecord& face, const FixedVec3& start, FracBits bits) {
   const FixedVec3 none{0, 0, 0};
   NoProbe probe;
   const Stage1Values<std::int64_t> s1 = stage1(face.v0, face.edge2, start, none, bits, probe);
@@ -80,7 +80,7 @@ struct ConditionInputs {
 // component-wise form pays only for det, whose terms depend on the face alone (FaceErrorTerms,
 // computed once per face). Measured with bench_visibility at 7 bits: component-wise u, v and W
 // too ran 151.9 kernel tests per segment instead of 152.2, in the same time.
-ConditionInputs condition_inputs(const FaceRecord& face, const FaceErrorTerms& terms, const FixedVec3& start,
+[[gnu::always_inline]] inline ConditionInputs condition_inputs(const FaceRecord& face, const FaceErrorTerms& terms, const FixedVec3& start,
                                  FracBits bits) {
   const FaceStartValues f = face_start_values(face, start, bits);
   ConditionInputs in{};
@@ -97,6 +97,36 @@ ConditionInputs condition_inputs(const FaceRecord& face, const FaceErrorTerms& t
   // M^2 (det - u - v) - d.W = det's error - u's error - M (v's error).
   in.w = {terms.det.lo - m1 * tv, terms.det.hi + m1 * tv + 6 * m1 * m};
   return in;
+}
+
+// a if `first`, else b, without a branch (float and double; other types as they are): which one
+// wins follows the sign of t and the rounding of a threshold, which no predictor can guess, and a
+// mispredicted branch costs more than computing both.
+template <class Num>
+Num select(bool first, Num a, Num b) {
+  return first ? a : b;
+}
+
+template <class Bits, class Num>
+Num select_bits(bool first, Num a, Num b) {
+  Bits x, y;
+  std::memcpy(&x, &a, sizeof x);
+  std::memcpy(&y, &b, sizeof y);
+  const Bits mask = Bits{0} - static_cast<Bits>(first);
+  const Bits r = (x & mask) | (y & ~mask);
+  Num out;
+  std::memcpy(&out, &r, sizeof out);
+  return out;
+}
+
+template <>
+float select(bool first, float a, float b) {
+  return select_bits<std::uint32_t>(first, a, b);
+}
+
+template <>
+double select(bool first, double a, double b) {
+  return select_bits<std::uint64_t>(first, a, b);
 }
 
 template <class Num>
@@ -116,7 +146,7 @@ Thresholds<Num> thresholds(const FaceErrorTerms& terms, const ConditionInputs& i
     const bool fits = v >= Wide(INT64_MIN) && v <= Wide(INT64_MAX);
     return fits ? Num(static_cast<std::int64_t>(v)) : Num(v);
   };
-  const auto c = [&](Num target, const ErrorRange& e) { return target - (pos ? num(e.hi) : -num(e.lo)); };
+  const auto c = [&](Num target, const ErrorRange& e) { return target - select<Num>(pos, num(e.hi), -num(e.lo)); };
   Thresholds<Num> r;
   r.c[0] = c(m * m * Num(in.abs_t + 1), terms.det);  // s*det >= |t| + 1
   r.c[1] = c(m * m, in.u);                         // s*u >= 1
@@ -179,7 +209,7 @@ namespace {
 // spacing below x, and rounding it moves it by at most half a spacing.
 float round_down(double x) {
   const float f = static_cast<float>(x);
-  return static_cast<double>(f) <= x ? f : static_cast<float>(x - std::fabs(x) * 0x1p-23);
+  return select<float>(static_cast<double>(f) <= x, f, static_cast<float>(x - std::fabs(x) * 0x1p-23));
 }
 
 }  // namespace
@@ -195,10 +225,14 @@ HitRegion::HitRegion(const FaceRecord& face, const FixedVec3& start, FracBits bi
 
 HitRegion::HitRegion(const FaceRecord& face, const FaceErrorTerms& terms, const FixedVec3& start, FracBits bits) {
   const ConditionInputs in = condition_inputs(face, terms, start, bits);
-  if (in.empty) {
-    empty_ = true;
-    for (double& t : threshold_) t = std::numeric_limits<double>::infinity();
-    for (float& t : threshold_float_) t = std::numeric_limits<float>::infinity();
+  empty_ = in.empty;
+  if (in.empty) {  // nothing passes: zero planes with infinite thresholds
+    for (int k = 0; k < 4; ++k) {
+      ax_[k] = ay_[k] = az_[k] = 0;
+      threshold_[k] = std::numeric_limits<double>::infinity();
+      threshold_float_[k] = std::numeric_limits<float>::infinity();
+      for (int i = 0; i < 3; ++i) a_float_[k][i] = 0, offset_[k][i] = 0;
+    }
     return;
   }
   const double m = static_cast<double>(std::int64_t{1} << bits), s = in.sign;

@@ -29,19 +29,46 @@ void ProgressiveRadiosity::set_unshot(int patch, const Spectrum& unshot) {
   unshot_power_[patch] = unshot.sum() * columns_.area[patch];
 }
 
-// The patch with the most unshot power; the lowest index wins ties, so runs are deterministic. The
-// same pass sums the unshot power, in index order, as run() sums the emitted power.
-ProgressiveRadiosity::UnshotScan ProgressiveRadiosity::scan_unshot() const {
-  UnshotScan scan;
-  const double* power = unshot_power_.data();
-  double best_power = power[0];
-  scan.total = best_power;
-  for (int i = 1; i < static_cast<int>(unshot_power_.size()); ++i) {
+// The first maximum, as a single loop finds it (the comparison is rarely true, so its branch is
+// predicted). The limit test needs no sum in index order, which waits on every addition in turn:
+// four partial sums run side by side. For n non-negative terms both orders lie within
+// n u (1 + n u) of the exact sum (Higham, u = epsilon / 2), so the index-order total is at most
+// the four-way one times (1 + 2 n epsilon); where that stays below the limit, so does the
+// index-order sum. Elsewhere (a total near the limit, a negative term or one that is not finite)
+// within_limit is false.
+PowerScan scan_powers(const double* power, std::size_t n, double limit) {
+  constexpr std::size_t kLanes = 4;
+  double sum[kLanes] = {0, 0, 0, 0}, best = power[0];
+  std::size_t first = 0;
+  bool negative = false;
+  const auto visit = [&](std::size_t i, double& lane) {
     const double p = power[i];
-    scan.total += p;
-    if (p > best_power) scan.shooter = i, best_power = p;
+    lane += p;
+    negative |= p < 0;
+    if (p > best) best = p, first = i;
+  };
+  std::size_t i = 0;
+  for (; i + kLanes <= n; i += kLanes) {
+    for (std::size_t l = 0; l < kLanes; ++l) visit(i + l, sum[l]);
   }
-  return scan;
+  for (; i < n; ++i) visit(i, sum[0]);
+  const double total = ((sum[0] + sum[1]) + sum[2]) + sum[3];
+  const double order_bound = 1.0 + 4.0 * double(n + 2) * std::numeric_limits<double>::epsilon();
+  return {first, !negative && std::isfinite(total) && total * order_bound <= limit};
+}
+
+// The patch with the most unshot power; the lowest index wins ties, so runs are deterministic.
+// The same pass tells whether the energy guard's total is surely within its limit; only when it
+// is not does the guard sum it (unshot_total, in index order, as run() sums the emitted power).
+ProgressiveRadiosity::UnshotScan ProgressiveRadiosity::scan_unshot() const {
+  const PowerScan s = scan_powers(unshot_power_.data(), unshot_power_.size(), energy_limit_);
+  return {static_cast<int>(s.first_maximum), s.within_limit};
+}
+
+double ProgressiveRadiosity::unshot_total() const {
+  double total = unshot_power_[0];
+  for (std::size_t i = 1; i < unshot_power_.size(); ++i) total += unshot_power_[i];
+  return total;
 }
 
 bool ProgressiveRadiosity::done(int steps, double max_unshot) const {
@@ -107,6 +134,7 @@ SolverResult ProgressiveRadiosity::run() {
   rounding_ = 2.0 * (n + 2) * std::numeric_limits<double>::epsilon();
   energy_limit_ = result.energy.emitted * (1.0 + rounding_);
   visibility_.load_faces(scene_.face_triangles(), scene_.sheets);
+  every_receiver_shooter_ = -1;
 
   UnshotScan scan = scan_unshot();
   charge(HostWork::PatchScan, n);
@@ -117,7 +145,7 @@ SolverResult ProgressiveRadiosity::run() {
     charge(HostWork::Step, 1);
     scan = scan_unshot();
     charge(HostWork::PatchScan, n);
-    check_energy(result.steps, shooter, scan.total, result);
+    if (!scan.within_limit) check_energy(result.steps, shooter, unshot_total(), result);
     check_balance(result.steps, shooter, result);
     if (progress_) progress_({result.steps, 1.0 - unshot_power(scan.shooter) / initial_max_power_});
   }
@@ -140,6 +168,7 @@ SolverResult ProgressiveRadiosity::run() {
 
 // Only the receivers that exchange energy with the shooter, in patch order.
 void ProgressiveRadiosity::select_exchanging_receivers(int shooter, SolverResult& result) {
+  every_receiver_shooter_ = -1;
   batch_.ends.clear();
   batch_.end_faces.clear();
   batch_.needed.clear();
@@ -164,10 +193,26 @@ void ProgressiveRadiosity::select_every_receiver(int shooter) {
     to.assign(from.begin(), from.begin() + static_cast<std::ptrdiff_t>(s));
     to.insert(to.end(), from.begin() + static_cast<std::ptrdiff_t>(s) + 1, from.end());
   };
-  receivers_.resize(n - 1);
-  for (std::size_t k = 0; k + 1 < n; ++k) receivers_[k] = static_cast<int>(k < s ? k : k + 1);
-  without_shooter(batch_.ends, columns_.centre);
-  without_shooter(batch_.end_faces, columns_.face);
+  // Entry k is patch k below the shooter and k + 1 from it on. The entries built for the previous
+  // shooter differ from these only between the two shooters: below both they are the same
+  // patches, above both the same patches shifted by one.
+  std::size_t lo = 0, hi = n - 1;
+  if (every_receiver_shooter_ >= 0 && receivers_.size() == n - 1) {
+    const auto previous = static_cast<std::size_t>(every_receiver_shooter_);
+    lo = std::min(s, previous);
+    hi = std::max(s, previous);
+  } else {
+    receivers_.resize(n - 1);
+    batch_.ends.resize(n - 1);
+    batch_.end_faces.resize(n - 1);
+  }
+  for (std::size_t k = lo; k < hi; ++k) {
+    const std::size_t patch = k < s ? k : k + 1;
+    receivers_[k] = static_cast<int>(patch);
+    batch_.ends[k] = columns_.centre[patch];
+    batch_.end_faces[k] = columns_.face[patch];
+  }
+  every_receiver_shooter_ = shooter;
   without_shooter(batch_.needed, sweep_.exchanges);
   if (std::all_of(batch_.needed.begin(), batch_.needed.end(), [](std::uint8_t x) { return x != 0; })) batch_.needed.clear();
 }
@@ -175,7 +220,7 @@ void ProgressiveRadiosity::select_every_receiver(int shooter) {
 double ProgressiveRadiosity::delivered_share(const Patch& shooter) const {
   double sum = 0;
   for (std::size_t k = 0; k < receivers_.size(); ++k) {
-    if (batch_.is_needed(k) && !blocked_[k]) sum += form_factors_[k] * scene_.patches[receivers_[k]].area;
+    if (batch_.is_needed(k) && !blocked_[k]) sum += form_factors_[k] * columns_.area[receivers_[k]];
   }
   return sum / shooter.area;
 }
@@ -230,17 +275,20 @@ void ProgressiveRadiosity::shoot(int shooter, SolverResult& result) {
   step_scale_ = sums.normalised && share > 1 ? 1.0 / share : 1.0;
 
   double arrived = 0;
-  std::uint64_t updated = 0;
+  // The run's absorbed power and blocked count, added to in registers: through `result` every
+  // addition would wait for the previous one's store (the same additions, in the same order).
+  double absorbed = result.energy.absorbed;
+  std::uint64_t updated = 0, blocked = 0;
   // Receivers that exchange energy and are not blocked are updated (and charged for); the others
   // are skipped, whatever the backend said about the unneeded ones.
   for (std::size_t k = 0; k < receivers_.size(); ++k) {
     if (!batch_.is_needed(k)) continue;
     if (blocked_[k]) {
-      ++result.blocked_segments;
+      ++blocked;
       continue;
     }
     const int j = receivers_[k];
-    const Spectrum& rho = scene_.material_of(scene_.patches[j]).reflectance;
+    const Spectrum& rho = columns_.reflectance[j];
     // Power arriving at j is F_sj * shot_power = F_js * A_j / A_s * shot_power (reciprocity).
     const Spectrum incident = shot * (form_factors_[k] * step_scale_);  // irradiance-like: B_s F_js
     const Spectrum delta = rho * incident;
@@ -250,9 +298,11 @@ void ProgressiveRadiosity::shoot(int shooter, SolverResult& result) {
     const double area = columns_.area[j];
     unshot_power_[j] = unshot.sum() * area;
     arrived += incident.sum() * area;
-    result.energy.absorbed += (incident.sum() - delta.sum()) * area;
+    absorbed += (incident.sum() - delta.sum()) * area;
     ++updated;
   }
+  result.energy.absorbed = absorbed;
+  result.blocked_segments += blocked;
   charge(HostWork::EnergyUpdate, updated);
   result.energy.escaping += shot_power - arrived;
   if (sums.normalised && !(arrived <= shot_power * (1 + rounding_))) {

@@ -115,6 +115,15 @@ struct StepProgress {
   double convergence_reached = 0;
 };
 
+// One pass over n >= 1 values: the index of the first largest one (ignoring NaNs after the
+// first value, as `if (p > best)` does), and whether their sum in index order (power[0] + power[1]
+// + ...) is surely <= limit, known without forming that sum (false when unsure).
+struct PowerScan {
+  std::size_t first_maximum = 0;
+  bool within_limit = false;
+};
+PowerScan scan_powers(const double* power, std::size_t n, double limit);
+
 class ProgressiveRadiosity {
  public:
   ProgressiveRadiosity(const Scene& scene, VisibilityBackend& visibility, SolverOptions options,
@@ -123,13 +132,15 @@ class ProgressiveRadiosity {
   SolverResult run();
 
  private:
-  // One pass over the patches: the next shooter (most unshot power, lowest index on ties) and the
-  // total unshot power, which the energy guard checks.
+  // One pass over the patches: the next shooter (most unshot power, lowest index on ties) and
+  // whether the total unshot power, summed in index order, is surely within the energy guard's
+  // limit (radiosity.cpp, scan_unshot); when it is not, unshot_total() sums it for the guard.
   struct UnshotScan {
     int shooter = 0;
-    double total = 0;
+    bool within_limit = false;
   };
   UnshotScan scan_unshot() const;
+  double unshot_total() const;  // the unshot power summed in index order
   double unshot_power(int patch) const;  // unshot x area, kept up to date by set_unshot
   void set_unshot(int patch, const Spectrum& unshot);
   // Throws SolveDiverged when the total unshot power after `step` steps is not finite or exceeds
@@ -173,6 +184,8 @@ class ProgressiveRadiosity {
   PatchColumns columns_;  // the patches' geometry, for the sweep
   ReceiverSweep sweep_;   // this step's geometry and form factors, by patch
   std::vector<int> receivers_;
+  // The shooter whose every receiver batch_.ends, batch_.end_faces and receivers_ hold (-1: none).
+  int every_receiver_shooter_ = -1;
   std::vector<double> form_factors_;
   std::vector<std::uint8_t> blocked_;
 };

@@ -17,6 +17,7 @@ PatchColumns::PatchColumns(const Scene& scene) {
   sheet_value.resize(n);
   centre.resize(n);
   face.resize(n);
+  reflectance.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const Patch& p = scene.patches[i];
     cx[i] = p.centre.x, cy[i] = p.centre.y, cz[i] = p.centre.z;
@@ -25,6 +26,7 @@ PatchColumns::PatchColumns(const Scene& scene) {
     sheet_value[i] = scene.sheets.first(p.face);
     centre[i] = p.centre;
     face[i] = p.face;
+    reflectance[i] = scene.material_of(p).reflectance;
   }
 }
 

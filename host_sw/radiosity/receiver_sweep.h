@@ -24,6 +24,7 @@ struct PatchColumns {
   std::vector<double> sheet_value;  // the first face of the patch's face's sheet, as a double (exact), for the vector compare
   std::vector<Vec3> centre;
   std::vector<int> face;
+  std::vector<Spectrum> reflectance;  // the patch's material's, side by side for the energy update
   std::size_t size() const { return area.size(); }
 };
 

@@ -57,8 +57,9 @@ void FastFixedVisibility::load_triangles(const std::vector<Triangle>& faces) {
 }
 
 // FixedPointVisibility's count: for every face outside the source's sheet, every segment not ending
-// on its sheet.
-std::uint64_t FastFixedVisibility::count_brute_force_tests(const SegmentBatch& batch) const {
+// on its sheet. From the segments grouped by end sheet (submit's counting sort): a pass over the
+// faces, not the segments.
+std::uint64_t FastFixedVisibility::count_brute_force_tests(int source_face) const {
   const FaceSheets& sheets = this->sheets();
   const int faces = static_cast<int>(faces_.size());
   // Faces of sheet [first, end) inside [0, faces).
@@ -66,10 +67,15 @@ std::uint64_t FastFixedVisibility::count_brute_force_tests(const SegmentBatch& b
     const int first = std::max(sheets.first(f), 0), end = std::min(sheets.end(f), faces);
     return end > first ? static_cast<std::uint64_t>(end - first) : 0;
   };
+  // Segments ending on no face or on a face this backend does not hold are on no held sheet
+  // (faces_of gives 0 for them), and sheet_begin_ leaves them out.
   std::uint64_t ending_on_tested_faces = 0;
-  for (int f : batch.end_faces) ending_on_tested_faces += sheets.same(f, batch.source_face) ? 0 : faces_of(f);
-  const std::uint64_t tested_faces = faces_.size() - faces_of(batch.source_face);
-  return tested_faces * batch.size() - ending_on_tested_faces;
+  for (int sheet = 0; sheet < faces; ++sheet) {
+    const auto ending = static_cast<std::uint64_t>(sheet_begin_[sheet + 1] - sheet_begin_[sheet]);
+    if (ending != 0 && sheet != source_sheet_) ending_on_tested_faces += ending * faces_of(sheet);
+  }
+  const std::uint64_t tested_faces = faces_.size() - faces_of(source_face);
+  return tested_faces * segments_ - ending_on_tested_faces;
 }
 
 void FastFixedVisibility::submit(const SegmentBatch& batch) {
@@ -80,22 +86,40 @@ void FastFixedVisibility::submit(const SegmentBatch& batch) {
   if (points_.assign(batch, bits_)) tree_.build(points_);
   // Segments are matched with faces by sheet (the own-surface rule): the end point tree notes each
   // node's one end sheet, named by its first face, exactly as it would note one end face.
-  end_sheets_.resize(n);
-  for (std::size_t s = 0; s < n; ++s) end_sheets_[s] = sheets().first(batch.end_faces[s]);
+  if (sheets().one_sided()) {  // every face its own sheet
+    end_sheets_.assign(batch.end_faces.begin(), batch.end_faces.end());
+  } else {
+    end_sheets_.resize(n);
+    for (std::size_t s = 0; s < n; ++s) end_sheets_[s] = sheets().first(batch.end_faces[s]);
+  }
   // The segments ending on each sheet, grouped by sheet (a counting sort): a dense face sets
   // its own sheet's segments back after the unmasked kernel.
   // Segments ending on no face (-1) or on a face this backend does not hold are on no face's sheet.
   const auto faces = static_cast<int>(faces_.size());
   const auto held = [faces](int sheet) { return sheet >= 0 && sheet < faces; };
+  // A solver's segments come in runs ending on one sheet (a face's patches are consecutive), so
+  // both passes go run by run: counting one segment at a time would make every increment wait
+  // for the previous one's store to the same counter.
+  const auto run_end = [&](std::size_t first) {
+    std::size_t end = first + 1;
+    while (end < n && end_sheets_[end] == end_sheets_[first]) ++end;
+    return end;
+  };
   sheet_begin_.assign(faces_.size() + 1, 0);
-  for (std::size_t s = 0; s < n; ++s) {
-    if (held(end_sheets_[s])) ++sheet_begin_[static_cast<std::size_t>(end_sheets_[s]) + 1];
+  for (std::size_t s = 0, end = 0; s < n; s = end) {
+    end = run_end(s);
+    if (held(end_sheets_[s])) sheet_begin_[static_cast<std::size_t>(end_sheets_[s]) + 1] += static_cast<std::uint32_t>(end - s);
   }
   for (std::size_t f = 0; f < faces_.size(); ++f) sheet_begin_[f + 1] += sheet_begin_[f];
   sheet_segments_.resize(sheet_begin_.back());
-  std::vector<std::uint32_t> next(sheet_begin_.begin(), sheet_begin_.end() - 1);
-  for (std::size_t s = 0; s < n; ++s) {
-    if (held(end_sheets_[s])) sheet_segments_[next[static_cast<std::size_t>(end_sheets_[s])]++] = static_cast<std::uint32_t>(s);
+  sheet_next_.assign(sheet_begin_.begin(), sheet_begin_.end() - 1);
+  for (std::size_t s = 0, end = 0; s < n; s = end) {
+    end = run_end(s);
+    if (!held(end_sheets_[s])) continue;
+    std::uint32_t& next = sheet_next_[static_cast<std::size_t>(end_sheets_[s])];
+    std::uint32_t at = next;  // a local: the stores below could alias the counter
+    for (std::size_t k = s; k < end; ++k) sheet_segments_[at++] = static_cast<std::uint32_t>(k);
+    next = at;
   }
   tree_.mark_batch(points_, end_sheets_.data());
   source_sheet_ = sheets().first(batch.source_face);
@@ -109,7 +133,7 @@ void FastFixedVisibility::submit(const SegmentBatch& batch) {
     end_y_[s] = e.y;
     end_z_[s] = e.z;
   }
-  brute_force_tests_ += count_brute_force_tests(batch);
+  brute_force_tests_ += count_brute_force_tests(batch.source_face);
   for (WorkerOutput& out : outputs_) {
     out.blocked.assign(n, 0);
     out.tests = out.dense_faces = out.dense_tests = 0;
@@ -129,9 +153,16 @@ void FastFixedVisibility::finish_batch() {
   if (!pending_) return;
   pool_.finish();
   pending_ = false;
-  blocked_.assign(segments_, 0);
+  // One worker's flags are the answer as they are (swapped in: submit assigns them afresh).
+  if (outputs_.size() == 1) {
+    blocked_.swap(outputs_.front().blocked);
+  } else {
+    blocked_.assign(segments_, 0);
+    for (const WorkerOutput& out : outputs_) {
+      for (std::size_t s = 0; s < segments_; ++s) blocked_[s] |= out.blocked[s];
+    }
+  }
   for (const WorkerOutput& out : outputs_) {
-    for (std::size_t s = 0; s < segments_; ++s) blocked_[s] |= out.blocked[s];
     tests_ += out.tests;
     dense_faces_ += out.dense_faces;
     dense_tests_ += out.dense_tests;

@@ -95,7 +95,7 @@ class FastFixedVisibility : public VisibilityBackend {
   std::uint64_t test_every_segment(int face, WorkerOutput& out) const;
   void block_segments_ending_at(std::uint32_t point, int sheet, WorkerOutput& out) const;
   void finish_batch();
-  std::uint64_t count_brute_force_tests(const SegmentBatch& batch) const;
+  std::uint64_t count_brute_force_tests(int source_face) const;
 
   int bits_;
   std::vector<pipeline::FaceRecord> faces_;
@@ -108,6 +108,7 @@ class FastFixedVisibility : public VisibilityBackend {
   // The batch's segments grouped by end sheet: those ending on sheet f are
   // sheet_segments_[sheet_begin_[f] .. sheet_begin_[f + 1]).
   std::vector<std::uint32_t> sheet_begin_, sheet_segments_;
+  std::vector<std::uint32_t> sheet_next_;  // the counting sort's scratch
   std::vector<std::int64_t> end_x_, end_y_, end_z_;  // quantised, in batch order (dense faces)
   EndPointCatalogue points_;
   EndPointTree tree_;

@@ -19,16 +19,24 @@ void NeededOnlyVisibility::submit(const SegmentBatch& batch) {
   needed_.start = batch.start;
   needed_.source_face = batch.source_face;
   needed_.shooter = batch.shooter;
-  needed_.ends.clear();
-  needed_.end_faces.clear();
-  origin_.clear();
-  for (std::size_t s = 0; s < batch.size(); ++s) {
-    if (!batch.needed[s]) continue;
-    needed_.ends.push_back(batch.ends[s]);
-    needed_.end_faces.push_back(batch.end_faces.at(s));
-    origin_.push_back(static_cast<std::uint32_t>(s));
+  batch.check();
+  // Every segment is written to the next free place, which moves on only past a needed one (no
+  // branch on the mask): room for all of them first, cut back to the needed ones after.
+  const std::size_t n = batch.size();
+  needed_.ends.resize(n);
+  needed_.end_faces.resize(n);
+  origin_.resize(n);
+  std::size_t kept = 0;
+  for (std::size_t s = 0; s < n; ++s) {
+    needed_.ends[kept] = batch.ends[s];
+    needed_.end_faces[kept] = batch.end_faces[s];
+    origin_[kept] = static_cast<std::uint32_t>(s);
+    kept += batch.needed[s] != 0;
   }
-  skipped_ += batch.size() - origin_.size();
+  needed_.ends.resize(kept);
+  needed_.end_faces.resize(kept);
+  origin_.resize(kept);
+  skipped_ += n - kept;
   answer_->submit(needed_);
 }
 

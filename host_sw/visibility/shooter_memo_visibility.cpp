@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "host_sw/visibility/packed_flags.h"
+
 namespace rc {
 
 void ShooterMemoVisibility::load_triangles(const std::vector<Triangle>& faces) {
@@ -41,15 +43,19 @@ void ShooterMemoVisibility::submit(const SegmentBatch& batch) {
 
 void ShooterMemoVisibility::collect(std::vector<std::uint8_t>& blocked) {
   if (reuse_ != nullptr) {
-    blocked.resize(reuse_->segments);
-    for (std::size_t i = 0; i < blocked.size(); ++i) blocked[i] = (reuse_->bits[i / 8] >> (i % 8)) & 1u;
+    const std::size_t n = reuse_->segments, whole = n / 8;
+    blocked.resize(n);
+    for (std::size_t k = 0; k < whole; ++k) unpack_flags8(reuse_->bits[k], &blocked[8 * k]);
+    for (std::size_t i = 8 * whole; i < n; ++i) blocked[i] = (reuse_->bits[i / 8] >> (i % 8)) & 1u;
     return;
   }
   answer_->collect(blocked);
   if (pending_shooter_ < 0) return;
   Answer& a = memo_[static_cast<std::size_t>(pending_shooter_)];
-  a.bits.assign((blocked.size() + 7) / 8 + 1, 0);  // one spare byte: never empty once remembered
-  for (std::size_t i = 0; i < blocked.size(); ++i) {
+  const std::size_t n = blocked.size(), whole = n / 8;
+  a.bits.assign((n + 7) / 8 + 1, 0);  // one spare byte: never empty once remembered
+  for (std::size_t k = 0; k < whole; ++k) a.bits[k] = pack_flags8(&blocked[8 * k]);
+  for (std::size_t i = 8 * whole; i < n; ++i) {
     if (blocked[i]) a.bits[i / 8] |= std::uint8_t(1u << (i % 8));
   }
   bytes_ += a.bits.size();

@@ -372,9 +372,8 @@ void BoardVisibility::start_pass(const Pass& pass) {
 
 void BoardVisibility::finish_pass(const Pass& pass) {
   cpu_.charge(DriverWork::Call, 1);
-  cpu_.sync();
-  const sc_time from = sc_core::sc_time_stamp();
-  ports_.irq.wait_raised();
+  const sc_time from = cpu_.now();
+  wait_for_interrupt();
   stats_.waiting += sc_core::sc_time_stamp() - from;
   host_event("wait for interrupt", from);
   if (tracing()) trace_->instant(track("irq"), "seen by host", sc_core::sc_time_stamp());

@@ -222,6 +222,7 @@ class BoardVisibility : public VisibilityBackend, public TimingReplayTarget {
   void host_event(const char* name, const sc_core::sc_time& from);
   bool tracing() const;
   std::string track(const char* name) const { return options_.trace_prefix + name; }
+  void wait_for_interrupt();  // returns synced, at the later of the host's time and the interrupt's
   void acquire_bus();  // with a BusTurn: sync, then wait for the turn
   void release_bus();
 

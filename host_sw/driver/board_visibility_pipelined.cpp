@@ -137,9 +137,8 @@ void BoardVisibility::send_chunk(std::size_t k) {
 void BoardVisibility::await_chunk(std::size_t k) {
   cpu_.charge(DriverWork::Call, 1);
   while (static_cast<std::uint32_t>(passes_done_ - chunk_base_) < k + 1) {
-    cpu_.sync();
-    const sc_time from = sc_core::sc_time_stamp();
-    ports_.irq.wait_raised();
+    const sc_time from = cpu_.now();
+    wait_for_interrupt();
     stats_.waiting += sc_core::sc_time_stamp() - from;
     host_event("wait for interrupt", from);
     const std::uint32_t status = read_register(reg::kStatus);

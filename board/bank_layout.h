@@ -139,23 +139,28 @@ RaySplit split_rays(const BankLayout& layout, std::uint64_t rays);
 // Block RAM bits a split's results take on chip: one entry per packet, as wide as its group's lanes.
 std::uint64_t result_store_bits(const BankLayout& layout, const RaySplit& split);
 
-// split_rays for one layout, remembered for the last ray count: a run's passes mostly share one,
-// and a split holds four vectors. The host (packing) and the wrapper (reading) each keep one.
+// split_rays for one layout, remembered for the last two ray counts: a run's passes mostly share one
+// (a pipelined step's chunks two: the full one and the last), and a split holds four vectors. The host
+// (packing) and the wrapper (reading) each keep one. A reference it returned stays valid through the
+// next call (that call replaces the other entry, if any).
 class RaySplitMemo {
  public:
   explicit RaySplitMemo(const BankLayout& layout) : m_layout(&layout) {}
   const RaySplit& operator()(std::uint64_t rays) {
-    if (rays != m_rays) {
-      m_split = split_rays(*m_layout, rays);
-      m_rays = rays;
+    if (rays == m_rays[m_last]) return m_split[m_last];
+    m_last ^= 1;
+    if (rays != m_rays[m_last]) {
+      m_split[m_last] = split_rays(*m_layout, rays);
+      m_rays[m_last] = rays;
     }
-    return m_split;
+    return m_split[m_last];
   }
 
  private:
   const BankLayout* m_layout;
-  std::uint64_t m_rays = ~std::uint64_t{0};
-  RaySplit m_split;
+  std::uint64_t m_rays[2] = {~std::uint64_t{0}, ~std::uint64_t{0}};
+  RaySplit m_split[2];
+  unsigned m_last = 0;
 };
 
 struct WordAddress {

@@ -27,9 +27,11 @@ void ControlRegs::acknowledge_now() {
 }
 
 std::uint32_t ControlRegs::take_start() {
-  const std::uint32_t bits = m_starts.front().bits;
-  m_pass = m_starts.front().regs;
-  m_starts.pop_front();
+  const StartCommand& oldest = m_starts[m_start_head];
+  const std::uint32_t bits = oldest.bits;
+  m_pass = oldest.regs;
+  m_start_head = (m_start_head + 1) % kStartQueue;
+  --m_start_count;
   return bits;
 }
 
@@ -54,12 +56,13 @@ void ControlRegs::write(std::uint64_t offset, std::uint32_t value, const sc_core
       return;  // read-only
     case reg::kControl:
       if (value & reg::kStart) {
-        if (m_starts.size() >= kStartQueue) {
+        if (m_start_count >= kStartQueue) {
           m_regs[reg::kStatus / 4] |= reg::kError;
           m_regs[reg::kErrorCode / 4] = reg::kStartWhileBusy;
           return;
         }
-        m_starts.push_back({effective, value, m_regs});
+        m_starts[(m_start_head + m_start_count) % kStartQueue] = {effective, value, m_regs};
+        ++m_start_count;
         m_start_event.notify(effective - sc_core::sc_time_stamp());
       }
       return;

@@ -25,7 +25,6 @@
 #pragma once
 
 #include <array>
-#include <deque>
 #include <cstdint>
 #include <functional>
 
@@ -51,8 +50,8 @@ class ControlRegs : public sc_core::sc_module {
   // has begun, and each pass still reads its own (the pipelined driver, docs/board.md).
   static constexpr std::size_t kStartQueue = 2;
   const sc_core::sc_event& start_event() const { return m_start_event; }  // notified at each START's time
-  bool start_pending() const { return !m_starts.empty(); }
-  sc_core::sc_time start_time() const { return m_starts.front().time; }  // the oldest queued START's
+  bool start_pending() const { return m_start_count != 0; }
+  sc_core::sc_time start_time() const { return m_starts[m_start_head].time; }  // the oldest queued START's
   std::uint32_t take_start();  // dequeues the oldest START, returns its CONTROL bits
   std::uint32_t pass_value(std::uint64_t offset) const { return m_pass[offset / 4]; }  // the taken START's snapshot
   void set_busy(bool busy);
@@ -76,7 +75,9 @@ class ControlRegs : public sc_core::sc_module {
     std::uint32_t bits = 0;
     std::array<std::uint32_t, reg::kSize / 4> regs{};
   };
-  std::deque<StartCommand> m_starts;
+  // The queued STARTs, oldest at m_start_head: a ring of kStartQueue (a deque allocated every few passes).
+  std::array<StartCommand, kStartQueue> m_starts{};
+  std::size_t m_start_head = 0, m_start_count = 0;
   std::array<std::uint32_t, reg::kSize / 4> m_pass{};
   sc_core::sc_event m_start_event;
   std::function<void()> m_acknowledge;

@@ -48,7 +48,7 @@ void FastWrapper::run() {
     record.lane_rays = timed.lane_rays;
     sc_core::wait(record.end - sc_core::sc_time_stamp());  // the pass: one timed wait
     if (!m_timing_only) write_results(in);
-    report_traffic(timed.timing.banks);
+    report_activity(timed.activity);
     complete_pass(record);
   }
 }
@@ -67,6 +67,7 @@ const FastWrapper::TimedPass& FastWrapper::timed_pass(const PassInputs& in) {
   t.timing = pass_timing(m_layout, m_timing, in.split, in.faces, in.clear);
   t.lane_rays = lane_rays_per_face(m_layout, in.split);
   for (std::uint64_t& r : t.lane_rays) r *= in.faces;
+  t.activity = bank_activity(t.timing.banks);
   m_timed.push_back(std::move(t));
   return m_timed.back();
 }

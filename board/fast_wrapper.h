@@ -28,6 +28,7 @@ class FastWrapper : public WrapperBase {
     bool clear = false;
     PassTiming timing;
     std::vector<std::uint64_t> lane_rays;  // over all faces of the pass
+    std::vector<tlmx::DmiActivity> activity;  // timing.banks as the banks' sinks take it
   };
   static constexpr std::size_t kTimedPasses = 4;
 

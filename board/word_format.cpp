@@ -57,6 +57,15 @@ void blank_ray_images(const BankLayout& layout, const RaySplit& split, std::vect
   }
 }
 
+void size_ray_images(const BankLayout& layout, const RaySplit& split, std::vector<std::vector<std::uint8_t>>& images) {
+  const unsigned word_bytes = layout.word_bits / 8;
+  images.resize(layout.banks_available);  // a bank outside the groups keeps no words (pack_rays: empty)
+  for (std::size_t g = 0; g < layout.groups.size(); ++g) {
+    const RayGroup& group = layout.groups[g];
+    for (unsigned j = 0; j < group.k(); ++j) images[group.banks[j]].resize(group_bank_words(group, j, split.packets[g]) * word_bytes);
+  }
+}
+
 void unpack_results(const BankLayout& layout, const RaySplit& split, const std::uint8_t* result_words,
                     std::uint8_t* blocked) {
   const unsigned word_bytes = layout.word_bits / 8;

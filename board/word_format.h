@@ -113,6 +113,9 @@ void pack_rays(const BankLayout& layout, const RaySplit& split, const std::int64
 
 // The images pack_rays would make, all words zero: the sizes a timing replay moves.
 void blank_ray_images(const BankLayout& layout, const RaySplit& split, std::vector<std::vector<std::uint8_t>>& images);
+// The images' sizes only, their bytes unspecified: what a transfer that carries no data
+// (tlmx::NoDataExtension) moves. Clears nothing, so a buffer reused at another size costs no memset.
+void size_ray_images(const BankLayout& layout, const RaySplit& split, std::vector<std::vector<std::uint8_t>>& images);
 
 // Wrapper side: reads the coordinate words of a pass from the banks (load(bank, word) -> the word)
 // back into x, y, z in pass order.

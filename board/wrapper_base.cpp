@@ -151,16 +151,24 @@ void WrapperBase::complete_pass(const PassRecord& record) {
   if (m_on_pass) m_on_pass(record);
 }
 
-void WrapperBase::report_traffic(const std::vector<BankTraffic>& traffic) {
-  for (std::size_t b = 0; b < traffic.size() && b < m_sinks.size(); ++b) {
+std::vector<tlmx::DmiActivity> WrapperBase::bank_activity(const std::vector<BankTraffic>& traffic) const {
+  std::vector<tlmx::DmiActivity> activity(traffic.size());
+  for (std::size_t b = 0; b < traffic.size(); ++b) {
     const BankTraffic& t = traffic[b];
-    if (t.reads == 0 && t.writes == 0) continue;
-    tlmx::DmiActivity a;
+    tlmx::DmiActivity& a = activity[b];
     a.reads = t.reads;
     a.writes = t.writes;
     a.bytes_read = t.reads * m_word_bytes;
     a.bytes_written = t.writes * m_word_bytes;
     a.busy = sc_core::sc_time::from_value(m_timing.bank_period.value() * t.busy_bank_cycles);
+  }
+  return activity;
+}
+
+void WrapperBase::report_activity(const std::vector<tlmx::DmiActivity>& activity) {
+  for (std::size_t b = 0; b < activity.size() && b < m_sinks.size(); ++b) {
+    const tlmx::DmiActivity& a = activity[b];
+    if (a.reads == 0 && a.writes == 0) continue;
     m_sinks[b]->record_dmi_access(a);
   }
 }

@@ -12,9 +12,11 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
 #include <deque>
 #include <functional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <systemc>
@@ -72,14 +74,28 @@ struct OwnSurfaceRange {
 // entry that starts a sheet. The same sum in any order (integers), so it vectorises; read_inputs
 // checks it against the pass's rays for every pass of every system (test
 // OwnSurfaceTable.EndIsWhereTheWalkEnds).
+// The entries after the first: their counts where they start a sheet. One loop per word size, with
+// no branch on the word size or the face inside it, so the compiler vectorises it (every pass of
+// every system runs it over the whole set).
+template <unsigned WordBytes>
+inline std::uint64_t sheet_starts_sum(const std::uint8_t* entries, std::uint64_t count) {
+  std::uint64_t sum = 0;
+  for (std::uint64_t f = 1; f < count; ++f) {
+    std::conditional_t<WordBytes == 4, std::uint32_t, std::uint64_t> word;
+    std::memcpy(&word, entries + f * WordBytes, WordBytes);
+    const auto entry = static_cast<std::uint32_t>(word);
+    sum += (entry & reg::kSameSheet) == 0 ? entry : 0u;  // a sheet's start: the count is the entry
+  }
+  return sum;
+}
+
 inline std::uint64_t own_surface_end(const std::uint8_t* entries, std::uint64_t count, unsigned word_bytes,
                                      std::uint64_t mask_start) {
-  std::uint64_t next = mask_start;
-  for (std::uint64_t f = 0; f < count; ++f) {
-    const auto entry = static_cast<std::uint32_t>(load_word(entries, f, word_bytes));
-    next += (f == 0 || (entry & reg::kSameSheet) == 0) ? (entry & reg::kSheetRays) : 0u;
-  }
-  return next;
+  if (count == 0) return mask_start;
+  const auto first = static_cast<std::uint32_t>(load_word(entries, 0, word_bytes));
+  const std::uint64_t rest =
+      word_bytes == 4 ? sheet_starts_sum<4>(entries, count) : sheet_starts_sum<8>(entries, count);
+  return mask_start + (first & reg::kSheetRays) + rest;
 }
 
 // One finished pass, for reports and traces.
@@ -123,6 +139,9 @@ class WrapperBase : public sc_core::sc_module {
   const WrapperTiming& timing() const { return m_timing; }
   const WrapperStats& stats() const { return m_stats; }
   void on_pass(std::function<void(const PassRecord&)> callback) { m_on_pass = std::move(callback); }
+  // The signals written from now on ({}: none). Each change is an update and a delta cycle that only
+  // a VCD trace of them sees; a system nobody traces (a timing study's) drops them before sc_start.
+  void set_signals(WrapperSignals signals) { m_signals = signals; }
 
   // The lanes' answer for the next pass, one flag per ray in bank order, computed elsewhere by a
   // model proven bit-identical to them (a recording, or a culled kernel). The pass then copies it
@@ -204,7 +223,11 @@ class WrapperBase : public sc_core::sc_module {
   }
   void begin_pass();
   void complete_pass(const PassRecord& record);
-  void report_traffic(const std::vector<BankTraffic>& traffic);
+  // A pass's bank traffic as each bank's sink takes it (DmiActivity), and the reporting of it: a
+  // model that repeats a pass shape keeps the activity with the shape instead of converting each pass.
+  std::vector<tlmx::DmiActivity> bank_activity(const std::vector<BankTraffic>& traffic) const;
+  void report_activity(const std::vector<tlmx::DmiActivity>& activity);
+  void report_traffic(const std::vector<BankTraffic>& traffic) { report_activity(bank_activity(traffic)); }
 
   BankLayout m_layout;
   WrapperTiming m_timing;

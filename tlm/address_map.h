@@ -65,6 +65,9 @@ class AddressMap {
 
  private:
   std::vector<AddressWindow> m_windows;
+  // The window of the last decode, tried first. A cache only (any start finds the same window); an
+  // AddressMap belongs to one interconnect of one simulation, never shared between threads.
+  mutable std::size_t m_last = 0;
 };
 
 }  // namespace rc::tlmx

@@ -43,6 +43,21 @@ void IrqLine::wait_raised() {
   while (!m_host_level) sc_core::wait(m_host_raised);
 }
 
+void IrqLine::wait_raised_ahead(const sc_core::sc_time& ahead) {
+  if (ahead == sc_core::SC_ZERO_TIME || m_host_level || m_device_level) {  // a synced host's way
+    sc_core::wait(ahead);  // zero: one delta cycle, as a quantum keeper's sync takes
+    return wait_raised();
+  }
+  const sc_core::sc_time at = sc_core::sc_time_stamp() + ahead;
+  while (!m_host_level) sc_core::wait(m_host_raised);  // nothing is on its way: no rise before the device's
+  if (sc_core::sc_time_stamp() > at) {  // low all the way to the host's time: a synced host blocked there
+    ++m_report.host_waits;
+    return;
+  }
+  if (sc_core::sc_time_stamp() < at) sc_core::wait(at - sc_core::sc_time_stamp());
+  wait_raised();  // at the host's time, as a synced host looks (the device may have lowered it meanwhile)
+}
+
 std::string IrqLine::summary() const {
   std::ostringstream out;
   out << name() << ": raises " << m_report.raises << ", lowers " << m_report.lowers << ", delivered "

@@ -9,6 +9,13 @@
 //                  and then waits again never wakes on the interrupt it has just handled.
 //   wait_raised()  host side, from an SC_THREAD: returns at once if the host sees the line high,
 //                  otherwise blocks until it does, i.e. exactly `latency` after the raise.
+//   wait_raised_ahead(ahead)  host side, for a thread running `ahead` of simulated time (temporally
+//                  decoupled): returns when wait(ahead) followed by wait_raised() would, and counts a
+//                  host wait when that wait_raised() would block. When the line is low with no raise on
+//                  its way, it waits for the rise first (then, if the rise came before the host's time,
+//                  for that time, and looks again), so a rise after the host's time costs the thread one
+//                  wake instead of two. A rise exactly at the host's time counts no wait (the synced
+//                  host's count there depends on the order of processes within that time step).
 #pragma once
 
 #include <cstdint>
@@ -43,6 +50,7 @@ class IrqLine : public sc_core::sc_module {
   bool raised() const { return m_host_level; }    // the level the host sees now
 
   void wait_raised();
+  void wait_raised_ahead(const sc_core::sc_time& ahead);
   const sc_core::sc_event& raised_event() const { return m_host_raised; }  // host-visible rising edge
 
   IrqLineReport report() const { return m_report; }

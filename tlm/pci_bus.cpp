@@ -49,9 +49,11 @@ sc_core::sc_time PciBus::programmed_io_time(std::uint64_t bytes, unsigned access
                                             const sc_core::sc_time& read_round_trip) const {
   if (access_bytes == 0) SC_REPORT_ERROR(kMsgType, "programmed I/O needs access_bytes > 0");
   const std::uint64_t accesses = ceil_div(bytes, access_bytes);
-  const sc_core::sc_time one = cycles(burst_cycles(access_bytes), m_config.clock_period) +
-                               (read ? read_round_trip : sc_core::SC_ZERO_TIME);
-  return sc_core::sc_time::from_value(one.value() * accesses);
+  // In time units: one access is its burst's cycles plus a read's round trip (what cycles() and
+  // sc_time's + compute, one conversion instead of three on every programmed I/O transaction).
+  const sc_core::sc_time::value_type one =
+      m_config.clock_period.value() * burst_cycles(access_bytes) + (read ? read_round_trip.value() : 0);
+  return sc_core::sc_time::from_value(one * accesses);
 }
 
 // The target sees the window-relative address and, as its delay, the offset at which the
@@ -170,10 +172,16 @@ tlm::tlm_sync_enum PciBus::nb_transport_fw(int port, tlm::tlm_generic_payload& t
   return tlm::TLM_COMPLETED;
 }
 
+// With no AT request queued, a turn on the bus concerns this thread not at all: it then waits for a
+// request alone, so the loosely-timed traffic (every b_transport ends a turn) does not wake it.
 void PciBus::carry_requests_thread() {
   for (;;) {
     carry_queued_requests();  // first: requests may arrive before this thread first runs
-    sc_core::wait(m_request_arrived | m_arbiter->m_turn_changed);
+    if (m_requests.empty()) {
+      sc_core::wait(m_request_arrived);
+    } else {
+      sc_core::wait(m_request_arrived | m_arbiter->m_turn_changed);
+    }
   }
 }
 

@@ -12,7 +12,9 @@ constexpr const char* kMsgType = "rc/tlmx/Router";
 }
 
 Router::Router(const sc_core::sc_module_name& name, const RouterConfig& config)
-    : sc_core::sc_module(name), in("in"), out("out"), m_config(config), m_peq("held", this, &Router::deliver) {
+    : sc_core::sc_module(name), in("in"), out("out"), m_config(config),
+      m_latency(cycles(config.latency_cycles, config.clock_period)),
+      m_peq("held", this, &Router::deliver) {
   in.register_b_transport(this, &Router::b_transport);
   in.register_nb_transport_fw(this, &Router::nb_transport_fw);
   in.register_transport_dbg(this, &Router::transport_dbg);
@@ -40,7 +42,7 @@ void Router::b_transport(int, tlm::tlm_generic_payload& trans, sc_core::sc_time&
   const std::optional<Decoded> hit = m_map.decode(address, bytes_touched(trans));
   if (!hit) return unmapped(trans);
   ++m_report.transactions;
-  delay += cycles(m_config.latency_cycles, m_config.clock_period);
+  delay += m_latency;
   trans.set_address(hit->offset);
   out[static_cast<int>(hit->window->port)]->b_transport(trans, delay);
   trans.set_address(address);  // the initiator gets its own view back
@@ -98,7 +100,7 @@ tlm::tlm_sync_enum Router::begin_request(int port, tlm::tlm_generic_payload& tra
     return tlm::TLM_COMPLETED;  // no time, as for b_transport
   }
   ++m_report.transactions;
-  delay += cycles(m_config.latency_cycles, m_config.clock_period);
+  delay += m_latency;
   if (trans.has_mm()) trans.acquire();
   const Flight f{port, static_cast<int>(hit->window->port), address, hit->offset, now() + delay};
   m_flights[&trans] = f;

@@ -138,6 +138,7 @@ class Router : public sc_core::sc_module {
   void unmapped(tlm::tlm_generic_payload& trans);
 
   RouterConfig m_config;
+  sc_core::sc_time m_latency;  // latency_cycles * clock_period, added to every decoded transaction
   AddressMap m_map;
   RouterReport m_report;
   std::unordered_map<const tlm::tlm_generic_payload*, Flight> m_flights;  // AT transactions at the router

@@ -179,6 +179,7 @@ class BoardVisibility : public VisibilityBackend, public TimingReplayTarget {
   // The own-surface table of rays [first, first + rays) against face set `set`, at `table_base` words
   // after its usual place (TABLE_BASE).
   void upload_mask(std::size_t first, std::size_t rays, std::size_t set, std::uint64_t table_base = 0);
+  void fill_mask(std::size_t first, std::size_t rays, std::size_t set);  // mask_words_
   void read_results(std::size_t batch);
 
   // The pipelined driver (board_visibility_pipelined.cpp).
@@ -221,6 +222,7 @@ class BoardVisibility : public VisibilityBackend, public TimingReplayTarget {
   void host_event(const char* name, const sc_core::sc_time& from);
   bool tracing() const;
   std::string track(const char* name) const { return options_.trace_prefix + name; }
+  void wait_for_interrupt();  // returns synced, at the later of the host's time and the interrupt's
   void acquire_bus();  // with a BusTurn: sync, then wait for the turn
   void release_bus();
 
@@ -275,7 +277,16 @@ class BoardVisibility : public VisibilityBackend, public TimingReplayTarget {
   std::vector<std::vector<std::uint8_t>> images_;
   static constexpr std::size_t kNoBlankImages = ~std::size_t{0};
   std::size_t blank_images_rays_ = kNoBlankImages;  // images_ are blank ones for a batch of this size
-  std::vector<std::uint8_t> buffer_;
+  // One buffer per kind of transfer, so that none is cleared again to another's size each pass.
+  std::vector<std::uint8_t> face_words_, mask_words_, result_words_;
+  // The rays and face set of the table in mask_words_ when a timing replay made it (upload_mask).
+  struct MaskKey {
+    std::size_t first = 0, rays = ~std::size_t{0}, set = 0;
+    bool operator==(const MaskKey& o) const { return first == o.first && rays == o.rays && set == o.set; }
+  };
+  MaskKey mask_key_;
+  PassLimitTally* last_limit_ = nullptr;  // stats_.limits[last_limit_name_], the last pass's
+  std::string last_limit_name_;
 };
 
 }  // namespace rc

@@ -15,6 +15,14 @@ void BoardVisibility::host_event(const char* name, const sc_time& from) {
   if (tracing()) trace_->complete(track("host"), name, from, cpu_.now());
 }
 
+// As a synced host waits (sync, then the line), with the same times and counts, but a pass that
+// ends after the host's time wakes the host thread once, not twice (IrqLine::wait_raised_ahead).
+void BoardVisibility::wait_for_interrupt() {
+  const sc_time host_time = cpu_.now();
+  ports_.irq.wait_raised_ahead(cpu_.local());
+  cpu_.caught_up(host_time);
+}
+
 void BoardVisibility::acquire_bus() {
   if (options_.bus_turn == nullptr) return;
   cpu_.sync();

@@ -99,7 +99,7 @@ void BoardVisibility::send_chunk(std::size_t k) {
     board::pack_rays(layout_, split, x_.data() + first, y_.data() + first, z_.data() + first, images_);
     blank_images_rays_ = kNoBlankImages;
   } else if (blank_images_rays_ != rays) {
-    board::blank_ray_images(layout_, split, images_);
+    board::size_ray_images(layout_, split, images_);
     blank_images_rays_ = rays;
   }
   std::uint64_t bytes = 0;
@@ -137,9 +137,8 @@ void BoardVisibility::send_chunk(std::size_t k) {
 void BoardVisibility::await_chunk(std::size_t k) {
   cpu_.charge(DriverWork::Call, 1);
   while (static_cast<std::uint32_t>(passes_done_ - chunk_base_) < k + 1) {
-    cpu_.sync();
-    const sc_time from = sc_core::sc_time_stamp();
-    ports_.irq.wait_raised();
+    const sc_time from = cpu_.now();
+    wait_for_interrupt();
     stats_.waiting += sc_core::sc_time_stamp() - from;
     host_event("wait for interrupt", from);
     const std::uint32_t status = read_register(reg::kStatus);
@@ -159,15 +158,15 @@ void BoardVisibility::read_chunk(std::size_t k) {
   const std::size_t first = chunk_first(k), rays = chunk_size(k);
   const board::RaySplit& split = split_(rays);
   if (timing_only_) {
-    buffer_.resize(split.result_words * word_bytes_);  // moved without data: contents immaterial
+    result_words_.resize(split.result_words * word_bytes_);  // moved without data: contents immaterial
   } else {
-    buffer_.assign(split.result_words * word_bytes_, 0);
+    result_words_.assign(split.result_words * word_bytes_, 0);
   }
   const std::uint64_t window = (k % 2) * half_words();
-  transfer(tlmx::DmaDirection::to_host, buffer_.data(),
-           ports_.board.bank_address(layout_.result_bank) + window * word_bytes_, buffer_.size(), "results",
+  transfer(tlmx::DmaDirection::to_host, result_words_.data(),
+           ports_.board.bank_address(layout_.result_bank) + window * word_bytes_, result_words_.size(), "results",
            timing_only_);
-  if (!timing_only_) board::unpack_results(layout_, split, buffer_.data(), blocked_.data() + first);
+  if (!timing_only_) board::unpack_results(layout_, split, result_words_.data(), blocked_.data() + first);
   charge_results(rays, split.result_words);
 }
 

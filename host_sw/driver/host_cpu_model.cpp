@@ -157,10 +157,10 @@ void HostCpuModel::advance(const sc_core::sc_time& cost, Name&& name, bool compu
   if (cost == sc_core::SC_ZERO_TIME) return;
   const sc_core::sc_time from = now();
   keeper_.inc(cost);
-  const sc_core::sc_time to = now();
+  const sc_core::sc_time to = from + cost;  // now(), without asking the kernel for the time again
   if (compute) intervals_.emplace_back(from, to);
   if (trace_ != nullptr && trace_->wants(step())) trace_->complete(trace_track_, name(), from, to);
-  if (!free_running_ && keeper_.need_sync()) keeper_.sync();
+  if (!free_running_ && keeper_.need_sync_at(to)) keeper_.sync();
 }
 
 void HostCpuModel::charge(HostWork work, std::uint64_t count) {
@@ -202,6 +202,11 @@ void HostCpuModel::charge(DriverWork work, std::uint64_t count) {
 }
 
 void HostCpuModel::sync() { keeper_.sync(); }
+
+void HostCpuModel::caught_up(const sc_core::sc_time& host_time) {
+  if (sc_core::sc_time_stamp() < host_time) throw std::logic_error("the host thread has not reached its local time");
+  keeper_.reset_as_at(host_time);  // as sync() there would have: the same next sync point
+}
 
 void HostCpuModel::fork_second_cpu(bool form_factors) {
   if (forked_) throw std::logic_error("the second processor is already working");

@@ -106,6 +106,10 @@ class HostCpuModel : public HostCostSink {
   void charge(HostWork work, std::uint64_t count) override;
   void charge(DriverWork work, std::uint64_t count);
   void sync();                        // wait out the local time; from the host SC_THREAD only
+  // The thread has waited in simulated time up to or past `host_time`, its time when the wait began
+  // (tlmx::IrqLine::wait_raised_ahead): the local time is spent, and the quantum counts from
+  // `host_time`, exactly as after a sync() there. Throws if the thread has not got that far.
+  void caught_up(const sc_core::sc_time& host_time);
   // DriverModel::Overlap::DualCpu: from fork_second_cpu() until join_second_cpu(), form factors are
   // computed on the second processor, starting at the fork; the join moves this processor's time
   // to the later of the two. Outside a fork every charge is on this processor.
@@ -153,8 +157,21 @@ class HostCpuModel : public HostCostSink {
   template <class Name>
   void advance(const sc_core::sc_time& cost, Name&& name, bool compute);
 
+  // A quantum keeper whose reset can be dated: the state reset() at `when` would have left (the next
+  // sync point at the global quantum's first multiple after `when`, as tlm_global_quantum computes it).
+  class Keeper : public tlm_utils::tlm_quantumkeeper {
+   public:
+    void reset_as_at(const sc_core::sc_time& when) {
+      const sc_core::sc_time quantum = tlm::tlm_global_quantum::instance().get();
+      m_local_time = sc_core::SC_ZERO_TIME;
+      m_next_sync_point = quantum == sc_core::SC_ZERO_TIME ? when : when + (quantum - when % quantum);
+    }
+    // need_sync() for a host whose time (sc_time_stamp() + local time) is known to be `host_time`.
+    bool need_sync_at(const sc_core::sc_time& host_time) const { return host_time >= m_next_sync_point; }
+  };
+
   HostProfile profile_;
-  tlm_utils::tlm_quantumkeeper keeper_;
+  Keeper keeper_;
   std::array<std::uint64_t, kHostWorkKinds> counts_{};
   std::array<sc_core::sc_time, kHostWorkKinds> times_{};
   std::array<std::uint64_t, kDriverWorkKinds> driver_counts_{};

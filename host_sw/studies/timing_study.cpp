@@ -59,6 +59,8 @@ CaseSystem elaborate(const TimingCase& c, std::size_t index) {
     setup.stop_when_done = false;
     setup.replay = c.recording;
     s.board = std::make_unique<BoardSystem>(name.c_str(), *c.scene, c.solver, setup);
+    // Nothing traces a study's systems: the wrappers' VCD signals would only cost delta cycles.
+    for (unsigned card = 0; card < s.board->cards(); ++card) s.board->card(card).wrapper().set_signals({});
   }
   return s;
 }
@@ -67,8 +69,12 @@ CaseSystem elaborate(const TimingCase& c, std::size_t index) {
 
 namespace {
 
+// What run_here does with its systems once their outcomes are taken.
+enum class Teardown { destroy, leave_to_exit };
+
 // Elaborates `cases` (indices into all) side by side and runs them to their end in this process.
-std::vector<TimingOutcome> run_here(const std::vector<TimingCase>& all, const std::vector<std::size_t>& cases) {
+std::vector<TimingOutcome> run_here(const std::vector<TimingCase>& all, const std::vector<std::size_t>& cases,
+                                    Teardown teardown = Teardown::destroy) {
   static bool used = false;
   if (used) throw std::logic_error("run_timing_study may be called once per process (SystemC elaborates once)");
   used = true;
@@ -95,6 +101,10 @@ std::vector<TimingOutcome> run_here(const std::vector<TimingCase>& all, const st
     o.simulated_seconds = o.report.simulated_seconds;
     out.push_back(std::move(o));
   }
+  // A worker process _exits right after writing the outcomes: destroying its systems (every module,
+  // socket, bank page and event of up to kMaxSystemsPerProcess boards) would only hand the OS memory
+  // it reclaims at the exit anyway. They hold no file, pipe or other state that needs closing.
+  if (teardown == Teardown::leave_to_exit) static_cast<void>(new std::vector<CaseSystem>(std::move(systems)));
   return out;
 }
 
@@ -124,7 +134,7 @@ std::vector<std::vector<std::size_t>> deal(const std::vector<TimingCase>& cases,
 [[noreturn]] void run_child(const std::vector<TimingCase>& cases, const std::vector<std::size_t>& shard, int fd) {
   WorkerAnswer answer;
   try {
-    answer.outcomes = run_here(cases, shard);
+    answer.outcomes = run_here(cases, shard, Teardown::leave_to_exit);
   } catch (const std::exception& e) {
     answer.error = e.what();
   }

@@ -136,12 +136,13 @@ template <class Point>
     if (node.active == 0 || asking == 0) continue;
     // Lane j: bit k set if region k may hit child j (query()'s test, including its own-face
     // skip), gathered lane by lane.
-    using Lanes = pipeline::HitRegion::IntLanes;
-    Lanes which_regions{};
+    pipeline::HitRegion::BoxLanes boxes;  // read once for every region
+    pipeline::HitRegion::load_boxes(node.bound, boxes);
+    pipeline::HitRegion::IntLanes which_regions{};
     for (unsigned m = asking; m; m &= m - 1) {
       const int k = __builtin_ctz(m);
       if (node.face == faces[k]) continue;
-      regions[k]->add_box_lanes(node.bound, 1 << k, which_regions);
+      regions[k]->add_box_lanes(boxes, 1 << k, which_regions);
     }
     std::int32_t lane[kWidth];
     std::memcpy(lane, &which_regions, sizeof lane);

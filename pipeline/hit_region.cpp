@@ -223,22 +223,7 @@ float round_down(double x) {
 HitRegion::HitRegion(const FaceRecord& face, const FixedVec3& start, FracBits bits)
     : HitRegion(face, face_error_terms(face, bits), start, bits) {}
 
-// Compiled for AVX-512 and AVX2 as well as the baseline, the best the CPU runs picked when the
-// program loads (a fifth less time per region: wider integer multiplications, BMI shifts). The
-// file is compiled without floating-point contraction (pipeline/CMakeLists.txt), so the variants
-// round every double and float operation alike and every field comes out the same.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define RC_REGION_TARGETS __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#else
-#define RC_REGION_TARGETS
-#endif
-
 HitRegion::HitRegion(const FaceRecord& face, const FaceErrorTerms& terms, const FixedVec3& start, FracBits bits) {
-  set(face, terms, start, bits);
-}
-
-RC_REGION_TARGETS void HitRegion::set(const FaceRecord& face, const FaceErrorTerms& terms, const FixedVec3& start,
-                                      FracBits bits) {
   const ConditionInputs in = condition_inputs(face, terms, start, bits);
   empty_ = in.empty;
   if (in.empty) {  // nothing passes: zero planes with infinite thresholds

@@ -147,10 +147,6 @@ class HitRegion {
     }
   }
 
-  // The constructor's work, in a function of its own: a constructor cannot be compiled for
-  // several instruction sets (target_clones).
-  void set(const FaceRecord& face, const FaceErrorTerms& terms, const FixedVec3& start, FracBits bits);
-
   // Every member is set by the constructor, once (no default initialisers: zeroing them first
   // and then writing them again cost a fifth of a region's construction).
   bool empty_;

@@ -34,10 +34,8 @@ class EndPointTree {
   template <class Point>
   void query(const pipeline::HitRegion& region, int face, Point&& point) const;
 
-  // Regions one query_packet() takes at most (bit k of a lane names region k): as many as a lane
-  // holds, so that a node's loading and bookkeeping are shared among more regions (bench_visibility
-  // at 15 and 31 bits: 2-3% less CPU than 16).
-  static constexpr int kPacket = 31;
+  // Regions one query_packet() takes at most (bit k of a lane names region k).
+  static constexpr int kPacket = 16;
 
   // query() for up to kPacket regions at once (region k asking about faces[k], for every k set in
   // `members`), walking the tree once: a node is loaded once for every region still interested

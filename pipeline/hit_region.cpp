@@ -231,7 +231,7 @@ HitRegion::HitRegion(const FaceRecord& face, const FaceErrorTerms& terms, const 
       ax_[k] = ay_[k] = az_[k] = 0;
       threshold_[k] = std::numeric_limits<double>::infinity();
       threshold_float_[k] = std::numeric_limits<float>::infinity();
-      for (int i = 0; i < 3; ++i) a_float_[k][i] = 0, offset_[k][i] = 0;
+      for (int i = 0; i < 3; ++i) upper_float_[k][i] = lower_float_[k][i] = 0;
     }
     return;
   }
@@ -271,9 +271,9 @@ HitRegion::HitRegion(const FaceRecord& face, const FaceErrorTerms& terms, const 
     threshold_float_[k] = round_down(reference - 0x1p-20 * scale);
     for (int i = 0; i < 3; ++i) {
       const float coefficient = static_cast<float>(a[k][i]);
-      a_float_[k][i] = coefficient;
-      const int upper = coefficient >= 0 ? 1 : 0;  // bound[upper][i] maximises this term
-      offset_[k][i] = (upper * 3 + i) * kBoxes;
+      const bool upper = coefficient >= 0;  // the box's upper bound on axis i maximises this term
+      upper_float_[k][i] = select<float>(upper, coefficient, 0.0f);
+      lower_float_[k][i] = select<float>(upper, 0.0f, coefficient);
     }
   }
 }

@@ -85,19 +85,33 @@ class HitRegion {
   // One 32-bit lane per box (GCC/Clang vector extensions: one AVX register, two SSE registers,
   // or NEON, whichever the caller is compiled for).
   using IntLanes = std::int32_t __attribute__((vector_size(4 * kBoxes)));
+  using FloatLanes = float __attribute__((vector_size(4 * kBoxes)));  // one float lane per box
+
+  // kBoxes boxes' bounds loaded into lanes once (lo[i], hi[i]: axis i's lower and upper bounds),
+  // for a caller that tests the same boxes against several regions.
+  struct BoxLanes {
+    FloatLanes lo[3], hi[3];
+  };
+  [[gnu::always_inline]] static void load_boxes(const float bound[2][3][kBoxes], BoxLanes& boxes) {
+    for (int i = 0; i < 3; ++i) {
+      std::memcpy(&boxes.lo[i], bound[0][i], sizeof boxes.lo[i]);
+      std::memcpy(&boxes.hi[i], bound[1][i], sizeof boxes.hi[i]);
+    }
+  }
 
   // The same test with the answer as lanes, for callers that combine several regions' answers
   // lane by lane: ORs `flag` into lane j of `lanes` where may_hit_boxes would set bit j.
-  [[gnu::always_inline]] void add_box_lanes(const float bound[2][3][kBoxes], std::int32_t flag,
-                                            IntLanes& lanes) const {
+  [[gnu::always_inline]] void add_box_lanes(const BoxLanes& boxes, std::int32_t flag, IntLanes& lanes) const {
     IntLanes inside;
-    box_lanes(bound, inside);
+    box_lanes(boxes, inside);
     lanes |= inside & flag;
   }
 
   [[gnu::always_inline]] unsigned may_hit_boxes(const float bound[2][3][kBoxes]) const {
+    BoxLanes boxes;
+    load_boxes(bound, boxes);
     IntLanes inside;
-    box_lanes(bound, inside);
+    box_lanes(boxes, inside);
     return lane_mask(inside);
   }
 
@@ -114,19 +128,22 @@ class HitRegion {
   }
 
  private:
-  using FloatLanes = float __attribute__((vector_size(4 * kBoxes)));  // one float lane per box
-
   // Lane j of `inside` all ones, unless no hit can end in box j (then zero). An output
   // parameter, not a return value: a vector return would change the ABI between the clones.
-  [[gnu::always_inline]] void box_lanes(const float bound[2][3][kBoxes], IntLanes& inside) const {
-    const float* base = &bound[0][0][0];
+  // Each term is the box corner maximising it: the coefficient times the upper bound plus the
+  // coefficient times the lower one, where one of the two coefficients is zero. The zero product
+  // adds nothing (exactly), and the bounds stay where they are, the same for every region (no
+  // corner picked per region and plane).
+  [[gnu::always_inline]] void box_lanes(const BoxLanes& b, IntLanes& inside) const {
     inside = IntLanes{} - 1;
     for (int k = 0; k < 4; ++k) {
-      FloatLanes x, y, z;  // the maximising corner's coordinates of every box
-      std::memcpy(&x, base + offset_[k][0], sizeof x);
-      std::memcpy(&y, base + offset_[k][1], sizeof y);
-      std::memcpy(&z, base + offset_[k][2], sizeof z);
-      inside &= a_float_[k][0] * x + a_float_[k][1] * y + a_float_[k][2] * z >= threshold_float_[k];
+      FloatLanes v = upper_float_[k][0] * b.hi[0];
+      v = lower_float_[k][0] * b.lo[0] + v;
+      v = upper_float_[k][1] * b.hi[1] + v;
+      v = lower_float_[k][1] * b.lo[1] + v;
+      v = upper_float_[k][2] * b.hi[2] + v;
+      v = lower_float_[k][2] * b.lo[2] + v;
+      inside &= v >= threshold_float_[k];
     }
   }
 
@@ -135,10 +152,9 @@ class HitRegion {
   bool empty_;
   // Plane k: ax_[k] * x + ay_[k] * y + az_[k] * z >= threshold_[k] for every possible hit.
   double ax_[4], ay_[4], az_[4], threshold_[4];
-  // The same in float. offset_[k][i] is where, in a bound array, axis i of the box corner
-  // (lower or upper) with the largest plane-k value starts.
-  float a_float_[4][3], threshold_float_[4];
-  int offset_[4][3];
+  // The same in float, each coefficient where it maximises its term: upper_float_[k][i] if
+  // it is positive (it multiplies a box's upper bound), else lower_float_[k][i]; the other is 0.
+  float upper_float_[4][3], lower_float_[4][3], threshold_float_[4];
 };
 
 }  // namespace rc::pipeline

@@ -38,6 +38,8 @@ class EndPointCatalogue {
   // until kNone. Points not in the current batch have none.
   std::uint32_t first_segment(std::uint32_t id) const { return first_segment_[id]; }
   std::uint32_t next_segment(std::uint32_t segment) const { return next_segment_[segment]; }
+  // The current batch's segments.
+  std::uint32_t segments() const { return static_cast<std::uint32_t>(point_of_.size()); }
   // The point segment `segment` of the current batch ends at.
   std::uint32_t point_of(std::uint32_t segment) const { return point_of_[segment]; }
 

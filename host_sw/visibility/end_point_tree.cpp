@@ -49,37 +49,62 @@ void EndPointTree::build(const EndPointCatalogue& points) {
   const std::size_t n = points.size();
   if (n >= kPoint) throw std::length_error("too many end points for the end-point tree");
   nodes_.clear();
+  points_ = n;
   if (n == 0) return;
   order_.resize(n);
   for (std::uint32_t i = 0; i < n; ++i) order_[i] = i;
   nodes_.reserve(n);
   nodes_.emplace_back();
   build_node(points, 0, static_cast<std::uint32_t>(n), 0, 0);
+  // Where mark_batch finds each child's face: points first, then nodes, then one slot that stays
+  // kNoFace for the children a node does not have.
+  points_ = n;
+  const auto none = static_cast<std::uint32_t>(n + nodes_.size());
+  slots_.resize(nodes_.size());
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    for (int j = 0; j < kWidth; ++j) {
+      const std::uint32_t c = nodes_[i].child[j];
+      slots_[i][j] = !(nodes_[i].used >> j & 1) ? none : (c & kPoint) ? (c & ~kPoint) : static_cast<std::uint32_t>(n + c);
+    }
+  }
+  slot_face_.assign(none + 1, kNoFace);
 }
 
-// Children come after their parent in nodes_, so one backward pass sees every child first.
-void EndPointTree::mark_batch(const EndPointCatalogue& points, const int* end_faces) {
-  const auto merge = [](int a, int b) { return a == kNoFace ? b : (a == b ? a : kMixedFaces); };
+// mark_batch is compiled for AVX-512 and AVX2 as well as the baseline (integer code only: every
+// variant computes the same), the best the CPU runs picked when the program loads.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define RC_TREE_TARGETS __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#else
+#define RC_TREE_TARGETS
+#endif
+
+// Each point's face first, in one pass over the batch's segments; then one backward pass over the
+// nodes, which sees every child before its parent (children come after their parent in nodes_),
+// each node's eight children's faces read from slot_face_ side by side. Faces merge to themselves
+// when equal and to kMixedFaces otherwise, in any grouping, and kNoFace (no segment) changes
+// nothing: the minimum and maximum of the children with segments decide. A segment ending on no
+// face (a negative face) counts as kMixedFaces: no face ever skips it.
+RC_TREE_TARGETS void EndPointTree::mark_batch(const EndPointCatalogue& points, const int* end_faces) {
+  if (points.size() != points_) throw std::logic_error("end-point tree marked for a catalogue it was not built over");
+  if (nodes_.empty()) return;
+  std::fill(slot_face_.begin(), slot_face_.begin() + static_cast<std::ptrdiff_t>(points_), kNoFace);
+  for (std::uint32_t s = 0; s < points.segments(); ++s) {
+    int& face = slot_face_[points.point_of(s)];
+    const int end = std::max(end_faces[s], kMixedFaces);
+    face = face == kNoFace ? end : (face == end ? face : kMixedFaces);
+  }
+  using Lanes = pipeline::HitRegion::IntLanes;
   for (std::size_t i = nodes_.size(); i-- > 0;) {
+    Lanes face;
+    for (int j = 0; j < kWidth; ++j) face[j] = slot_face_[slots_[i][j]];
+    const Lanes asks = face != kNoFace;
+    const Lanes low = (face & asks) | (std::numeric_limits<std::int32_t>::max() & ~asks);
+    int lo = low[0], hi = face[0];  // kNoFace is below every face, so it never is the maximum
+    for (int j = 1; j < kWidth; ++j) lo = std::min(lo, static_cast<int>(low[j])), hi = std::max(hi, static_cast<int>(face[j]));
     Node& node = nodes_[i];
-    unsigned active = 0;
-    int face = kNoFace;
-    for (int j = 0; j < kWidth; ++j) {
-      if (!(node.used >> j & 1)) continue;
-      const std::uint32_t c = node.child[j];
-      if (c & kPoint) {
-        for (std::uint32_t s = points.first_segment(c & ~kPoint); s != EndPointCatalogue::kNone;
-             s = points.next_segment(s)) {
-          active |= 1u << j;
-          face = merge(face, end_faces[s]);
-        }
-      } else if (nodes_[c].active) {
-        active |= 1u << j;
-        face = merge(face, nodes_[c].face);
-      }
-    }
-    node.active = active;
-    node.face = face;
+    node.active = pipeline::HitRegion::lane_mask(asks);
+    node.face = node.active == 0 ? kNoFace : (lo == hi ? hi : kMixedFaces);
+    slot_face_[points_ + i] = node.face;
   }
 }
 

@@ -7,6 +7,7 @@
 // region proves cannot hold a hit, so it changes which tests run, never an answer.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <vector>
@@ -22,8 +23,8 @@ class EndPointTree {
   void build(const EndPointCatalogue& points);
 
   // Notes, per node, which children hold segments of the current batch and the one face all
-  // those segments end on, if there is one (end_faces: the batch's, by segment). O(nodes); call
-  // after every EndPointCatalogue::assign and build.
+  // those segments end on, if there is one (end_faces: the batch's, by segment; a negative one is
+  // no face). O(nodes + segments); call after every EndPointCatalogue::assign and build.
   void mark_batch(const EndPointCatalogue& points, const int* end_faces);
 
   // Calls point(id) for every catalogue point with segments in the current batch whose box the
@@ -75,6 +76,11 @@ class EndPointTree {
   std::uint32_t split(const EndPointCatalogue& points, std::uint32_t begin, std::uint32_t end);
 
   std::vector<std::uint32_t> order_;  // point ids, grouped by subtree during the build
+  std::size_t points_ = 0;           // the catalogue's size when built
+  // mark_batch's faces (as a node's face) of every point, then of every node, then kNoFace; and
+  // where each node finds its children's faces.
+  std::vector<int> slot_face_;
+  std::vector<std::array<std::uint32_t, kWidth>> slots_;
   std::vector<Node> nodes_;
 };
 
@@ -130,12 +136,13 @@ template <class Point>
     if (node.active == 0 || asking == 0) continue;
     // Lane j: bit k set if region k may hit child j (query()'s test, including its own-face
     // skip), gathered lane by lane.
-    using Lanes = pipeline::HitRegion::IntLanes;
-    Lanes which_regions{};
+    pipeline::HitRegion::BoxLanes boxes;  // read once for every region
+    pipeline::HitRegion::load_boxes(node.bound, boxes);
+    pipeline::HitRegion::IntLanes which_regions{};
     for (unsigned m = asking; m; m &= m - 1) {
       const int k = __builtin_ctz(m);
       if (node.face == faces[k]) continue;
-      regions[k]->add_box_lanes(node.bound, 1 << k, which_regions);
+      regions[k]->add_box_lanes(boxes, 1 << k, which_regions);
     }
     std::int32_t lane[kWidth];
     std::memcpy(lane, &which_regions, sizeof lane);

@@ -150,5 +150,56 @@ TEST(EndPointTree, PacketQueryVisitsWhatEachRegionAloneVisits) {
   EXPECT_GT(stopped, 20u);
 }
 
+// mark_batch against its definition, through query(): in batches where many segments share an
+// end point, with end faces drawn from a few (no face among them), and where some catalogue points
+// have no segment, query(region, f) visits every point inside the exact conditions that some
+// segment not ending on f asks about, and no point without segments in the batch.
+TEST(EndPointTree, MarksWhichSubtreesAskAboutWhichFace) {
+  test::Rng rng(9);
+  std::size_t checked = 0, skipped_own = 0;
+  for (int bits : {7, 15, 31}) {
+    test::Workload w = test::random_workload(40, 6, 1500, 0.5, 70 + bits);
+    EndPointCatalogue cat;
+    EndPointTree tree;
+    for (SegmentBatch& batch : w.batches) {
+      const std::size_t keep = batch.size() / (1 + static_cast<std::size_t>(rng.integer(0, 3)));
+      for (std::size_t s = 0; s < batch.size(); ++s) {  // shared end points, few end faces
+        if (s > 0 && rng.uniform() < 0.3) batch.ends[s] = batch.ends[static_cast<std::size_t>(rng.integer(0, s - 1))];
+        batch.end_faces[s] = static_cast<int>(rng.integer(-1, 3));
+      }
+      batch.ends.resize(keep);  // later batches leave catalogue points without segments
+      batch.end_faces.resize(keep);
+      if (cat.assign(batch, bits)) tree.build(cat);
+      tree.mark_batch(cat, batch.end_faces.data());
+      const pipeline::FixedVec3 start = pipeline::quantize_point(batch.start, bits);
+      for (int f = 0; f < static_cast<int>(w.faces.size()); ++f) {
+        const pipeline::FaceRecord face = pipeline::make_face_record(w.faces[f], bits);
+        const pipeline::HitRegion region(face, start, bits);
+        const pipeline::ExactHitConditions exact = pipeline::exact_hit_conditions(face, start, bits);
+        const int asked_face = f % 4;  // the end faces' ids
+        std::set<std::uint32_t> visited;
+        tree.query(region, asked_face, [&](std::uint32_t id) {
+          EXPECT_FALSE(segments_at(cat, id).empty()) << "point " << id << " has no segment";
+          visited.insert(id);
+          return true;
+        });
+        for (std::uint32_t id = 0; id < cat.size(); ++id) {
+          bool asks = false, has = false;
+          for (std::uint32_t s : segments_at(cat, id)) has = true, asks |= batch.end_faces[s] != asked_face;
+          if (!has || !exact.allows(cat.position(id) - start)) continue;
+          if (!asks) {
+            skipped_own += visited.count(id) == 0;
+            continue;
+          }
+          ++checked;
+          EXPECT_EQ(visited.count(id), 1u) << "point " << id << ", face " << asked_face << ", " << bits << " bits";
+        }
+      }
+    }
+  }
+  EXPECT_GT(checked, 2000u);
+  EXPECT_GT(skipped_own, 10u);  // subtrees all on the asked face were skipped
+}
+
 }  // namespace
 }  // namespace rc

@@ -47,14 +47,8 @@ void pack_rays(const BankLayout& layout, const RaySplit& split, const std::int64
 }
 
 void blank_ray_images(const BankLayout& layout, const RaySplit& split, std::vector<std::vector<std::uint8_t>>& images) {
-  const unsigned word_bytes = layout.word_bits / 8;
-  images.resize(layout.banks_available);
   for (auto& image : images) image.clear();
-  for (std::size_t g = 0; g < layout.groups.size(); ++g) {
-    const RayGroup& group = layout.groups[g];
-    for (unsigned j = 0; j < group.k(); ++j)
-      images[group.banks[j]].assign(group_bank_words(group, j, split.packets[g]) * word_bytes, 0);
-  }
+  size_ray_images(layout, split, images);  // grown from empty: every byte zero
 }
 
 void size_ray_images(const BankLayout& layout, const RaySplit& split, std::vector<std::vector<std::uint8_t>>& images) {

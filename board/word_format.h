@@ -111,7 +111,7 @@ pipeline::FaceRecord face_record_from_words(const std::uint64_t words[9], unsign
 void pack_rays(const BankLayout& layout, const RaySplit& split, const std::int64_t* x, const std::int64_t* y,
                const std::int64_t* z, std::vector<std::vector<std::uint8_t>>& images);
 
-// The images pack_rays would make, all words zero: the sizes a timing replay moves.
+// The images pack_rays would make, all words zero (pack_rays starts from them).
 void blank_ray_images(const BankLayout& layout, const RaySplit& split, std::vector<std::vector<std::uint8_t>>& images);
 // The images' sizes only, their bytes unspecified: what a transfer that carries no data
 // (tlmx::NoDataExtension) moves. Clears nothing, so a buffer reused at another size costs no memset.

@@ -69,11 +69,6 @@ struct OwnSurfaceRange {
   }
 };
 
-// Where OwnSurfaceRange's walk over `count` table entries (in place, `word_bytes` each, as
-// load_word reads them) leaves `next`: mask_start plus the ray counts of the first entry and of every
-// entry that starts a sheet. The same sum in any order (integers), so it vectorises; read_inputs
-// checks it against the pass's rays for every pass of every system (test
-// OwnSurfaceTable.EndIsWhereTheWalkEnds).
 // The entries after the first: their counts where they start a sheet. One loop per word size, with
 // no branch on the word size or the face inside it, so the compiler vectorises it (every pass of
 // every system runs it over the whole set).
@@ -89,6 +84,11 @@ inline std::uint64_t sheet_starts_sum(const std::uint8_t* entries, std::uint64_t
   return sum;
 }
 
+// Where OwnSurfaceRange's walk over `count` table entries (in place, `word_bytes` each, as
+// load_word reads them) leaves `next`: mask_start plus the ray counts of the first entry and of every
+// entry that starts a sheet. The same sum in any order (integers), so it vectorises; read_inputs
+// checks it against the pass's rays for every pass of every system (test
+// OwnSurfaceTable.EndIsWhereTheWalkEnds).
 inline std::uint64_t own_surface_end(const std::uint8_t* entries, std::uint64_t count, unsigned word_bytes,
                                      std::uint64_t mask_start) {
   if (count == 0) return mask_start;

@@ -58,7 +58,6 @@ void EndPointTree::build(const EndPointCatalogue& points) {
   build_node(points, 0, static_cast<std::uint32_t>(n), 0, 0);
   // Where mark_batch finds each child's face: points first, then nodes, then one slot that stays
   // kNoFace for the children a node does not have.
-  points_ = n;
   const auto none = static_cast<std::uint32_t>(n + nodes_.size());
   slots_.resize(nodes_.size());
   for (std::size_t i = 0; i < nodes_.size(); ++i) {

@@ -13,36 +13,59 @@ RC_PACKAGES=(build-essential cmake ninja-build pkg-config libsystemc-dev libglm-
 # sanitizer and libFuzzer run-times for the sanitizer build and the fuzzers (docs/reliability.md), and
 # numpy for the independent reference solver (tests/reference/radiosity_reference.py).
 RC_TEST_PACKAGES=(assimp-testmodels parallel slurm-wlm munge clang libclang-rt-14-dev python3-numpy
-                  python3-pandas python3-nbclient python3-nbformat python3-ipykernel)
+                  python3-pandas python3-nbclient python3-nbformat python3-ipykernel verilator yosys)
 
-# Installs RC_PACKAGES and any packages given as arguments that are missing.
+# Installs RC_PACKAGES and any packages given as arguments that are missing, saying which (on stderr).
 rc_install_missing() {
-  local missing=()
-  for p in "${RC_PACKAGES[@]}" "$@"; do
+  local missing=() wanted=("${RC_PACKAGES[@]}" "$@")
+  for p in "${wanted[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done
-  [ ${#missing[@]} -eq 0 ] && return 0
-  echo "installing: ${missing[*]}" >&2
+  if [ ${#missing[@]} -eq 0 ]; then
+    echo "== packages: all ${#wanted[@]} Debian packages present" >&2
+    return 0
+  fi
+  echo "== packages: installing ${#missing[@]} of ${#wanted[@]} from Debian's archive: ${missing[*]}" >&2
   local sudo=""
   [ "$(id -u)" -ne 0 ] && sudo="sudo"
   $sudo apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
 }
 
+# rc_build [TARGET...]: configures build/ the first time, then builds the targets named (default:
+# everything), saying how many steps are out of date before ninja counts them off ([k/n] lines).
+# scripts/run builds only rc2000sim and the libraries it links; scripts/test builds the rest.
 rc_build() {
   # CI (CI=true) builds with warnings as errors; a developer's build only shows them.
   local werror=OFF
   [ -n "${CI:-}" ] && werror=ON
   if [ ! -f "$RC_BUILD/build.ninja" ]; then
+    echo "== configure: cmake -S $RC_ROOT -B $RC_BUILD (Ninja, Release)" >&2
     cmake -S "$RC_ROOT" -B "$RC_BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRC_WERROR="$werror" >&2
   fi
-  cmake --build "$RC_BUILD" -j "$(nproc)" >&2
+  rc_announce_build "$RC_BUILD" "$@"
+  cmake --build "$RC_BUILD" -j "$(nproc)" ${1:+--target "$@"} >&2
+}
+
+# rc_announce_build DIR [TARGET...]: one line saying what is about to be built and how many steps
+# (ninja's dry run; a configure step that has to run again counts as one).
+rc_announce_build() {
+  local dir="$1"; shift
+  local what="${*:-every target}" steps
+  steps="$(ninja -C "$dir" -n "$@" 2>/dev/null | grep -c '^\[' || true)"
+  if [ "${steps:-0}" -eq 0 ]; then
+    echo "== build: $what in $dir is up to date" >&2
+  else
+    echo "== build: $what in $dir: $steps steps on $(nproc) cores" >&2
+  fi
 }
 
 # The sanitizer build (docs/reliability.md): clang, ASan + UBSan, libFuzzer's coverage and the fuzz
-# harnesses of fuzz/, at -O1 with debug information. NDEBUG as in the Release build: the pipeline's
-# per-operation range asserts would double the test run (nlohmann::json's stay, CMakeLists.txt).
-# One build serves the test suite and the fuzzers.
+# harnesses of fuzz/, at -O1 with line tables (-gline-tables-only: every report's frames keep file
+# and line, without the full debug information that made compiling and linking slower). NDEBUG as
+# in the Release build: the pipeline's per-operation range asserts would double the test run
+# (nlohmann::json's stay, CMakeLists.txt). No benchmarks: nothing runs them under the sanitizers
+# (the plain build compiles them, so they cannot rot). One build serves the tests and the fuzzers.
 RC_SANITIZE_BUILD="${RC_SANITIZE_BUILD:-$RC_ROOT/build-sanitize}"
 
 # Prints why the sanitizer build cannot be made here and succeeds, or fails (prints nothing) when it
@@ -68,8 +91,11 @@ rc_build_sanitize() {
   local werror=OFF
   [ -n "${CI:-}" ] && werror=ON
   if [ ! -f "$RC_SANITIZE_BUILD/build.ninja" ]; then
+    echo "== configure: cmake -S $RC_ROOT -B $RC_SANITIZE_BUILD (Ninja, clang, ASan + UBSan, libFuzzer)" >&2
     CC=clang CXX=clang++ cmake -S "$RC_ROOT" -B "$RC_SANITIZE_BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g -DNDEBUG" -DRC_SANITIZE=ON -DRC_FUZZ=ON -DRC_WERROR="$werror" >&2
+      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" -DRC_SANITIZE=ON -DRC_FUZZ=ON \
+      -DRC_BUILD_BENCH=OFF -DRC_WERROR="$werror" >&2
   fi
-  cmake --build "$RC_SANITIZE_BUILD" -j "$(nproc)" "$@" >&2
+  rc_announce_build "$RC_SANITIZE_BUILD" "$@"
+  cmake --build "$RC_SANITIZE_BUILD" -j "$(nproc)" ${1:+--target "$@"} >&2
 }

@@ -13,6 +13,7 @@
 #include "host_sw/profiles/paper_table.h"
 #include "host_sw/profiles/profile_document.h"
 #include "host_sw/studies/workload.h"
+#include "host_sw/radiosity/jobs.h"
 #include "host_sw/radiosity/radiosity.h"
 
 namespace rc {
@@ -113,7 +114,7 @@ std::vector<PaperScene> prepare_paper_scenes(const std::vector<PaperRow>& rows, 
         recorded.min_steps = p.row.steps;
         recorded.max_steps = p.recorded_steps;
         // The largest scene is the critical path: its backend may use every core, which the
-        // others leave idle once they are done (0 = every core).
+        // others leave idle once they are done (0 = jobs(): every core the process may use).
         p.functional = record_functional_run(p.scene, recorded, backend, bits, k == 0 ? 0 : 1);
         p.convergence_steps = p.functional.convergence_step;
       } catch (...) {
@@ -121,7 +122,7 @@ std::vector<PaperScene> prepare_paper_scenes(const std::vector<PaperRow>& rows, 
       }
     }
   };
-  const unsigned workers = std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), unsigned(rows.size())));
+  const unsigned workers = std::max(1u, std::min<unsigned>(jobs(), unsigned(rows.size())));
   std::vector<std::thread> threads;
   for (unsigned w = 1; w < workers; ++w) threads.emplace_back(worker);
   worker();

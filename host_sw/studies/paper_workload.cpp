@@ -77,8 +77,9 @@ SceneOptions paper_scene_options(int faces, int patches) {
   return o;
 }
 
-// The scenes are independent, so they are solved side by side, one per core, largest first (each
-// with a single-threaded backend): the cores stay busy through the solver's own serial work too.
+// The scenes are independent, so they are solved side by side, one per job (jobs(): --jobs, else
+// every usable core), largest first (each with a single-threaded backend): the cores stay busy
+// through the solver's own serial work too.
 // Every solve is deterministic, so the results do not depend on the schedule.
 std::vector<PaperScene> prepare_paper_scenes(const std::vector<PaperRow>& rows, const std::string& backend, int bits,
                                              const std::function<void(const std::string&)>& progress) {

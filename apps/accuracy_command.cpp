@@ -140,6 +140,7 @@ void add_accuracy_command(CLI::App& app, int& exit_code) {
       ->delimiter(';')->capture_default_str();
   cmd->add_option("--out", options->out_dir, "Output folder")->check(output_path())->capture_default_str();
   cmd->add_flag("--quiet", options->quiet, "No progress output");
+  add_jobs_option(*cmd, "the fast backend's threads");
   cmd->callback([options, solver, cmd, &exit_code] {
     options->solver = solver->resolved(*cmd);
     if (options->formats == std::vector<std::string>{"none"}) options->formats.clear();

@@ -160,6 +160,7 @@ void add_adaptive_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--docs", o->docs_dir, "Also write adaptive-patches.md and its pictures here (e.g. docs/results)")
       ->check(output_path());
   cmd->add_flag("--quiet", o->quiet, "No progress output");
+  add_jobs_option(*cmd, "the timing study's processes and the fast backend's threads");
   cmd->callback([o, cmd, &exit_code] {
     refuse_given(*cmd, {"--patch-levels", "--patch-size"},
                  "does not apply to adaptive, which sets patches by --levels and --start-levels");

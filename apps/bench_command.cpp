@@ -160,6 +160,7 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--docs", o->docs_dir, "Also write speed-vs-error.md and its plot here (e.g. docs/results)")
       ->check(output_path());
   cmd->add_flag("--quiet", o->quiet, "No progress output");
+  add_jobs_option(*cmd, "the timing study's processes and the fast backend's threads");
   cmd->callback([o, base_ff, cmd, &exit_code] {
     refuse_given(*cmd, {"--patch-levels", "--patch-size"},
                  "does not apply to bench, which sweeps patch levels (--base-patch-levels, --sweep-patch-levels)");

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "host_sw/radiosity/jobs.h"
 #include "io/config_dir.h"
 #include "io/input_file.h"
 #include "io/parse_number.h"
@@ -23,6 +24,32 @@ void add_configs_option(CLI::App& cmd) {
          std::string("Folder of config files (devices/, hosts/, pipeline_resources.json, paper-table2.json, ...); "
                      "default: $") + io::kConfigDirVariable + ", else the build's configs/, else the installed share/rc2000tlm/configs")
       ->type_name("DIR");
+}
+
+CLI::Option* add_jobs_option(CLI::App& cmd, const std::string& what) {
+  CLI::Option* opt = cmd.add_option_function<std::string>(
+                            "--jobs",
+                            [](const std::string& text) {
+                              try {
+                                const std::optional<std::int64_t> n = io::parse_integer(text);
+                                if (!n) (void)parse_jobs(text, "--jobs");  // refuses it: not a whole number
+                                set_jobs(*n, "--jobs");
+                              } catch (const std::invalid_argument& e) {
+                                throw CLI::ValidationError(e.what());
+                              }
+                            },
+                            "Worker processes and threads, 1.." + std::to_string(kMaxJobs) + " (default: $" + kJobsVariable +
+                                ", else the " + std::to_string(usable_cores()) + " cores this process may use): " + what)
+                         ->type_name("N");
+  cmd.parse_complete_callback([&cmd] {
+    if (given(cmd, "--jobs") || !cmd.get_subcommands().empty()) return;  // `sweep merge` runs no jobs
+    try {
+      (void)jobs();  // a bad RC2000SIM_JOBS is refused now, not after minutes of work
+    } catch (const std::invalid_argument& e) {
+      throw CLI::ValidationError(e.what());
+    }
+  });
+  return opt;
 }
 
 CLI::Validator output_path() {

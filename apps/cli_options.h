@@ -83,6 +83,12 @@ void check_float_formats(const std::string& option, const std::vector<std::strin
 // (io/config_dir.h; docs/outputs.md, "Config files"). Every command has it.
 void add_configs_option(CLI::App& cmd);
 
+// --jobs N: the worker processes and threads this command uses (host_sw/radiosity/jobs.h, one rule
+// for every command: default RC2000SIM_JOBS, else the cores this process may use; 1..kMaxJobs). Given,
+// it sets the process's count as it is parsed; not given, a bad RC2000SIM_JOBS is refused once the
+// command line is parsed, before any work. `what` ends the help: what the jobs run.
+CLI::Option* add_jobs_option(CLI::App& cmd, const std::string& what);
+
 // Each command registers itself and, when chosen, stores its exit code in `exit_code`.
 void add_run_command(CLI::App& app, int& exit_code);
 void add_accuracy_command(CLI::App& app, int& exit_code);

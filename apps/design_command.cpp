@@ -124,6 +124,7 @@ void add_design_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--exhaustive", o->exhaustive, "Simulate every feasible design (no pruning of spare banks)");
   cmd->add_option("--out", cli->out_dir, "Output folder")->check(output_path())->capture_default_str();
   cmd->add_flag("--quiet", cli->quiet, "No progress output");
+  add_jobs_option(*cmd, "the timing study's processes and the fast backend's threads");
   // The checks of --steps, --max-banks, --min-bits and the caps live in design_options.h (shared with
   // rc2000tlm.design()); check_and_resolve runs them on what was given.
   cmd->callback([cli, cmd, &exit_code] {

@@ -346,6 +346,7 @@ void add_paper_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--visibility", o->visibility, "Bit-exact backend that answers visibility once per scene: fixed or fast")
       ->check(CLI::IsMember(choice_names<BitExactVisibility>()))->capture_default_str();
   cmd->add_flag("--quiet", o->quiet, "No progress output");
+  add_jobs_option(*cmd, "the scenes solved side by side, the timing study's processes");
   cmd->callback([o, cmd, &exit_code] {
     // Defaults in the config folder chosen at run time (--configs, after these defaults were made).
     if (!given(*cmd, "--table")) o->table = default_paper_table_path();

@@ -307,6 +307,13 @@ void check_run_options(const CLI::App& cmd, const RunOptions& o) {
     refuse_given(cmd, {"--bits"}, "does not apply with --visibility float (double precision has no fractional width); "
                                   "--visibility fixed or fast, or --impl board, use it");
   }
+  // The fast backend is the only part of a run with threads of its own: the software run's with
+  // --visibility fast, the board's answer unless --lanes-compute or --arith float:E,M.
+  const bool fast = !float_arith(o) && (o.impl == Impl::board ? !o.lanes_compute : o.visibility == SoftwareVisibility::fast);
+  if (!fast) {
+    refuse_given(cmd, {"--jobs"}, "applies only where the fast backend runs (--impl software --visibility fast, or --impl "
+                                  "board without --lanes-compute or --arith float:E,M): this run has no threads of its own");
+  }
   if (o.trace_path.empty()) {
     refuse_given(cmd, {"--trace-steps"}, "applies only with --trace (the steps it records)");
   } else {
@@ -420,6 +427,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--image-size", options->render.width, "Image width and height in pixels")
       ->check(CLI::Range(16, 8192))->capture_default_str();
   cmd->add_flag("--quiet", options->quiet, "No progress output");
+  add_jobs_option(*cmd, "the fast backend's threads (--visibility fast, or the board's answers)");
   cmd->callback([options, solver, arith, paper_faithful, cmd, &exit_code] {
     options->solver = solver->resolved(*cmd);
     options->solver.cull_receivers = !*paper_faithful;

@@ -155,6 +155,7 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--full-banks", o->full_banks,
                 "Model the profile's bank capacity even when smaller banks change nothing (more memory)");
   cmd->add_flag("--quiet", o->quiet, "No progress output");
+  add_jobs_option(*cmd, "the timing study's processes and the fast backend's threads");
   cmd->add_flag("--list-fields", o->list_fields,
                 "List the profile fields a study can sweep or fix, with their values, for --devices and --host (or "
                 "the study's), and exit");
@@ -166,7 +167,7 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
     if (given(*cmd, "--study") && o->study_file.empty()) refuse_option("--study", "is empty: name a study file (docs/studies.md)");
     if (given(*cmd, "--shard") && o->shard.empty()) refuse_option("--shard", "is empty: expected I/N (shard I of N, counted from 0)");
     if (o->list_fields)
-      refuse_given(*cmd, {"--out", "--shard"}, "does not apply with --list-fields (it lists the fields and writes nothing)");
+      refuse_given(*cmd, {"--out", "--shard", "--jobs"}, "does not apply with --list-fields (it lists the fields and writes nothing)");
     auto run = [&](const Study& study) {
       if (o->list_fields) return run_list_fields(study);
       return run_guarded("sweep", o->out_dir + "/", [&] { return run_sweep(*o, study); });

@@ -6,8 +6,10 @@
 // exceptions, which pybind11 raises as ValueError (std::invalid_argument) or RuntimeError, with the
 // same message the command line prints.
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +21,7 @@
 #include "host_sw/platform/run_report.h"
 #include "host_sw/platform/run_report_json.h"
 #include "host_sw/driver/host_cpu_model.h"
+#include "host_sw/radiosity/jobs.h"
 #include "host_sw/studies/calibration_variants.h"
 #include "host_sw/studies/sweep_columns.h"
 #include "host_sw/studies/sweep_row_json.h"
@@ -34,12 +37,21 @@ namespace {
 
 using nlohmann::ordered_json;
 
+// jobs= of every call: the command line's --jobs (host_sw/radiosity/jobs.h), the same check and
+// message; None leaves the rule (RC2000SIM_JOBS, else the cores this process may use), whose
+// variable is checked here too, before any work.
+unsigned use_jobs(const std::optional<long long>& jobs) {
+  if (jobs) rc::set_jobs(*jobs, "--jobs");
+  return rc::jobs();
+}
+
 // One board run: the scene prepared from its options, the solver to convergence (or `steps` exactly
 // when > 0), the board as BoardRunOptions says; the report, the solver's figures and one record per
 // step (its convergence and the simulated time when it ended).
 std::string run_board(const std::string& scene_file, int patch_levels, int face_target, int steps,
                       const std::string& device, unsigned lanes, int bits, unsigned banks, bool concurrent,
-                      const std::string& host, unsigned cards) {
+                      const std::string& host, unsigned cards, const std::optional<long long>& jobs) {
+  use_jobs(jobs);  // the fast backend's threads (the board's answers)
   rc::SceneOptions scene_options;
   scene_options.file = scene_file;
   scene_options.patch_levels = patch_levels;
@@ -101,7 +113,8 @@ std::string study_rows(const rc::Study& study, bool progress) {
 // Table 2 as `rc2000sim paper` predicts it with its defaults (the paper's table, the calibrated host
 // and its variants, 15-bit bit-exact visibility): one record per scene and implementation, the
 // fields of paper.json's scene records.
-std::string paper_table(const std::string& host_name, bool progress) {
+std::string paper_table(const std::string& host_name, bool progress, const std::optional<long long>& jobs) {
+  use_jobs(jobs);
   const std::vector<rc::PaperRow> rows = rc::load_paper_table(rc::default_paper_table_path());
   const rc::HostProfile host = rc::find_host_profile(host_name);
   const std::vector<rc::CalibratedVariant> variants = rc::load_calibrated_variants(rc::default_variants_path());
@@ -137,18 +150,26 @@ PYBIND11_MODULE(_core, m) {
   m.doc() = "rc2000tlm's C++ core: one board run or one study per call, once per process";
   m.def("run_board", &run_board, py::arg("scene_file"), py::arg("patch_levels"), py::arg("face_target"),
         py::arg("steps"), py::arg("device"), py::arg("lanes"), py::arg("bits"), py::arg("banks"),
-        py::arg("concurrent"), py::arg("host"), py::arg("cards"),
+        py::arg("concurrent"), py::arg("host"), py::arg("cards"), py::arg("jobs") = py::none(),
         "One board run (host_sw/platform/board_run.h); the report as JSON text");
-  m.def("study_file", [](const std::string& path, bool progress) { return study_rows(rc::load_study_file(path), progress); },
-        py::arg("path"), py::arg("progress") = false, "A study file (TOML, docs/studies.md) run; its rows as JSON text");
-  m.def("study_text", [](const std::string& text, const std::string& name, bool progress) {
+  m.def("study_file", [](const std::string& path, bool progress, const std::optional<long long>& jobs) {
+          use_jobs(jobs);
+          return study_rows(rc::load_study_file(path), progress);
+        },
+        py::arg("path"), py::arg("progress") = false, py::arg("jobs") = py::none(),
+        "A study file (TOML, docs/studies.md) run; its rows as JSON text");
+  m.def("study_text", [](const std::string& text, const std::string& name, bool progress, const std::optional<long long>& jobs) {
+          use_jobs(jobs);
           return study_rows(rc::parse_study_text(text, name), progress);
         },
-        py::arg("text"), py::arg("name"), py::arg("progress") = false,
+        py::arg("text"), py::arg("name"), py::arg("progress") = false, py::arg("jobs") = py::none(),
         "A study given as TOML text (`name` labels it in errors); its rows as JSON text");
   m.def("paper_table", &paper_table, py::arg("host") = "athlon-mp-2600-calibrated", py::arg("progress") = false,
+        py::arg("jobs") = py::none(),
         "Table 2 as `rc2000sim paper` predicts it; one record per scene and implementation, as JSON text");
   m.def("design", &rc::design_search, py::arg("options"), py::arg("progress") = false,
         "`rc2000sim design` with the options given (JSON, snake_case names); design.json's document as JSON text");
   m.def("design_defaults", &rc::design_defaults, "The design search's defaults by option name, as JSON text");
+  m.def("jobs", [](const std::optional<long long>& jobs) { return std::to_string(use_jobs(jobs)); }, py::arg("jobs") = py::none(),
+        "The job count a call uses: jobs checked as --jobs is, or the rule's (RC2000SIM_JOBS, else the usable cores)");
 }

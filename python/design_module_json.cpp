@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "host_sw/profiles/profile_json.h"
+#include "host_sw/radiosity/jobs.h"
 #include "host_sw/studies/design_json.h"
 #include "host_sw/studies/design_options.h"
 #include "host_sw/studies/paper_workload.h"
@@ -144,6 +145,10 @@ const std::vector<Option>& options() {
        [](const DesignOptions& o) { return positive_or_null(o.constraints.max_watts); }},
       {"exhaustive", [](DesignOptions& o, const ordered_json& v) { o.exhaustive = yes_no("exhaustive", v); },
        [](const DesignOptions& o) { return ordered_json(o.exhaustive); }},
+      // The process's job count, not a search option (host_sw/radiosity/jobs.h: the command line's --jobs,
+      // its check and message); each call is a process of its own. Default: the rule's (null).
+      {"jobs", [](DesignOptions&, const ordered_json& v) { set_jobs(whole("jobs", v), "--jobs"); },
+       [](const DesignOptions&) { return ordered_json(); }},
   };
   return table;
 }
@@ -186,6 +191,7 @@ std::string design_defaults() {
 
 std::string design_search(const std::string& options_json, bool progress) {
   const DesignOptions o = given_options(ordered_json::parse(options_json));
+  (void)jobs();  // without jobs=, a bad RC2000SIM_JOBS is refused here, before any work
   const DesignSearchResult r = search_designs(o.workload, o.visibility, o.space, o.constraints, o.exhaustive, [&](const std::string& what) {
     if (progress) std::fprintf(stderr, "\r%-78s", what.c_str());
   });

@@ -1,13 +1,15 @@
 #include "host_sw/radiosity/worker_pool.h"
 
+#include "host_sw/radiosity/jobs.h"
+
 #include <algorithm>
 #include <stdexcept>
 
 namespace rc {
 
 WorkerPool::WorkerPool(int workers) {
-  if (workers < 0) throw std::invalid_argument("thread count must not be negative (0 = all cores)");
-  if (workers == 0) workers = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  if (workers < 0) throw std::invalid_argument("thread count must not be negative (0 = the process's jobs)");
+  if (workers == 0) workers = static_cast<int>(jobs());
   helpers_.reserve(static_cast<std::size_t>(workers - 1));
   for (int w = 1; w < workers; ++w) helpers_.emplace_back([this, w] { helper_loop(w); });
 }

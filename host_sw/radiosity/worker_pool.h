@@ -15,7 +15,8 @@ namespace rc {
 class WorkerPool {
  public:
   // `workers` counts the calling thread too: workers - 1 helper threads are started here.
-  // 0 means std::thread::hardware_concurrency(). Throws std::invalid_argument if negative.
+  // 0 means jobs() (host_sw/radiosity/jobs.h: --jobs, RC2000SIM_JOBS or the usable cores).
+  // Throws std::invalid_argument if negative.
   explicit WorkerPool(int workers);
   ~WorkerPool();
   WorkerPool(const WorkerPool&) = delete;

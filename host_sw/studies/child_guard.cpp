@@ -9,13 +9,15 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "host_sw/radiosity/jobs.h"
+
 namespace rc {
 
 namespace {
 
-// The handler may only touch lock-free atomics: a fixed table of slots, 0 when free. 64 is far more
-// than any command starts at once (a plot script and up to 8 study workers).
-constexpr int kSlots = 64;
+// The handler may only touch lock-free atomics: a fixed table of slots, 0 when free: room for what
+// any command starts at once (a plot script and up to kMaxJobs study workers, host_sw/radiosity/jobs.h).
+constexpr int kSlots = static_cast<int>(kMaxJobs) + 8;
 std::atomic<pid_t> g_children[kSlots];
 std::atomic<pid_t> g_owner{0};  // the process that installed the handlers
 static_assert(std::atomic<pid_t>::is_always_lock_free, "the signal handler needs lock-free pids");

@@ -13,6 +13,7 @@
 #include "host_sw/profiles/paper_table.h"
 #include "host_sw/profiles/profile_document.h"
 #include "host_sw/studies/workload.h"
+#include "host_sw/radiosity/jobs.h"
 #include "host_sw/radiosity/radiosity.h"
 
 namespace rc {
@@ -76,8 +77,9 @@ SceneOptions paper_scene_options(int faces, int patches) {
   return o;
 }
 
-// The scenes are independent, so they are solved side by side, one per core, largest first (each
-// with a single-threaded backend): the cores stay busy through the solver's own serial work too.
+// The scenes are independent, so they are solved side by side, one per job (jobs(): --jobs, else
+// every usable core), largest first (each with a single-threaded backend): the cores stay busy
+// through the solver's own serial work too.
 // Every solve is deterministic, so the results do not depend on the schedule.
 std::vector<PaperScene> prepare_paper_scenes(const std::vector<PaperRow>& rows, const std::string& backend, int bits,
                                              const std::function<void(const std::string&)>& progress) {
@@ -113,7 +115,7 @@ std::vector<PaperScene> prepare_paper_scenes(const std::vector<PaperRow>& rows, 
         recorded.min_steps = p.row.steps;
         recorded.max_steps = p.recorded_steps;
         // The largest scene is the critical path: its backend may use every core, which the
-        // others leave idle once they are done (0 = every core).
+        // others leave idle once they are done (0 = jobs(): every core the process may use).
         p.functional = record_functional_run(p.scene, recorded, backend, bits, k == 0 ? 0 : 1);
         p.convergence_steps = p.functional.convergence_step;
       } catch (...) {
@@ -121,7 +123,7 @@ std::vector<PaperScene> prepare_paper_scenes(const std::vector<PaperRow>& rows, 
       }
     }
   };
-  const unsigned workers = std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), unsigned(rows.size())));
+  const unsigned workers = std::max(1u, std::min<unsigned>(jobs(), unsigned(rows.size())));
   std::vector<std::thread> threads;
   for (unsigned w = 1; w < workers; ++w) threads.emplace_back(worker);
   worker();

@@ -49,7 +49,8 @@ TimingCase paper_timing_case(const PaperScene& scene, PaperImplementation implem
 
 // Solves every row once with the bit-exact `backend` at `bits`, recording the paper's steps and on
 // to our own 99.5% convergence (at most 10% more), which is reported beside the paper's count. The
-// rows are solved in parallel, one per core; the result does not depend on it.
+// rows are solved in parallel, one per job (jobs(), host_sw/radiosity/jobs.h); the result does not
+// depend on it.
 std::vector<PaperScene> prepare_paper_scenes(const std::vector<PaperRow>& rows, const std::string& backend, int bits,
                                              const std::function<void(const std::string&)>& progress);
 

@@ -5,13 +5,13 @@
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
-#include <thread>
 
 #include <poll.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include "host_sw/platform/software_system.h"
+#include "host_sw/radiosity/jobs.h"
 #include "host_sw/studies/child_guard.h"
 #include "host_sw/studies/timing_study_json.h"
 #include "host_sw/visibility/visibility_factory.h"
@@ -159,7 +159,9 @@ std::size_t study_shards(std::size_t cases, unsigned processes) {
   return (fewest + processes - 1) / processes * processes;  // whole rounds: no shard runs alone at the end
 }
 
-unsigned default_study_processes() { return std::max(1u, std::min(std::thread::hardware_concurrency(), 8u)); }
+// No cap of its own: a study's shards are independent processes, so every core the process may use
+// (jobs(): --jobs, RC2000SIM_JOBS, else the affinity mask cut to the cgroup's CPU quota) runs one.
+unsigned default_study_processes() { return jobs(); }
 
 namespace {
 

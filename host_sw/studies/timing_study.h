@@ -27,7 +27,7 @@ struct RecordedRun {
 };
 
 // Solves with a software backend ("fixed", "fast", ...) at `bits`, recording every step.
-// `threads`: the backend's own threads (fast only; 0 = every core).
+// `threads`: the backend's own threads (fast only; 0 = jobs(), host_sw/radiosity/jobs.h).
 RecordedRun record_functional_run(const Scene& scene, const SolverOptions& solver, const std::string& backend, int bits,
                                   int threads = 0);
 
@@ -42,7 +42,7 @@ struct TimingCase {
   std::optional<HostProfile> host_profile;  // when set, a software case's profile instead of `host`
 };
 
-unsigned default_study_processes();  // the machine's cores, at most 8
+unsigned default_study_processes();  // jobs() (host_sw/radiosity/jobs.h): --jobs, RC2000SIM_JOBS or the usable cores
 
 // The most systems one process elaborates. Simulated side by side, systems take turns at every
 // event, so a process cycles through all of their state: past about a hundred systems that state

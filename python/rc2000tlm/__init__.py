@@ -13,8 +13,8 @@
     d.best, d.front, d.to_dataframe()               # the fastest design, the Pareto front, every design
     rc2000tlm.load("out/sweep")                     # outputs rc2000sim already wrote (design too)
 
-SystemC elaborates once per process, so every simulation runs in a worker process of a pool sized to
-the machine's cores (rc2000tlm.workers); errors come back as ValueError or RuntimeError with the
+SystemC elaborates once per process, so every simulation runs in a worker process of a pool sized as
+`rc2000sim --jobs` (jobs=; rc2000tlm.workers); errors come back as ValueError or RuntimeError with the
 command line's message. README, "Use it from Python".
 """
 from .results import DesignBound, DesignPoint, DesignResult, PaperResult, RunResult, SweepResult, load

@@ -1,6 +1,7 @@
 """The worker processes: each call of the C++ core (rc2000tlm._core) runs in a fresh process of its
 own (`python3 -m rc2000tlm._worker`; SystemC elaborates once per process), at most as many at once as
-the machine has cores. A fresh interpreter per call, not multiprocessing's spawn, so that callers
+`jobs` says (run_many; the command line's --jobs and its rule: RC2000SIM_JOBS, else the cores this process
+may use). Every function takes jobs= (None: that rule), checked by the C++ side as --jobs is. A fresh interpreter per call, not multiprocessing's spawn, so that callers
 whose main module is no file (`python3 -`, notebooks) work the same."""
 import builtins
 import concurrent.futures
@@ -66,10 +67,16 @@ def _call(function, kwargs, show_progress):
         os.remove(result_path)
 
 
-def _submit_all(calls, progress, what, show_worker_progress=False):
-    """Runs (function, kwargs) calls, each in its own worker process, at most one per core at once;
+def _jobs(jobs):
+    """The job count: `jobs` checked as `rc2000sim --jobs` checks it (a ValueError with its message), or
+    the rule's (RC2000SIM_JOBS, else the cores this process may use), as the C++ side has it."""
+    return _call("jobs", {"jobs": jobs}, False)
+
+
+def _submit_all(calls, progress, what, show_worker_progress=False, workers=1):
+    """Runs (function, kwargs) calls, each in its own worker process, at most `workers` at once;
     their JSON results in order. progress: a count of finished calls on stderr."""
-    with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
+    with concurrent.futures.ThreadPoolExecutor(max_workers=workers) as pool:
         futures = [pool.submit(_call, f, kw, show_worker_progress) for f, kw in calls]
         done = 0
         for _ in concurrent.futures.as_completed(futures):
@@ -82,31 +89,33 @@ def _submit_all(calls, progress, what, show_worker_progress=False):
 
 
 def _run_kwargs(scene=None, patch_levels=3, faces=0, steps=0, device="xc2v6000", lanes=1, bits=15, banks=0,
-                concurrent=False, host="athlon-mp-2600-calibrated", cards=1):
+                concurrent=False, host="athlon-mp-2600-calibrated", cards=1, jobs=None):
     return {"scene_file": "" if scene is None else os.path.abspath(scene), "patch_levels": patch_levels,
             "face_target": faces, "steps": steps, "device": device, "lanes": lanes, "bits": bits, "banks": banks,
-            "concurrent": concurrent, "host": host, "cards": cards}
+            "concurrent": concurrent, "host": host, "cards": cards, "jobs": jobs}
 
 
 def run(**options):
     """One board run (`rc2000sim run --impl board`; the defaults are its defaults): scene (a scene file;
     None: the embedded Cornell Box), patch_levels, faces (refine to this many faces first; 0: as is),
-    steps (0: to convergence), device, lanes, bits, banks (0: the profile's), concurrent, host, cards.
-    Returns a RunResult."""
+    steps (0: to convergence), device, lanes, bits, banks (0: the profile's), concurrent, host, cards,
+    jobs (the fast backend's threads, as --jobs; None: the rule's). Returns a RunResult."""
     return RunResult(_submit_all([("run_board", _run_kwargs(**options))], False, "runs")[0])
 
 
-def run_many(option_sets, progress=True):
-    """Several board runs at once on the machine's cores: a list of run() option dicts; their
-    RunResults in the same order. progress: a count of finished runs on stderr."""
+def run_many(option_sets, progress=True, jobs=None):
+    """Several board runs at once: a list of run() option dicts; their RunResults in the same order.
+    jobs: how many run at once (as --jobs, checked the same way; None: RC2000SIM_JOBS, else the cores
+    this process may use). progress: a count of finished runs on stderr."""
     calls = [("run_board", _run_kwargs(**o)) for o in option_sets]
-    return [RunResult(d) for d in _submit_all(calls, progress, "runs")]
+    return [RunResult(d) for d in _submit_all(calls, progress, "runs", workers=_jobs(jobs))]
 
 
-def study(path, progress=False):
+def study(path, progress=False, jobs=None):
     """A study file (TOML, docs/studies.md) run on this machine; a SweepResult (a `scene` column when
-    the study has several scenes). progress: the study's own progress line on stderr."""
-    kwargs = {"path": os.path.abspath(path), "progress": progress}
+    the study has several scenes). progress: the study's own progress line on stderr. jobs: the
+    study's processes and threads, as --jobs (None: the rule's)."""
+    kwargs = {"path": os.path.abspath(path), "progress": progress, "jobs": jobs}
     return SweepResult.from_core(_submit_all([("study_file", kwargs)], False, "studies", progress)[0])
 
 
@@ -144,18 +153,20 @@ def study_text(scenes=None, steps=None, name="python", fixed=None, **axes):
     return "\n".join(lines) + "\n"
 
 
-def sweep(scenes=None, steps=None, name="python", fixed=None, progress=False, **axes):
+def sweep(scenes=None, steps=None, name="python", fixed=None, progress=False, jobs=None, **axes):
     """A sweep as a study (docs/studies.md) made from the arguments (study_text shows the file);
-    scenes: None for the study default (the paper's scene). Returns a SweepResult."""
+    scenes: None for the study default (the paper's scene); jobs: as --jobs (None: the rule's).
+    Returns a SweepResult."""
     text = study_text(scenes=scenes, steps=steps, name=name, fixed=fixed, **axes)
-    kwargs = {"text": text, "name": "rc2000tlm.sweep(%s)" % name, "progress": progress}
+    kwargs = {"text": text, "name": "rc2000tlm.sweep(%s)" % name, "progress": progress, "jobs": jobs}
     return SweepResult.from_core(_submit_all([("study_text", kwargs)], False, "studies", progress)[0])
 
 
-def paper(host="athlon-mp-2600-calibrated", progress=False):
+def paper(host="athlon-mp-2600-calibrated", progress=False, jobs=None):
     """Table 2 predicted as `rc2000sim paper` does (the paper's table, the calibrated host profile and its
-    driver-model variants); a PaperResult. Minutes of work: progress shows its phases on stderr."""
-    kwargs = {"host": host, "progress": progress}
+    driver-model variants); a PaperResult. Minutes of work: progress shows its phases on stderr. jobs:
+    as `rc2000sim paper --jobs` (None: RC2000SIM_JOBS, else the cores this process may use)."""
+    kwargs = {"host": host, "progress": progress, "jobs": jobs}
     return PaperResult(_submit_all([("paper_table", kwargs)], False, "paper", progress)[0])
 
 
@@ -177,7 +188,7 @@ def design(progress=False, **options):
     The options are the command's, by the same names in snake_case (scene, faces, face_levels,
     patch_levels, patch_size, steps, culled, form_factor, device, host, lanes, banks, bank_clocks,
     results, bits, multipliers, cards, concurrent, max_banks, min_bits, max_energy, max_power,
-    exhaustive), with the command's defaults (design_defaults() lists them); an axis takes the
+    exhaustive, jobs), with the command's defaults (design_defaults() lists them); an axis takes the
     command's text ("1-4"), a list ([1, 2, 4]) or one value. An option the command does not have is a
     TypeError; a value it refuses is a ValueError with its message. progress: the search's phases on
     stderr. Returns a DesignResult."""

@@ -8,7 +8,8 @@ build tree's package:
   3. the defaults are the command's: design_defaults() against the defaults `rc2000sim design --help`
      shows;
   4. values the command refuses raise ValueError with the command's message (naming the option and
-     the limit); an option the command does not have is a TypeError.
+     the limit); an option the command does not have is a TypeError;
+  5. jobs= of run_many, paper, run and sweep: checked as `--jobs` is, with its message.
 Prints "SKIP: <reason>" and exits 77 without pandas or the module.
 usage: design_test.py RC2000SIM BUILD_DIR"""
 import glob
@@ -125,7 +126,8 @@ bad = [({"max_banks": 65}, ["--max-banks", "65"]), ({"max_banks": 4}, ["--max-ba
        ({"patch_levels": 9}, ["--patch-levels", "9"]), ({"faces": 0}, ["--faces", "0"]),
        ({"form_factor": "exact"}, ["--form-factor", "exact"]), ({"scene": "no-such.scene"}, ["--scene", "no-such.scene"]),
        ({"patch_size": 0.1}, ["--patch-levels", "1", "--patch-size", "0.1"]),
-       ({"min_bits": 23, "bits": 15}, ["--min-bits", "23", "--bits", "15"])]
+       ({"min_bits": 23, "bits": 15}, ["--min-bits", "23", "--bits", "15"]),
+       ({"jobs": 0}, ["--jobs", "0"]), ({"jobs": 513}, ["--jobs", "513"])]
 for options, flags in bad:
     given = dict(base, **dict(zip(flags[::2], flags[1::2])))  # the bad values in place of the space's
     done = command(*[x for pair in given.items() for x in pair], "--quiet", "--out", os.path.join(work, "bad"))
@@ -147,5 +149,28 @@ except TypeError as e:
 else:
     sys.exit("design() accepted an option the command does not have")
 print("4. %d refusals carry the command's messages; an unknown option is a TypeError" % len(bad))
+
+# 5. jobs= of the other functions: the rule's count, or --jobs's check and message (docs/outputs.md, "Cores").
+paper_refusal = subprocess.run([sim, "paper", "--jobs", "0", "--quiet", "--out", os.path.join(work, "bad")],
+                               capture_output=True, text=True).stderr
+assert rc2000tlm.workers._jobs(3) == 3 and rc2000tlm.workers._jobs(None) >= 1
+os.environ["RC2000SIM_JOBS"] = "2"
+assert rc2000tlm.workers._jobs(None) == 2 and rc2000tlm.workers._jobs(5) == 5
+del os.environ["RC2000SIM_JOBS"]
+for call in (lambda: rc2000tlm.run_many([], jobs=0), lambda: rc2000tlm.paper(jobs=0), lambda: rc2000tlm.run(steps=1, jobs=0),
+             lambda: rc2000tlm.sweep(lanes=[1], steps=2, jobs=0)):
+    try:
+        call()
+    except ValueError as e:
+        assert str(e) and str(e) in paper_refusal, (str(e), paper_refusal)
+    else:
+        sys.exit("a call accepted jobs=0")
+try:
+    rc2000tlm.run_many([], jobs=600)
+except ValueError as e:
+    assert "--jobs must be 1..512 (" in str(e) and "got 600" in str(e), e
+else:
+    sys.exit("run_many accepted jobs=600")
+print("5. jobs=: the rule's count (RC2000SIM_JOBS too), and the command's refusal of 0 and 600")
 subprocess.run(["rm", "-rf", work])
 print("PASS: rc2000tlm.design() is rc2000sim design")

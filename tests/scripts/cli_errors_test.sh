@@ -113,6 +113,19 @@ refused "$work/o" "--shard: expected I/N" sweep --study "$root/tests/host_sw/stu
 refused "$work/o" "--study is empty: name a study file" sweep --study "" --out "$work/o"
 refused "$work/o" "--shard is empty: expected I/N" sweep --study "$root/tests/host_sw/studies/data/small.toml" --shard "" --out "$work/o"
 refused "$work/o" "--lanes does not apply with --study" sweep --study "$root/tests/host_sw/studies/data/small.toml" --lanes 2 --out "$work/o"
+# --jobs and RC2000SIM_JOBS (docs/outputs.md, "Cores: --jobs and RC2000SIM_JOBS"): one check everywhere.
+for command in paper design sweep calibrate adaptive bench accuracy; do
+  refused "$work/o" "--jobs must be 1..512 (worker processes and threads; default: the " $command --jobs 0 --quiet --out "$work/o"
+done
+refused "$work/o" "--jobs must be 1..512 (" paper --jobs 513 --quiet --out "$work/o"
+refused "$work/o" ", got -3" design --jobs -3 --quiet --out "$work/o"
+refused "$work/o" "--jobs must be a whole number 1..512, got 'many'" sweep --jobs many --quiet --out "$work/o"
+RC2000SIM_JOBS=0 refused "$work/o" "RC2000SIM_JOBS must be 1..512 (" paper --quiet --out "$work/o"
+RC2000SIM_JOBS=two refused "$work/o" "RC2000SIM_JOBS must be a whole number 1..512, got 'two'" sweep --quiet --out "$work/o"
+refused "$work/o" "--jobs applies only where the fast backend runs" run "${tiny[@]}" --jobs 2 --out "$work/o"
+refused "$work/o" "--jobs applies only where the fast backend runs" "${board[@]}" --lanes-compute --jobs 2 --out "$work/o"
+refused "$work/o" "--jobs does not apply with --list-fields" sweep --list-fields --jobs 2
+refused "$work/o" "--jobs does not apply to sweep merge" sweep --jobs 2 merge "$work" --out "$work/o"
 
 echo "3. outputs that cannot be written: refused before any work, nothing written, no 'wrote'"
 refused "$work/nothing" "/dev/full: exists and is not a regular file; not replaced" \
@@ -245,6 +258,9 @@ python3 -c "import json, sys; r = json.load(open(sys.argv[1])); sys.exit(r['sett
 "$sim" sweep --devices xc2v6000 --face-levels 0 --patch-levels 0 --steps 3 --lanes 1-2 --banks 6 --quiet \
   --out "$work/sweep" > /dev/null || fail "a sweep failed"
 [ -s "$work/sweep/sweep.csv" ] && [ -s "$work/sweep/study.json" ] || fail "the sweep wrote no sweep.csv or study.json"
+# --jobs where the fast backend runs, and a good RC2000SIM_JOBS, are taken.
+"$sim" run --visibility fast "${tiny[@]}" --jobs 1 --out "$work/jobs" > /dev/null || fail "run --visibility fast --jobs 1 failed"
+RC2000SIM_JOBS=1 "$sim" run --impl board "${tiny[@]}" --out "$work/jobs-env" > /dev/null || fail "a run with RC2000SIM_JOBS=1 failed"
 # A room beside a mesh ten million units away: at 15 bits the room's faces have no area on the grid
 # and would block nothing, silently; the run warns on stderr and in report.json.
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n' > "$work/tetra.obj"

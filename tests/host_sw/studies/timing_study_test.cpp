@@ -93,7 +93,7 @@ TEST(TimingStudy, ShardsComeInWholeRounds) {
   EXPECT_EQ(study_shards(171, 1), 3u);
   EXPECT_EQ(study_shards(7 * k, 3), 9u);
   for (std::size_t n : {1u, 63u, 64u, 65u, 200u, 1000u, 4000u}) {
-    for (unsigned p : {1u, 2u, 3u, 8u}) {
+    for (unsigned p : {1u, 2u, 3u, 8u, 16u, 64u, 512u}) {  // no cap on processes (--jobs up to 512)
       const std::size_t shards = study_shards(n, p);
       EXPECT_LE((n + shards - 1) / shards, k) << n << " cases, " << p << " processes";
       EXPECT_TRUE(shards <= p || shards % p == 0) << n << " cases, " << p << " processes";
@@ -135,6 +135,30 @@ TEST(TimingStudy, ShardsChangeNoOutcome) {
     EXPECT_EQ(dump(part(sharded, 0, k)) + dump(part(sharded, k, 2 * k)) + dump(part(sharded, 2 * k, n)), reference)
         << processes << " processes";
   }
+}
+
+// Many processes, as on a large machine with no cap: more processes than cases gives one case per
+// process (this one runs the first, children the others), and every outcome is still what one
+// process gives.
+TEST(TimingStudy, MoreProcessesThanCasesChangeNoOutcome) {
+  const Scene scene = small_cornell_box();
+  const SolverOptions so = steps(8);
+  const RecordedRun recorded = record_functional_run(scene, so, "fixed", 15, 1);
+  std::vector<TimingCase> cases;
+  for (std::size_t i = 0; i < 12; ++i) {
+    TimingCase c;
+    c.label = std::to_string(i);
+    c.scene = &scene;
+    c.solver = steps(4 + static_cast<int>(i % 5));
+    c.recording = &recorded.recording;
+    c.software = i % 4 == 3;
+    c.board.lanes = static_cast<board::LaneCount>(1 + i % 3);
+    c.board.concurrent = i % 2 == 1;
+    cases.push_back(c);
+  }
+  EXPECT_EQ(study_shards(cases.size(), 16), cases.size());
+  const std::string reference = in_one_process(cases);
+  EXPECT_EQ(dump(run_timing_study(cases, 16)), reference);
 }
 
 }  // namespace

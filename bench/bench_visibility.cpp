@@ -5,6 +5,11 @@
 // largest scene (1120 faces, 4480 patches), recorded once by running the solver.
 //
 //   build-fast/bench/bench_visibility --benchmark_min_time=1
+//   build-fast/bench/bench_visibility --benchmark_filter='BM_FastFixed/.*/threads:1'
+//       --benchmark_repetitions=5 --benchmark_report_aggregates_only=true   (one line)
+//
+// BM_FastFixed runs once per instruction-set variant this CPU runs (avx512, avx2, baseline; capped
+// by RC2000_SIMD, pipeline/kernel_isa.h), the variants of one width next to each other.
 //
 // Counters: items_per_second = segments/s (wall clock); on the fast backend, x_embree = its
 // segments/s over Embree's on the same segments, Embree run off the clock in every iteration so
@@ -16,11 +21,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "host_sw/visibility/fast_visibility.h"
 #include "host_sw/visibility/fixed_visibility.h"
 #include "host_sw/radiosity/radiosity.h"
+#include "pipeline/kernel_isa.h"
 #include "scenes/prepare.h"
 
 #if RC_HAVE_EMBREE
@@ -188,13 +196,14 @@ BENCHMARK(BM_EmbreeOccluded1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 #endif  // RC_HAVE_EMBREE
 
-// range(0): fractional bits; range(1): threads. Every iteration also runs Embree on the same
-// segments, off the clock, so that x_embree compares the two under the same machine load.
-void BM_FastFixed(benchmark::State& state) {
+// range(0): fractional bits; range(1): threads; the instruction-set variant (kernel_isa.h) is
+// the benchmark's name's first part (registered in main). Every iteration also runs Embree on the
+// same segments, off the clock, so that x_embree compares the two under the same machine load.
+void BM_FastFixed(benchmark::State& state, rc::pipeline::KernelIsa isa) {
   using Clock = std::chrono::steady_clock;
   const Workload& w = workload();
   const int bits = static_cast<int>(state.range(0));
-  rc::FastFixedVisibility fast(bits, static_cast<int>(state.range(1)));
+  rc::FastFixedVisibility fast(bits, static_cast<int>(state.range(1)), isa);
   fast.load_faces(w.faces);
   run_batches(fast, w);  // first pass fills the end-point catalogue, as a solver's first steps do
   const std::uint64_t tests_before = fast.tests_performed();
@@ -218,17 +227,6 @@ void BM_FastFixed(benchmark::State& state) {
   state.counters["tests_per_segment"] = static_cast<double>(fast.tests_performed() - tests_before) / segments;
   if (embree_seconds > 0) state.counters["x_embree"] = embree_seconds / fast_seconds;
 }
-BENCHMARK(BM_FastFixed)
-    ->ArgNames({"bits", "threads"})
-    ->Args({15, 1})
-    ->Args({15, 2})
-    ->Args({7, 1})
-    ->Args({11, 1})
-    ->Args({23, 1})
-    ->Args({31, 1})
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();  // wall time: the helper threads' work is not on the main thread's clock
-
 void BM_BruteForceFixed(benchmark::State& state) {
   const Workload& w = workload();
   rc::FixedPointVisibility brute(static_cast<int>(state.range(0)));
@@ -242,4 +240,32 @@ BENCHMARK(BM_BruteForceFixed)->ArgName("bits")->Arg(15)->Unit(benchmark::kMillis
 
 }  // namespace
 
-BENCHMARK_MAIN();
+// BM_FastFixed/<variant>/bits:B/threads:T for every variant allowed (the CPU's, up to the cap
+// RC2000_SIMD sets), one thread, the widths side by side, best variant first; and two threads on
+// the best variant.
+int main(int argc, char** argv) {
+  std::vector<rc::pipeline::KernelIsa> isas;
+  try {
+    isas = rc::pipeline::allowed_kernel_isas();
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "bench_visibility: %s\n", e.what());
+    return 1;
+  }
+  const auto add = [](rc::pipeline::KernelIsa isa, int bits, int threads) {
+    const std::string name = std::string("BM_FastFixed/") + rc::pipeline::simd_name(isa);
+    benchmark::RegisterBenchmark(name.c_str(), BM_FastFixed, isa)
+        ->ArgNames({"bits", "threads"})
+        ->Args({bits, threads})
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();  // wall time: the helper threads' work is not on the main thread's clock
+  };
+  for (int bits : {15, 7, 31, 11, 23}) {
+    for (auto isa = isas.rbegin(); isa != isas.rend(); ++isa) add(*isa, bits, 1);
+  }
+  add(isas.back(), 15, 2);
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -23,11 +23,13 @@ bool in_range(const FixedVec3& v, Quantity q, int bits) {
 
 // One face against a stream of end points. Always inlined, so that each instruction-set variant
 // below compiles the whole loop, core included, for its own instruction set.
-template <class Int, bool kMasked>
+// Bank: the end points' integer type in memory (64-bit, or 32-bit for widths <= 15, which saves
+// narrowing them in every pass).
+template <class Int, bool kMasked, class Bank>
 [[gnu::always_inline]] inline void occlude_loop(const FaceRecord& face, const FixedVec3& start,
-                                                const std::int64_t* __restrict end_x,
-                                                const std::int64_t* __restrict end_y,
-                                                const std::int64_t* __restrict end_z, std::size_t n,
+                                                const Bank* __restrict end_x,
+                                                const Bank* __restrict end_y,
+                                                const Bank* __restrict end_z, std::size_t n,
                                                 int bits, std::uint8_t* __restrict blocked,
                                                 const std::uint8_t* __restrict skip) {
   const IntVec3<Int> v0 = vec_cast<Int>(face.v0), e1 = vec_cast<Int>(face.edge1),
@@ -45,16 +47,19 @@ template <class Int, bool kMasked>
 
 // Every (integer path, mask, instruction set) combination as a plain function, so a table can
 // pick one at run time and the tests can run each.
-using OccludeFn = void (*)(const FaceRecord&, const FixedVec3&, const std::int64_t*,
-                           const std::int64_t*, const std::int64_t*, std::size_t, int,
-                           std::uint8_t*, const std::uint8_t*);
+using OccludeFn = OccludeKernel;
 struct OccludeKernels {
   OccludeFn narrow, narrow_masked, wide, wide_masked;
+  OccludeKernel32 banks32, banks32_masked;
 };
 
 #define RC_OCCLUDE_PARAMS                                                                    \
   const FaceRecord &face, const FixedVec3 &start, const std::int64_t *end_x,                \
       const std::int64_t *end_y, const std::int64_t *end_z, std::size_t n, int bits,        \
+      std::uint8_t *blocked, const std::uint8_t *skip
+#define RC_OCCLUDE32_PARAMS                                                                  \
+  const FaceRecord &face, const FixedVec3 &start, const std::int32_t *end_x,                \
+      const std::int32_t *end_y, const std::int32_t *end_z, std::size_t n, int bits,        \
       std::uint8_t *blocked, const std::uint8_t *skip
 #define RC_OCCLUDE_ARGS face, start, end_x, end_y, end_z, n, bits, blocked, skip
 #define RC_DEFINE_OCCLUDE_KERNELS(isa, target)                                                 \
@@ -70,8 +75,15 @@ struct OccludeKernels {
   target void occlude64_masked_##isa(RC_OCCLUDE_PARAMS) {                                    \
     occlude_loop<std::int64_t, true>(RC_OCCLUDE_ARGS);                                       \
   }                                                                                          \
-  constexpr OccludeKernels kOcclude_##isa{occlude32_##isa, occlude32_masked_##isa,           \
-                                         occlude64_##isa, occlude64_masked_##isa};
+  target void occlude32_banks32_##isa(RC_OCCLUDE32_PARAMS) {                                 \
+    occlude_loop<std::int32_t, false>(RC_OCCLUDE_ARGS);                                      \
+  }                                                                                          \
+  target void occlude32_banks32_masked_##isa(RC_OCCLUDE32_PARAMS) {                          \
+    occlude_loop<std::int32_t, true>(RC_OCCLUDE_ARGS);                                       \
+  }                                                                                          \
+  constexpr OccludeKernels kOcclude_##isa{occlude32_##isa,         occlude32_masked_##isa,   \
+                                         occlude64_##isa,         occlude64_masked_##isa,   \
+                                         occlude32_banks32_##isa, occlude32_banks32_masked_##isa};
 
 RC_DEFINE_OCCLUDE_KERNELS(baseline, )
 #if RC_HAVE_ISA_VARIANTS
@@ -81,14 +93,14 @@ RC_DEFINE_OCCLUDE_KERNELS(v4, RC_TARGET_X86_64_V4)
 #undef RC_DEFINE_OCCLUDE_KERNELS
 #undef RC_OCCLUDE_ARGS
 #undef RC_OCCLUDE_PARAMS
+#undef RC_OCCLUDE32_PARAMS
 
 const OccludeKernels& occlude_kernels(KernelIsa isa) {
-  require_supported(isa);
 #if RC_HAVE_ISA_VARIANTS
-  if (isa == KernelIsa::X86_64_V3) return kOcclude_v3;
-  if (isa == KernelIsa::X86_64_V4) return kOcclude_v4;
+  return *pick_variant(isa, &kOcclude_baseline, &kOcclude_v3, &kOcclude_v4);
+#else
+  return *pick_variant(isa, &kOcclude_baseline, &kOcclude_baseline, &kOcclude_baseline);
 #endif
-  return kOcclude_baseline;
 }
 
 // The narrowest integer type whose products cannot overflow at this width (bit_bounds.h): 32-bit
@@ -182,6 +194,19 @@ void occlude_face(const FaceRecord& face, const FixedVec3& start, const std::int
   static const OccludeKernels& best = occlude_kernels(best_kernel_isa());
   assert(is_face_record(face, bits) && is_position(start, bits));
   select_kernel(best, bits, skip != nullptr)(face, start, end_x, end_y, end_z, n, bits, blocked, skip);
+}
+
+OccludeKernel occlude_kernel(KernelIsa isa, FracBits bits, bool masked) {
+  return select_kernel(occlude_kernels(isa), bits, masked);
+}
+
+OccludeKernel32 occlude_kernel32(KernelIsa isa, FracBits bits, bool masked) {
+  if (!core_fits<std::int32_t>(bits)) {
+    throw std::invalid_argument("occlude_kernel32: 32-bit end-point banks need a width of at most 15 bits, not " +
+                                std::to_string(int(bits)));
+  }
+  const OccludeKernels& k = occlude_kernels(isa);
+  return masked ? k.banks32_masked : k.banks32;
 }
 
 void occlude_face(KernelIsa isa, const FaceRecord& face, const FixedVec3& start,

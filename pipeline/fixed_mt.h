@@ -72,9 +72,24 @@ void occlude_face(const FaceRecord& face, const FixedVec3& start, const std::int
                   const std::int64_t* end_y, const std::int64_t* end_z, std::size_t n, FracBits bits,
                   std::uint8_t* blocked, const std::uint8_t* skip = nullptr);
 // The same on one particular instruction-set variant (tests, benchmarks); the overload above
-// uses best_kernel_isa(). Throws std::invalid_argument if the CPU cannot run it.
+// uses best_kernel_isa() (kernel_isa.h: the CPU's best, capped by RC2000_SIMD). Throws
+// std::invalid_argument if the CPU cannot run it.
 void occlude_face(KernelIsa isa, const FaceRecord& face, const FixedVec3& start,
                   const std::int64_t* end_x, const std::int64_t* end_y, const std::int64_t* end_z,
                   std::size_t n, FracBits bits, std::uint8_t* blocked, const std::uint8_t* skip = nullptr);
+
+// The function occlude_face(isa, ...) runs for this width and mask (skip != nullptr), looked up
+// and checked once, for a caller that runs many short streams (same arguments, bits as given
+// here). Throws std::invalid_argument for a width outside 7..31 or a variant the CPU cannot run.
+using OccludeKernel = void (*)(const FaceRecord&, const FixedVec3&, const std::int64_t*, const std::int64_t*,
+                               const std::int64_t*, std::size_t, int, std::uint8_t*, const std::uint8_t*);
+OccludeKernel occlude_kernel(KernelIsa isa, FracBits bits, bool masked);
+// The same kernel reading end points from 32-bit banks (every position fits them): for widths up
+// to 15, where the arithmetic runs on 32-bit lanes, this saves narrowing the 64-bit banks in
+// every pass. Same answers. Throws std::invalid_argument for a width above 15 or a variant the
+// CPU cannot run.
+using OccludeKernel32 = void (*)(const FaceRecord&, const FixedVec3&, const std::int32_t*, const std::int32_t*,
+                                 const std::int32_t*, std::size_t, int, std::uint8_t*, const std::uint8_t*);
+OccludeKernel32 occlude_kernel32(KernelIsa isa, FracBits bits, bool masked);
 
 }  // namespace rc::pipeline

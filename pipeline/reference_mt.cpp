@@ -88,12 +88,11 @@ RC_DEFINE_FLOAT_KERNELS(v4, RC_TARGET_X86_64_V4)
 #undef RC_FLOAT_PARAMS
 
 const FloatKernels& float_kernels(KernelIsa isa) {
-  require_supported(isa);
 #if RC_HAVE_ISA_VARIANTS
-  if (isa == KernelIsa::X86_64_V3) return kFloat_v3;
-  if (isa == KernelIsa::X86_64_V4) return kFloat_v4;
+  return *pick_variant(isa, &kFloat_baseline, &kFloat_v3, &kFloat_v4);
+#else
+  return *pick_variant(isa, &kFloat_baseline, &kFloat_baseline, &kFloat_baseline);
 #endif
-  return kFloat_baseline;
 }
 
 }  // namespace

@@ -69,22 +69,15 @@ void EndPointTree::build(const EndPointCatalogue& points) {
   slot_face_.assign(none + 1, kNoFace);
 }
 
-// mark_batch is compiled for AVX-512 and AVX2 as well as the baseline (integer code only: every
-// variant computes the same), the best the CPU runs picked when the program loads.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define RC_TREE_TARGETS __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#else
-#define RC_TREE_TARGETS
-#endif
-
 // Each point's face first, in one pass over the batch's segments; then one backward pass over the
 // nodes, which sees every child before its parent (children come after their parent in nodes_),
 // each node's eight children's faces read from slot_face_ side by side. Faces merge to themselves
 // when equal and to kMixedFaces otherwise, in any grouping, and kNoFace (no segment) changes
 // nothing: the minimum and maximum of the children with segments decide. A segment ending on no
 // face (a negative face) counts as kMixedFaces: no face ever skips it.
-RC_TREE_TARGETS void EndPointTree::mark_batch(const EndPointCatalogue& points, const int* end_faces) {
-  if (points.size() != points_) throw std::logic_error("end-point tree marked for a catalogue it was not built over");
+// Always inlined into one function per instruction-set variant (Variants below; integer code
+// only: every variant computes the same).
+[[gnu::always_inline]] inline void EndPointTree::mark_nodes(const EndPointCatalogue& points, const int* end_faces) {
   if (nodes_.empty()) return;
   std::fill(slot_face_.begin(), slot_face_.begin() + static_cast<std::ptrdiff_t>(points_), kNoFace);
   for (std::uint32_t s = 0; s < points.segments(); ++s) {
@@ -105,6 +98,27 @@ RC_TREE_TARGETS void EndPointTree::mark_batch(const EndPointCatalogue& points, c
     node.face = node.active == 0 ? kNoFace : (lo == hi ? hi : kMixedFaces);
     slot_face_[points_ + i] = node.face;
   }
+}
+
+struct EndPointTree::Variants {
+  using Fn = void (*)(EndPointTree&, const EndPointCatalogue&, const int*);
+  static void baseline(EndPointTree& t, const EndPointCatalogue& p, const int* f) { t.mark_nodes(p, f); }
+#if RC_HAVE_ISA_VARIANTS
+  RC_TARGET_X86_64_V3 static void v3(EndPointTree& t, const EndPointCatalogue& p, const int* f) { t.mark_nodes(p, f); }
+  RC_TARGET_X86_64_V4 static void v4(EndPointTree& t, const EndPointCatalogue& p, const int* f) { t.mark_nodes(p, f); }
+#else
+  static constexpr Fn v3 = baseline, v4 = baseline;
+#endif
+};
+
+void EndPointTree::mark_batch(const EndPointCatalogue& points, const int* end_faces, pipeline::KernelIsa isa) {
+  const Variants::Fn fn = pipeline::pick_variant<Variants::Fn>(isa, Variants::baseline, Variants::v3, Variants::v4);
+  if (points.size() != points_) throw std::logic_error("end-point tree marked for a catalogue it was not built over");
+  fn(*this, points, end_faces);
+}
+
+void EndPointTree::mark_batch(const EndPointCatalogue& points, const int* end_faces) {
+  mark_batch(points, end_faces, pipeline::best_kernel_isa());
 }
 
 // Splits order_[begin, end) (two or more points) in two, in place, where the surface area

@@ -14,6 +14,7 @@
 
 #include "host_sw/visibility/end_point_catalogue.h"
 #include "pipeline/hit_region.h"
+#include "pipeline/kernel_isa.h"
 
 namespace rc {
 
@@ -25,7 +26,10 @@ class EndPointTree {
   // Notes, per node, which children hold segments of the current batch and the one face all
   // those segments end on, if there is one (end_faces: the batch's, by segment; a negative one is
   // no face). O(nodes + segments); call after every EndPointCatalogue::assign and build.
+  // Runs the instruction-set variant `isa` (pipeline/kernel_isa.h; every variant marks the same),
+  // or best_kernel_isa() without one; throws std::invalid_argument if the CPU cannot run it.
   void mark_batch(const EndPointCatalogue& points, const int* end_faces);
+  void mark_batch(const EndPointCatalogue& points, const int* end_faces, pipeline::KernelIsa isa);
 
   // Calls point(id) for every catalogue point with segments in the current batch whose box the
   // region may hit (a superset of such points inside the region), skipping subtrees whose
@@ -48,6 +52,10 @@ class EndPointTree {
 
 
  private:
+  struct Variants;  // mark_batch's instruction-set variants (end_point_tree.cpp)
+  friend struct Variants;
+  [[gnu::always_inline]] inline void mark_nodes(const EndPointCatalogue& points, const int* end_faces);
+
   // kWidth children tested at once (HitRegion::may_hit_boxes); a child is an inner node or a
   // single point, whose box is the point itself rounded outwards to float.
   static constexpr int kWidth = pipeline::HitRegion::kBoxes;
@@ -84,8 +92,8 @@ class EndPointTree {
   std::vector<Node> nodes_;
 };
 
-// Always inlined, so that a caller compiled for a wider instruction set (target_clones) runs the
-// box tests on its wider registers.
+// Always inlined, so that a caller compiled for a wider instruction set (an explicit variant,
+// pipeline/kernel_isa.h) runs the box tests on its wider registers.
 template <class Point>
 [[gnu::always_inline]] inline void EndPointTree::query(const pipeline::HitRegion& region, int face,
                                                        Point&& point) const {

@@ -24,20 +24,58 @@ constexpr std::size_t kDenseShare = 128;
 // kernel (32-bit lanes up to 15 bits, 64-bit above) costs more than it saves.
 constexpr std::size_t kVectorCandidates = 16;
 
+// End points in 32-bit banks where the kernel's arithmetic is 32-bit (pipeline::occlude_kernel32).
+bool narrow_banks(int bits) { return pipeline::core_fits<std::int32_t>(bits); }
+
+// Copies the coordinates of n points into three banks of integer type Bank.
+template <class Bank, class Position>
+void fill_banks(std::size_t n, std::vector<Bank>& x, std::vector<Bank>& y, std::vector<Bank>& z, Position&& position) {
+  x.resize(n);
+  y.resize(n);
+  z.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const pipeline::FixedVec3& e = position(i);
+    x[i] = static_cast<Bank>(e.x);
+    y[i] = static_cast<Bank>(e.y);
+    z[i] = static_cast<Bank>(e.z);
+  }
+}
+
 }  // namespace
 
-// test_faces is compiled for AVX-512 and AVX2 as well as the baseline, and the best the CPU runs
-// is picked when the program loads: the end-point tree's eight-box test (always inlined into it)
-// then runs on one vector register. Integer and rounding-safe code only, so every variant gives
-// the same answers (docs/fast-visibility.md, "Floating point").
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define RC_FAST_TARGETS __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+// test_faces is compiled for AVX-512 and AVX2 as well as the baseline, and the backend's variant
+// (pipeline::best_kernel_isa() unless given) is picked when it is built: the end-point tree's
+// eight-box test (always inlined into it) then runs on one vector register. Integer and
+// rounding-safe code only, so every variant gives the same answers (docs/fast-visibility.md,
+// "Floating point").
+struct FastFixedVisibility::Variants {
+  static std::uint64_t baseline(const FastFixedVisibility& v, std::size_t first, std::size_t last, WorkerOutput& out) {
+    return v.test_faces(first, last, out);
+  }
+#if RC_HAVE_ISA_VARIANTS
+  RC_TARGET_X86_64_V3 static std::uint64_t v3(const FastFixedVisibility& v, std::size_t first, std::size_t last,
+                                              WorkerOutput& out) {
+    return v.test_faces(first, last, out);
+  }
+  RC_TARGET_X86_64_V4 static std::uint64_t v4(const FastFixedVisibility& v, std::size_t first, std::size_t last,
+                                              WorkerOutput& out) {
+    return v.test_faces(first, last, out);
+  }
 #else
-#define RC_FAST_TARGETS
+  static constexpr TestFaces v3 = baseline, v4 = baseline;
 #endif
+};
 
 FastFixedVisibility::FastFixedVisibility(pipeline::FracBits frac_bits, int threads)
-    : bits_(frac_bits), pool_(threads) {
+    : FastFixedVisibility(frac_bits, threads, pipeline::best_kernel_isa()) {}
+
+FastFixedVisibility::FastFixedVisibility(pipeline::FracBits frac_bits, int threads, pipeline::KernelIsa isa)
+    : bits_(frac_bits),
+      isa_(isa),
+      test_faces_(pipeline::pick_variant<TestFaces>(isa, Variants::baseline, Variants::v3, Variants::v4)),
+      occlude_(narrow_banks(frac_bits) ? nullptr : pipeline::occlude_kernel(isa, frac_bits, false)),
+      occlude32_(narrow_banks(frac_bits) ? pipeline::occlude_kernel32(isa, frac_bits, false) : nullptr),
+      pool_(threads) {
   outputs_.resize(static_cast<std::size_t>(pool_.size()));
 }
 
@@ -121,17 +159,16 @@ void FastFixedVisibility::submit(const SegmentBatch& batch) {
     for (std::size_t k = s; k < end; ++k) sheet_segments_[at++] = static_cast<std::uint32_t>(k);
     next = at;
   }
-  tree_.mark_batch(points_, end_sheets_.data());
+  tree_.mark_batch(points_, end_sheets_.data(), isa_);
   source_sheet_ = sheets().first(batch.source_face);
   segments_ = n;
-  end_x_.resize(n);
-  end_y_.resize(n);
-  end_z_.resize(n);
-  for (std::size_t s = 0; s < n; ++s) {
-    const pipeline::FixedVec3& e = points_.position(points_.point_of(static_cast<std::uint32_t>(s)));
-    end_x_[s] = e.x;
-    end_y_[s] = e.y;
-    end_z_[s] = e.z;
+  const auto end_of = [&](std::size_t s) -> const pipeline::FixedVec3& {
+    return points_.position(points_.point_of(static_cast<std::uint32_t>(s)));
+  };
+  if (occlude32_ != nullptr) {
+    fill_banks(n, end32_x_, end32_y_, end32_z_, end_of);
+  } else {
+    fill_banks(n, end_x_, end_y_, end_z_, end_of);
   }
   brute_force_tests_ += count_brute_force_tests(batch.source_face);
   for (WorkerOutput& out : outputs_) {
@@ -174,14 +211,15 @@ void FastFixedVisibility::run_worker(int worker) {
   for (;;) {
     const std::size_t first = next_face_.value.fetch_add(kFacesPerClaim, std::memory_order_relaxed);
     if (first >= faces_.size()) return;
-    out.tests += test_faces(first, std::min(first + kFacesPerClaim, faces_.size()), out);
+    out.tests += test_faces_(*this, first, std::min(first + kFacesPerClaim, faces_.size()), out);
   }
 }
 
 // Faces [first, last) (at most kFacesPerClaim) against the end points their hit regions may
-// contain, in the pipeline's arithmetic. Returns the number of tests run.
-RC_FAST_TARGETS std::uint64_t FastFixedVisibility::test_faces(std::size_t first, std::size_t last,
-                                                              WorkerOutput& out) const {
+// contain, in the pipeline's arithmetic. Returns the number of tests run. Always inlined into
+// Variants' functions, one per instruction set.
+[[gnu::always_inline]] inline std::uint64_t FastFixedVisibility::test_faces(std::size_t first, std::size_t last,
+                                                                           WorkerOutput& out) const {
   std::optional<pipeline::HitRegion> regions[kFacesPerClaim];
   const pipeline::HitRegion* region_of[kFacesPerClaim] = {};
   int sheet_of[kFacesPerClaim] = {};
@@ -232,18 +270,17 @@ std::uint64_t FastFixedVisibility::test_candidates(int face, int sheet, const st
     return n;
   }
   // The candidates' end points side by side, through the vectorised streaming kernel.
-  out.candidate_x.resize(n);
-  out.candidate_y.resize(n);
-  out.candidate_z.resize(n);
   out.candidate_hit.assign(n, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    const pipeline::FixedVec3& e = points_.position(candidates[i]);
-    out.candidate_x[i] = e.x;
-    out.candidate_y[i] = e.y;
-    out.candidate_z[i] = e.z;
+  const auto candidate = [&](std::size_t i) -> const pipeline::FixedVec3& { return points_.position(candidates[i]); };
+  if (occlude32_ != nullptr) {
+    fill_banks(n, out.candidate32_x, out.candidate32_y, out.candidate32_z, candidate);
+    occlude32_(record, start_, out.candidate32_x.data(), out.candidate32_y.data(), out.candidate32_z.data(), n, bits_,
+               out.candidate_hit.data(), nullptr);
+  } else {
+    fill_banks(n, out.candidate_x, out.candidate_y, out.candidate_z, candidate);
+    occlude_(record, start_, out.candidate_x.data(), out.candidate_y.data(), out.candidate_z.data(), n, bits_,
+             out.candidate_hit.data(), nullptr);
   }
-  pipeline::occlude_face(record, start_, out.candidate_x.data(), out.candidate_y.data(), out.candidate_z.data(), n,
-                         bits_, out.candidate_hit.data());
   for (std::size_t i = 0; i < n; ++i) {
     if (out.candidate_hit[i]) block_segments_ending_at(candidates[i], sheet, out);
   }
@@ -268,8 +305,13 @@ std::uint64_t FastFixedVisibility::test_every_segment(int face, WorkerOutput& ou
   const std::size_t owned = sheet_begin_[sheet + 1] - sheet_begin_[sheet];
   out.saved.resize(owned);
   for (std::size_t k = 0; k < owned; ++k) out.saved[k] = out.blocked[own[k]];
-  pipeline::occlude_face(faces_[static_cast<std::size_t>(face)], start_, end_x_.data(), end_y_.data(), end_z_.data(),
-                         segments_, bits_, out.blocked.data());
+  const pipeline::FaceRecord& record = faces_[static_cast<std::size_t>(face)];
+  if (occlude32_ != nullptr) {
+    occlude32_(record, start_, end32_x_.data(), end32_y_.data(), end32_z_.data(), segments_, bits_, out.blocked.data(),
+               nullptr);
+  } else {
+    occlude_(record, start_, end_x_.data(), end_y_.data(), end_z_.data(), segments_, bits_, out.blocked.data(), nullptr);
+  }
   for (std::size_t k = 0; k < owned; ++k) out.blocked[own[k]] = out.saved[k];
   out.dense_tests += segments_ - owned;
   return segments_ - owned;

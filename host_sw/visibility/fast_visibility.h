@@ -35,7 +35,9 @@
 #include "host_sw/radiosity/visibility.h"
 #include "host_sw/radiosity/worker_pool.h"
 #include "pipeline/fixed_format.h"
+#include "pipeline/fixed_mt.h"
 #include "pipeline/hit_region.h"
+#include "pipeline/kernel_isa.h"
 
 namespace rc {
 
@@ -43,7 +45,12 @@ class FastFixedVisibility : public VisibilityBackend {
  public:
   // Throws std::invalid_argument unless 7 <= frac_bits <= 31 and threads >= 0.
   // threads = 0: one per hardware thread. The threads are created here, once.
+  // The face loop, the end-point tree's marking and the streaming kernel run the instruction-set
+  // variant pipeline::best_kernel_isa() (the CPU's best, capped by RC2000_SIMD: a wrong value
+  // throws std::invalid_argument here), or `isa` (benchmarks, tests: std::invalid_argument if the
+  // CPU cannot run it). Every variant gives the same answers and counters.
   explicit FastFixedVisibility(pipeline::FracBits frac_bits, int threads = 0);
+  FastFixedVisibility(pipeline::FracBits frac_bits, int threads, pipeline::KernelIsa isa);
   ~FastFixedVisibility() override;
 
   std::string name() const override { return "fast"; }
@@ -67,6 +74,7 @@ class FastFixedVisibility : public VisibilityBackend {
 
   int frac_bits() const { return bits_; }
   int threads() const { return pool_.size(); }
+  pipeline::KernelIsa isa() const { return isa_; }
 
  private:
   // Faces a worker claims at a time: enough to amortise the atomic, few enough to balance a step
@@ -85,11 +93,16 @@ class FastFixedVisibility : public VisibilityBackend {
     std::vector<std::uint8_t> saved;  // a dense face's own segments' flags
     // The candidates' end points (structure of arrays) and the kernel's answers.
     std::vector<std::int64_t> candidate_x, candidate_y, candidate_z;
+    std::vector<std::int32_t> candidate32_x, candidate32_y, candidate32_z;  // widths <= 15
     std::vector<std::uint8_t> candidate_hit;
   };
 
+  struct Variants;  // test_faces' instruction-set variants (fast_visibility.cpp)
+  friend struct Variants;
+  using TestFaces = std::uint64_t (*)(const FastFixedVisibility&, std::size_t, std::size_t, WorkerOutput&);
+
   void run_worker(int worker);
-  std::uint64_t test_faces(std::size_t first, std::size_t last, WorkerOutput& out) const;
+  [[gnu::always_inline]] inline std::uint64_t test_faces(std::size_t first, std::size_t last, WorkerOutput& out) const;
   std::uint64_t test_candidates(int face, int sheet, const std::vector<std::uint32_t>& candidates,
                                 WorkerOutput& out) const;
   std::uint64_t test_every_segment(int face, WorkerOutput& out) const;
@@ -98,6 +111,12 @@ class FastFixedVisibility : public VisibilityBackend {
   std::uint64_t count_brute_force_tests(int source_face) const;
 
   int bits_;
+  pipeline::KernelIsa isa_;
+  TestFaces test_faces_;           // test_faces compiled for isa_
+  // The streaming kernel for isa_ and bits_, unmasked: on 32-bit end-point banks up to 15 bits
+  // (occlude32_; occlude_ null), on 64-bit ones above (occlude_; occlude32_ null).
+  pipeline::OccludeKernel occlude_;
+  pipeline::OccludeKernel32 occlude32_;
   std::vector<pipeline::FaceRecord> faces_;
   std::vector<pipeline::FaceErrorTerms> face_terms_;  // the hit regions' face-only part, per face
   // The current batch.
@@ -109,7 +128,9 @@ class FastFixedVisibility : public VisibilityBackend {
   // sheet_segments_[sheet_begin_[f] .. sheet_begin_[f + 1]).
   std::vector<std::uint32_t> sheet_begin_, sheet_segments_;
   std::vector<std::uint32_t> sheet_next_;  // the counting sort's scratch
-  std::vector<std::int64_t> end_x_, end_y_, end_z_;  // quantised, in batch order (dense faces)
+  // Quantised, in batch order (dense faces): 32-bit banks with occlude32_, 64-bit ones otherwise.
+  std::vector<std::int64_t> end_x_, end_y_, end_z_;
+  std::vector<std::int32_t> end32_x_, end32_y_, end32_z_;
   EndPointCatalogue points_;
   EndPointTree tree_;
   struct alignas(64) FaceCounter {  // a cache line of its own: every worker writes it

@@ -24,11 +24,15 @@ std::unique_ptr<VisibilityBackend> make_software_visibility(const std::string& n
   if (pipeline::names_float_format(name)) {
     return std::make_unique<FloatPipelineVisibility>(pipeline::parse_float_format(name));
   }
+  // Only the name's error gets the float hint; the backend's own (a width, RC2000_SIMD) pass as
+  // they are.
+  SoftwareVisibility kind;
   try {
-    return make_software_visibility(parse_choice<SoftwareVisibility>(name), bits, threads);
+    kind = parse_choice<SoftwareVisibility>(name);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(std::string(e.what()) + " or float:E,M");
   }
+  return make_software_visibility(kind, bits, threads);
 }
 
 std::unique_ptr<VisibilityBackend> make_functional_answer(const std::string& name, int bits, int threads) {

@@ -170,7 +170,9 @@ TEST(EndPointTree, MarksWhichSubtreesAskAboutWhichFace) {
       batch.ends.resize(keep);  // later batches leave catalogue points without segments
       batch.end_faces.resize(keep);
       if (cat.assign(batch, bits)) tree.build(cat);
-      tree.mark_batch(cat, batch.end_faces.data());
+      // Every instruction-set variant of the marking (kernel_isa.h) must mark the same.
+      for (const pipeline::KernelIsa isa : pipeline::supported_kernel_isas()) {
+      tree.mark_batch(cat, batch.end_faces.data(), isa);
       const pipeline::FixedVec3 start = pipeline::quantize_point(batch.start, bits);
       for (int f = 0; f < static_cast<int>(w.faces.size()); ++f) {
         const pipeline::FaceRecord face = pipeline::make_face_record(w.faces[f], bits);
@@ -192,8 +194,10 @@ TEST(EndPointTree, MarksWhichSubtreesAskAboutWhichFace) {
             continue;
           }
           ++checked;
-          EXPECT_EQ(visited.count(id), 1u) << "point " << id << ", face " << asked_face << ", " << bits << " bits";
+          EXPECT_EQ(visited.count(id), 1u) << "point " << id << ", face " << asked_face << ", " << bits << " bits, "
+                                           << pipeline::name(isa);
         }
+      }
       }
     }
   }

@@ -57,6 +57,42 @@ TEST(FastVisibility, DenseFacesMatchBruteForce) {
   EXPECT_GT(culled_runs, 100u);
 }
 
+// Every instruction-set variant the CPU runs (pipeline/kernel_isa.h: the face loop with the tree
+// walk, the tree's marking and the streaming kernel) gives the brute force's flags, and all of
+// them run the same tests on the same dense faces.
+TEST(FastVisibility, EveryInstructionSetGivesTheSameFlagsAndCounts) {
+  for (int bits : {7, 15, 31}) {
+    Workload w = test::random_workload(200, 3, 500, 0.1, 60 + bits);
+    const auto inside = [](const Vec3& v) { return glm::clamp(v, Vec3(0.001), Vec3(0.998)); };
+    for (SegmentBatch& b : w.batches) {  // a dense face per batch, as in DenseFacesMatchBruteForce
+      const Vec3 c = b.start + Vec3{0.02, 0.01, 0.015};
+      w.faces.push_back({inside(c + Vec3{-0.3, -0.3, 0.0}), inside(c + Vec3{0.3, -0.25, 0.02}),
+                         inside(c + Vec3{0.0, 0.3, 0.01})});
+    }
+    const std::vector<std::vector<std::uint8_t>> expected = test::brute_force_flags(w, bits);
+    std::uint64_t tests = 0, dense = 0;
+    for (const pipeline::KernelIsa isa : pipeline::supported_kernel_isas()) {
+      FastFixedVisibility fast(bits, 2, isa);
+      EXPECT_EQ(fast.isa(), isa);
+      fast.load_faces(w.faces);
+      std::vector<std::uint8_t> flags;
+      for (std::size_t b = 0; b < w.batches.size(); ++b) {
+        fast.submit(w.batches[b]);
+        fast.collect(flags);
+        EXPECT_EQ(flags, expected[b]) << bits << " bits, " << pipeline::name(isa) << ", batch " << b;
+      }
+      if (isa == pipeline::KernelIsa::Baseline) {
+        tests = fast.tests_performed();
+        dense = fast.dense_faces();
+        EXPECT_GT(dense, 0u) << bits << " bits: no face took the dense path";
+      }
+      EXPECT_EQ(fast.tests_performed(), tests) << bits << " bits, " << pipeline::name(isa);
+      EXPECT_EQ(fast.dense_faces(), dense) << bits << " bits, " << pipeline::name(isa);
+    }
+  }
+  EXPECT_EQ(FastFixedVisibility(15, 1).isa(), pipeline::best_kernel_isa());
+}
+
 // Every thread count gives the same flags and runs the same tests.
 TEST(FastVisibility, ThreadCountDoesNotChangeFlagsOrCounts) {
   const Workload w = test::random_workload(400, 4, 600, 0.15, 5);

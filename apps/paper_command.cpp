@@ -12,7 +12,7 @@
 #include "apps/cli_options.h"
 #include "apps/outputs.h"
 #include "apps/paper_document.h"
-#include "host_sw/profiles/profile_document.h"
+#include "profiles/profile_document.h"
 #include "board/throughput_estimates.h"
 #include "host_sw/studies/paper_workload.h"
 #include "apps/plot.h"

@@ -16,10 +16,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "host_sw/profiles/profile_json.h"
 #include "host_sw/studies/design_json.h"
 #include "host_sw/studies/design_options.h"
 #include "host_sw/studies/paper_workload.h"
+#include "profiles/profile_json.h"
 
 namespace rc {
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The JSON edge (issue 24): outside the tests, a file may include nlohmann/json only if it lies in io/
-# (the JSON text checks), host_sw/profiles/ (the profile-reading edge), apps/ (the command line), or
+# (the JSON text checks), profiles/ (the profile-reading edge), apps/ (the command line), or
 # its name ends in _json.h / _json.cpp (an output writer or codec). Models see typed values only.
 #   json_edge_test.sh SOURCE_DIR
 # Exit 0 when every include is at an edge; 1 naming each file that is not (and each allow-listed file
@@ -24,7 +24,7 @@ is_allowed() {
 }
 at_edge() {
   case "$1" in
-    io/*|host_sw/profiles/*|apps/*|*_json.h|*_json.cpp) return 0 ;;
+    io/*|profiles/*|apps/*|*_json.h|*_json.cpp) return 0 ;;
   esac
   return 1
 }
@@ -32,11 +32,11 @@ at_edge() {
 status=0
 mapfile -t includers < <(grep -rlE '#include[[:space:]]*[<"]nlohmann/json' \
   --include='*.h' --include='*.hpp' --include='*.cpp' \
-  io scenes pipeline tlm board host_sw apps bench fuzz examples 2>/dev/null | sort)
+  io profiles scenes pipeline tlm board host_sw apps bench fuzz examples 2>/dev/null | sort)
 for f in "${includers[@]}"; do
   at_edge "$f" && continue
   is_allowed "$f" && continue
-  echo "FAIL: $f includes nlohmann/json outside the JSON edges (io/, host_sw/profiles/, apps/, *_json.h/.cpp)" >&2
+  echo "FAIL: $f includes nlohmann/json outside the JSON edges (io/, profiles/, apps/, *_json.h/.cpp)" >&2
   status=1
 done
 for pattern in "${allowed[@]}"; do

@@ -18,7 +18,7 @@
 #include "apps/plot.h"
 #include "apps/progress.h"
 #include "apps/report.h"
-#include "host_sw/platform/run_report_json.h"
+#include "host_sw/outputs/run_report_json.h"
 #include "host_sw/studies/calibration_variants.h"
 #include "host_sw/studies/paper_prediction.h"
 #include "host_sw/studies/workload.h"

@@ -30,7 +30,7 @@ namespace rc {
 
 struct BoardRunResult {
   SolverResult solver;
-  RunReport report;                 // to_json(report) (host_sw/outputs/run_report_json.h): report.json
+  RunReport report;                  // to_json(report) (host_sw/outputs/run_report_json.h): report.json
   std::optional<TraceWriter> trace;  // BoardRunOptions::trace: the recorded events (trace_json(*trace),
                                      // host_sw/outputs/trace_json.h: trace.json); else empty
 };

@@ -7,7 +7,7 @@
 #include "apps/cli_options.h"
 #include "apps/outputs.h"
 #include "apps/report.h"
-#include "host_sw/profiles/profile_document.h"
+#include "profiles/profile_document.h"
 #include "host_sw/studies/paper_workload.h"
 #include "apps/progress.h"
 #include "host_sw/studies/calibration_json.h"

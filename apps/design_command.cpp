@@ -14,8 +14,8 @@
 #include "apps/plot.h"
 #include "apps/progress.h"
 #include "apps/report.h"
-#include "host_sw/profiles/profile_json.h"
 #include "host_sw/studies/paper_workload.h"
+#include "profiles/profile_json.h"
 
 namespace rc {
 

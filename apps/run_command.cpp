@@ -19,7 +19,8 @@
 #include "pipeline/float_format.h"
 #include "host_sw/visibility/fixed_visibility.h"
 #include "host_sw/visibility/visibility_factory.h"
-#include "host_sw/platform/run_report_json.h"
+#include "host_sw/outputs/run_report_json.h"
+#include "host_sw/outputs/trace_json.h"
 
 namespace rc {
 
@@ -131,7 +132,7 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   // The board's tests and, with a CPU/FPGA split, the host's (0 otherwise).
   out.visibility_tests = r.report.intersections.tests + r.report.work[static_cast<int>(HostWork::IntersectionTest)].count;
   out.board = std::move(r.report);
-  out.trace_json = std::move(r.trace_json);
+  if (r.trace) out.trace_json = trace_json(*r.trace);
   out.lanes_that_fit = std::move(fit);
   return out;
 }

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <string>
 
-#include "host_sw/profiles/profile_json.h"
+#include "profiles/profile_json.h"
 
 namespace rc {
 

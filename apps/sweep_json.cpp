@@ -3,11 +3,11 @@
 #include <iterator>
 #include <sstream>
 
-#include "host_sw/profiles/field_value_json.h"
 #include "host_sw/studies/study_json.h"
 #include "host_sw/studies/sweep_columns.h"
 #include "host_sw/studies/sweep_row_json.h"
 #include "host_sw/studies/workload_json.h"
+#include "profiles/field_value_json.h"
 
 namespace rc {
 

@@ -13,8 +13,8 @@
 #include "apps/outputs.h"
 #include "apps/progress.h"
 #include "apps/sweep_writer.h"
-#include "host_sw/profiles/profile_json.h"
 #include "host_sw/studies/shard_json.h"
+#include "profiles/profile_json.h"
 
 namespace rc {
 

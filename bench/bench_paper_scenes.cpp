@@ -16,9 +16,9 @@
 #include <vector>
 
 #include "bench/systemc_benchmark_main.h"
-#include "host_sw/profiles/profile_document.h"
 #include "host_sw/studies/paper_workload.h"
 #include "host_sw/studies/workload.h"
+#include "profiles/profile_document.h"
 
 namespace {
 

@@ -4,9 +4,9 @@
 #include <mutex>
 #include <stdexcept>
 
-#include "host_sw/profiles/profile_reader.h"
 #include "io/parse_number.h"
 #include "pipeline/fixed_format.h"
+#include "profiles/profile_reader.h"
 
 namespace rc::board {
 

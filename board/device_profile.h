@@ -9,7 +9,7 @@
 #include <string>
 
 #include "board/bank_layout.h"
-#include "host_sw/profiles/profile_document.h"
+#include "profiles/profile_document.h"
 
 namespace rc::board {
 
@@ -47,7 +47,7 @@ struct DeviceProfile {
   ResultStore results = ResultStore::bank;  // wrapper.results: where a pass's blocked bits accumulate
 
   // The file as loaded, sources included: the energy table reads its section from it, and a study
-  // sets fields on it by their dotted paths (host_sw/profiles/profile_document.h).
+  // sets fields on it by their dotted paths (profiles/profile_document.h).
   profiles::ProfileDocument document;
 
   // The device clock for `lanes` pipelines; throws std::invalid_argument if the profile has none.

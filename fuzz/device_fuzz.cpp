@@ -16,7 +16,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const rc::board::DeviceProfile profile = rc::board::load_device_profile(path);
     (void)rc::energy::device_energy_table(profile);
   } catch (const std::invalid_argument&) {
-    // The documented error (host_sw/profiles/profile_reader.h).
+    // The documented error (profiles/profile_reader.h).
   }
   return 0;
 }

@@ -16,7 +16,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const rc::HostProfile profile = rc::load_host_profile(path);
     (void)rc::energy::host_energy_table(profile.document, path);
   } catch (const std::invalid_argument&) {
-    // The documented error (host_sw/profiles/profile_reader.h).
+    // The documented error (profiles/profile_reader.h).
   }
   return 0;
 }

@@ -7,11 +7,11 @@
 #include <mutex>
 #include <stdexcept>
 
-#include "host_sw/profiles/resource_table.h"
 #include "io/config_dir.h"
 #include "pipeline/bit_bounds.h"
 #include "pipeline/fixed_format.h"
 #include "pipeline/hardware_blocks.h"
+#include "profiles/resource_table.h"
 
 namespace rc::pipeline {
 

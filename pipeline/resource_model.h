@@ -18,9 +18,9 @@
 #include <string>
 #include <vector>
 
-#include "host_sw/profiles/resource_table.h"
 #include "pipeline/fixed_format.h"
 #include "pipeline/float_format.h"
+#include "profiles/resource_table.h"
 
 namespace rc::pipeline {
 
@@ -98,7 +98,7 @@ struct FloatPipelineResources {
 
 class ResourceModel {
  public:
-  // Reads the file through the profile edge (host_sw/profiles/resource_table.h); throws
+  // Reads the file through the profile edge (profiles/resource_table.h); throws
   // std::runtime_error naming the file and the problem.
   static ResourceModel load(const std::string& path);
   static ResourceModel from_text(const std::string& text, const std::string& origin = "<text>");

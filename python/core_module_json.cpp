@@ -19,7 +19,7 @@
 #include "design_module_json.h"
 #include "host_sw/platform/board_run.h"
 #include "host_sw/platform/run_report.h"
-#include "host_sw/platform/run_report_json.h"
+#include "host_sw/outputs/run_report_json.h"
 #include "host_sw/driver/host_cpu_model.h"
 #include "host_sw/radiosity/jobs.h"
 #include "host_sw/studies/calibration_variants.h"

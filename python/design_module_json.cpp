@@ -16,11 +16,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "host_sw/profiles/profile_json.h"
 #include "host_sw/radiosity/jobs.h"
 #include "host_sw/studies/design_json.h"
 #include "host_sw/studies/design_options.h"
 #include "host_sw/studies/paper_workload.h"
+#include "profiles/profile_json.h"
 
 namespace rc {
 

@@ -10,8 +10,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "host_sw/profiles/composition_file.h"
 #include "io/input_file.h"
+#include "profiles/composition_file.h"
 #include "scenes/cornell_box.h"
 #include "scenes/mesh_import.h"
 #include "scenes/scene_builder.h"

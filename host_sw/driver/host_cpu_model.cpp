@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <iterator>
 
-#include "host_sw/profiles/profile_reader.h"
+#include "profiles/profile_reader.h"
 #include "host_sw/driver/trace_writer.h"
 
 namespace rc {

@@ -15,8 +15,8 @@
 #include <tlm_utils/tlm_quantumkeeper.h>
 
 #include "host_sw/driver/cpu_split.h"
-#include "host_sw/profiles/profile_document.h"
 #include "host_sw/radiosity/host_cost.h"
+#include "profiles/profile_document.h"
 
 namespace rc {
 

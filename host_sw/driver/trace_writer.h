@@ -1,7 +1,7 @@
 // A Chrome / Perfetto trace (trace-event "X" complete events and "i" instants) of a board run,
 // restricted to a range of shooting steps: one track per actor (host thread, DMA, each lane, IRQ),
 // times in simulated time. The driver records typed events here; the trace.json text is written at
-// the output edge (host_sw/platform/trace_json.h). Open the file in ui.perfetto.dev or chrome://tracing.
+// the output edge (host_sw/outputs/trace_json.h). Open the file in ui.perfetto.dev or chrome://tracing.
 #pragma once
 
 #include <cstdint>

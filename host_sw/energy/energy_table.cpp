@@ -1,6 +1,6 @@
 #include "host_sw/energy/energy_table.h"
 
-#include "host_sw/profiles/profile_reader.h"
+#include "profiles/profile_reader.h"
 
 namespace rc::energy {
 

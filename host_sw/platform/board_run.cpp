@@ -2,8 +2,7 @@
 
 #include <chrono>
 #include <stdexcept>
-
-#include "host_sw/platform/trace_json.h"
+#include <utility>
 
 namespace rc {
 
@@ -27,7 +26,8 @@ BoardRunResult run_radiosity_on_board(const Scene& scene, const SolverOptions& s
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (vcd != nullptr) sc_core::sc_close_vcd_trace_file(vcd);
   system->rethrow_if_failed();
-  return {system->result(), system->report(wall), options.trace ? trace_json(system->trace_writer()) : std::string()};
+  return {system->result(), system->report(wall),
+          options.trace ? std::optional<TraceWriter>(std::move(system->trace_writer())) : std::nullopt};
 }
 
 }  // namespace rc

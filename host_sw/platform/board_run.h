@@ -16,8 +16,9 @@
 // this runner.
 #pragma once
 
-#include <string>
+#include <optional>
 
+#include "host_sw/driver/trace_writer.h"
 #include "host_sw/platform/board_run_options.h"
 #include "host_sw/platform/board_setup.h"
 #include "host_sw/platform/board_system.h"
@@ -29,8 +30,9 @@ namespace rc {
 
 struct BoardRunResult {
   SolverResult solver;
-  RunReport report;        // to_json(report) is the report.json document
-  std::string trace_json;  // BoardRunOptions::trace: the trace.json document; else empty
+  RunReport report;                  // to_json(report) (host_sw/outputs/run_report_json.h): report.json
+  std::optional<TraceWriter> trace;  // BoardRunOptions::trace: the recorded events (trace_json(*trace),
+                                     // host_sw/outputs/trace_json.h: trace.json); else empty
 };
 
 // Throws std::invalid_argument for bad options (profiles, layout, width, capacity without

@@ -1,5 +1,5 @@
 // What one run of a SystemC system reports, as typed data: the code passes a RunReport around and
-// reads its fields; JSON exists only at the output edge, host_sw/platform/run_report_json.h (to_json:
+// reads its fields; JSON exists only at the output edge, host_sw/outputs/run_report_json.h (to_json:
 // the rc2000sim.board/1 and rc2000sim.software/1 documents of docs/outputs.md; encode/decode: the
 // internal format of the same fields the timing study's worker processes send to their parent).
 #pragma once

@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "host_sw/profiles/profile_json.h"
+#include "profiles/profile_json.h"
 
 namespace rc {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "host_sw/profiles/variants_file.h"
+#include "profiles/variants_file.h"
 
 namespace rc {
 

@@ -51,7 +51,7 @@ struct CalibratedVariant {
 };
 
 // The variants file (schema rc2000sim.host-variants/1, written by calibration_variants_json.h) read
-// back through the profile edge (host_sw/profiles/variants_file.h); throws std::invalid_argument naming
+// back through the profile edge (profiles/variants_file.h); throws std::invalid_argument naming
 // the file and the problem.
 std::vector<CalibratedVariant> load_calibrated_variants(const std::string& path);
 std::string default_variants_path();  // configs/calibration/athlon-mp-2600-variants.json

@@ -1,6 +1,6 @@
 // The output edge of the driver-model variants (host_sw/studies/calibration_variants.h): the
 // variants file `rc2000sim calibrate` writes and `rc2000sim paper` reads back
-// (host_sw/profiles/variants_file.h).
+// (profiles/variants_file.h).
 #pragma once
 
 #include <string>

@@ -10,8 +10,8 @@
 #include <stdexcept>
 
 
-#include "host_sw/profiles/paper_table.h"
-#include "host_sw/profiles/profile_document.h"
+#include "profiles/paper_table.h"
+#include "profiles/profile_document.h"
 #include "host_sw/studies/workload.h"
 #include "host_sw/radiosity/jobs.h"
 #include "host_sw/radiosity/radiosity.h"

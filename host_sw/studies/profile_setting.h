@@ -12,7 +12,7 @@
 // in one place (board::device_profile_from_document, host_profile_from_document). The settings are
 // applied to the profile's document at the profile edge (profiles::ProfileDocument::with_field).
 // A value is typed (profiles::FieldValue); the study codecs convert it at their edges
-// (host_sw/profiles/field_value_json.h).
+// (profiles/field_value_json.h).
 #pragma once
 
 #include <string>
@@ -20,7 +20,7 @@
 
 #include "board/device_profile.h"
 #include "host_sw/driver/host_cpu_model.h"
-#include "host_sw/profiles/field_value.h"
+#include "profiles/field_value.h"
 
 namespace rc {
 

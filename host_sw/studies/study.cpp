@@ -7,7 +7,7 @@
 #include <set>
 #include <stdexcept>
 
-#include "host_sw/profiles/profile_json.h"
+#include "profiles/profile_json.h"
 #include "io/parse_number.h"
 #include "rc_version.h"
 #include "host_sw/studies/paper_workload.h"

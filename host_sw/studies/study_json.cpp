@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "host_sw/profiles/field_value_json.h"
+#include "profiles/field_value_json.h"
 
 namespace rc {
 

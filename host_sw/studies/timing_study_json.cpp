@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "host_sw/platform/run_report_json.h"
+#include "host_sw/outputs/run_report_json.h"
 
 namespace rc {
 

@@ -15,7 +15,7 @@
 #include <unistd.h>
 
 #include "board/device_profile.h"
-#include "host_sw/profiles/profile_json.h"
+#include "profiles/profile_json.h"
 #include "tests/common/temp_folder.h"
 
 namespace rc::board::test {

@@ -12,7 +12,7 @@
 #include "board/bank_layout.h"
 #include "board/board_params.h"
 #include "board/device_profile.h"
-#include "host_sw/profiles/profile_json.h"
+#include "profiles/profile_json.h"
 
 namespace rc::board::test {
 namespace {

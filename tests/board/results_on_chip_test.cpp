@@ -15,7 +15,7 @@
 #include "board/cycle_wrapper.h"
 #include "board/device_profile.h"
 #include "tests/board/board_test_support.h"
-#include "host_sw/profiles/profile_json.h"
+#include "profiles/profile_json.h"
 
 namespace rc::board::test {
 namespace {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "board/device_profile.h"
-#include "host_sw/profiles/profile_document.h"
+#include "profiles/profile_document.h"
 
 namespace rc::board::test {
 namespace {

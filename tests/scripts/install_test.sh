@@ -34,8 +34,8 @@ for f in include/rc2000tlm/board/rc2000.h include/rc2000tlm/host_sw/radiosity/ra
   [ -f "$prefix/$f" ] || fail "not installed: $f"
 done
 # No header is left out: every header of a library folder is in the installed set.
-for d in io scenes pipeline tlm board host_sw/radiosity host_sw/visibility host_sw/driver host_sw/energy \
-         host_sw/platform host_sw/studies testkit testkit/tlm; do
+for d in io profiles scenes pipeline tlm board host_sw/radiosity host_sw/visibility host_sw/driver host_sw/energy \
+         host_sw/platform host_sw/outputs host_sw/studies testkit testkit/tlm; do
   for h in "$root/$d"/*.h; do
     [ -f "$prefix/include/rc2000tlm/$d/$(basename "$h")" ] || fail "header not installed: $d/$(basename "$h")"
   done

@@ -14,7 +14,7 @@
 #include "host_sw/platform/board_run.h"
 #include "io/output_file.h"
 #include "scenes/prepare.h"
-#include "host_sw/platform/run_report_json.h"
+#include "host_sw/outputs/run_report_json.h"
 
 int sc_main(int argc, char** argv) {  // SystemC's entry point (libsystemc has main)
   if (argc != 2) {

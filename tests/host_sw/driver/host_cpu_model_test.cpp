@@ -7,7 +7,7 @@
 #include <string>
 
 #include "host_sw/driver/host_cpu_model.h"
-#include "host_sw/profiles/profile_json.h"
+#include "profiles/profile_json.h"
 
 namespace rc {
 namespace {

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "board/device_profile.h"
-#include "host_sw/profiles/profile_json.h"
+#include "profiles/profile_json.h"
 #include "board/design_fit.h"
 #include "host_sw/energy/energy_model.h"
 #include "host_sw/energy/full_rate_energy.h"

@@ -11,7 +11,7 @@
 #include "board/device_profile.h"
 #include "host_sw/platform/board_run.h"
 #include "tests/host_sw/platform/system_support.h"
-#include "host_sw/profiles/profile_json.h"
+#include "profiles/profile_json.h"
 
 namespace rc::board {
 namespace {

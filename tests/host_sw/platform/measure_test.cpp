@@ -13,7 +13,7 @@
 
 #include "host_sw/platform/board_run.h"
 #include "scenes/prepare.h"
-#include "host_sw/platform/run_report_json.h"
+#include "host_sw/outputs/run_report_json.h"
 
 namespace rc {
 namespace {

@@ -12,11 +12,11 @@
 
 #include <unistd.h>
 
-#include "host_sw/platform/trace_json.h"
+#include "host_sw/outputs/trace_json.h"
 #include "host_sw/visibility/visibility_factory.h"
 #include "host_sw/visibility/visibility_recording.h"
 #include "tests/host_sw/platform/system_support.h"
-#include "host_sw/platform/run_report_json.h"
+#include "host_sw/outputs/run_report_json.h"
 
 namespace rc::test {
 namespace {

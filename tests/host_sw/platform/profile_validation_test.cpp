@@ -12,7 +12,7 @@
 #include "host_sw/driver/host_cpu_model.h"
 #include "host_sw/platform/board_run.h"
 #include "tests/host_sw/platform/system_support.h"
-#include "host_sw/profiles/profile_json.h"
+#include "profiles/profile_json.h"
 
 namespace rc::test {
 namespace {

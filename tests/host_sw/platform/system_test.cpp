@@ -9,7 +9,8 @@
 
 #include "scenes/prepare.h"
 #include "tests/host_sw/platform/system_support.h"
-#include "host_sw/platform/run_report_json.h"
+#include "host_sw/outputs/run_report_json.h"
+#include "host_sw/outputs/trace_json.h"
 
 namespace rc::test {
 namespace {
@@ -192,7 +193,7 @@ TEST(BoardRunner, ReportsTraceAndWritesVcd) {
   EXPECT_EQ(report["banks"][5]["role"], "own-face table");
   EXPECT_GT(report["intersections"]["tests"].get<double>(), 0);
 
-  const nlohmann::json trace = nlohmann::json::parse(r.trace_json);
+  const nlohmann::json trace = nlohmann::json::parse(trace_json(r.trace.value()));
   std::set<std::string> tracks;
   for (const auto& e : trace["traceEvents"])
     if (e["name"] == "thread_name") tracks.insert(e["args"]["name"].get<std::string>());

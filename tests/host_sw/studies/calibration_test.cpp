@@ -9,7 +9,7 @@
 
 #include "host_sw/studies/calibration_json.h"
 #include "host_sw/studies/calibration_variants_json.h"
-#include "host_sw/profiles/profile_json.h"
+#include "profiles/profile_json.h"
 
 namespace rc {
 namespace {

@@ -9,9 +9,9 @@
 #include <string>
 #include <unistd.h>
 
-#include "host_sw/profiles/profile_json.h"
 #include "host_sw/studies/study_file.h"
 #include "host_sw/studies/sweep_study.h"
+#include "profiles/profile_json.h"
 
 namespace rc {
 namespace {

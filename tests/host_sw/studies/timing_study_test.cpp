@@ -10,7 +10,7 @@
 #include "host_sw/studies/calibration_variants.h"
 #include "host_sw/studies/timing_study.h"
 #include "tests/host_sw/platform/system_support.h"
-#include "host_sw/platform/run_report_json.h"
+#include "host_sw/outputs/run_report_json.h"
 
 namespace rc::test {
 namespace {

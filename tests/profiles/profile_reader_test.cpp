@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "host_sw/profiles/profile_json.h"
-#include "host_sw/profiles/composition_file.h"
-#include "host_sw/profiles/paper_table.h"
-#include "host_sw/profiles/profile_reader.h"
-#include "host_sw/profiles/resource_table.h"
-#include "host_sw/profiles/variants_file.h"
+#include "profiles/profile_json.h"
+#include "profiles/composition_file.h"
+#include "profiles/paper_table.h"
+#include "profiles/profile_reader.h"
+#include "profiles/resource_table.h"
+#include "profiles/variants_file.h"
 
 namespace rc::profiles {
 namespace {

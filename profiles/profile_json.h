@@ -8,8 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "host_sw/profiles/profile_document.h"
 #include "io/input_file.h"
+#include "profiles/profile_document.h"
 
 namespace rc::profiles {
 

@@ -1,4 +1,4 @@
-#include "host_sw/profiles/resource_table.h"
+#include "profiles/resource_table.h"
 
 #include <stdexcept>
 

@@ -2,7 +2,7 @@
 // codec the timing study's worker processes use, which must keep every field exactly.
 #include <gtest/gtest.h>
 
-#include "host_sw/platform/run_report_json.h"
+#include "host_sw/outputs/run_report_json.h"
 #include "tests/host_sw/platform/system_support.h"
 
 namespace rc::test {

@@ -1,4 +1,4 @@
-#include "host_sw/profiles/paper_table.h"
+#include "profiles/paper_table.h"
 
 #include <algorithm>
 #include <initializer_list>

@@ -1,4 +1,4 @@
-#include "host_sw/profiles/profile_reader.h"
+#include "profiles/profile_reader.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "host_sw/profiles/profile_json.h"
+#include "profiles/profile_json.h"
 
 namespace rc::profiles {
 

@@ -1,4 +1,4 @@
-#include "host_sw/platform/trace_json.h"
+#include "host_sw/outputs/trace_json.h"
 
 #include <nlohmann/json.hpp>
 

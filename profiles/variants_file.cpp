@@ -1,8 +1,8 @@
-#include "host_sw/profiles/variants_file.h"
+#include "profiles/variants_file.h"
 
 #include <stdexcept>
 
-#include "host_sw/profiles/profile_json.h"
+#include "profiles/profile_json.h"
 
 namespace rc::profiles {
 

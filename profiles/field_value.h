@@ -5,7 +5,7 @@
 #include <string>
 #include <variant>
 
-#include "host_sw/profiles/profile_document.h"
+#include "profiles/profile_document.h"
 
 namespace rc::profiles {
 

@@ -1,4 +1,4 @@
-#include "host_sw/profiles/composition_file.h"
+#include "profiles/composition_file.h"
 
 #include <algorithm>
 #include <cmath>

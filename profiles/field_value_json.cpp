@@ -1,4 +1,4 @@
-#include "host_sw/profiles/field_value_json.h"
+#include "profiles/field_value_json.h"
 
 #include <cstdint>
 #include <stdexcept>

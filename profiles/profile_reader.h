@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "host_sw/profiles/profile_document.h"
+#include "profiles/profile_document.h"
 
 namespace rc::profiles {
 

@@ -3,7 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "host_sw/profiles/field_value.h"
+#include "profiles/field_value.h"
 
 namespace rc::profiles {
 

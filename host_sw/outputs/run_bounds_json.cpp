@@ -1,4 +1,4 @@
-#include "host_sw/platform/run_bounds_json.h"
+#include "host_sw/outputs/run_bounds_json.h"
 
 namespace rc {
 

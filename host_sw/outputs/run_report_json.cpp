@@ -1,11 +1,11 @@
-#include "host_sw/platform/run_report_json.h"
+#include "host_sw/outputs/run_report_json.h"
 
 #include <cmath>
 #include <stdexcept>
 
 #include "host_sw/platform/run_bounds.h"
-#include "host_sw/platform/run_bounds_json.h"
-#include "host_sw/platform/fields_json.h"
+#include "host_sw/outputs/run_bounds_json.h"
+#include "host_sw/outputs/fields_json.h"
 
 namespace rc::fields {
 

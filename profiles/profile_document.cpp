@@ -1,11 +1,11 @@
-#include "host_sw/profiles/profile_document.h"
+#include "profiles/profile_document.h"
 
 #include <filesystem>
 #include <stdexcept>
 
-#include "host_sw/profiles/profile_json.h"
 #include "io/config_dir.h"
 #include "io/json_text.h"
+#include "profiles/profile_json.h"
 
 namespace rc::profiles {
 

@@ -63,6 +63,26 @@ module mt_delay #(parameter W = 1, parameter D = 0) (
   endgenerate
 endmodule
 
+// One row of an array multiplier: s = acc +- (x AND en). Kept as its own module in synthesis
+// (keep_hierarchy): flattened, Yosys 0.23 merges the rows' adder chain into one macc and maps it to
+// about three times the LUTs of the rows (8 x 8 bits: 488 LUTs against 161).
+(* keep_hierarchy *)
+module mt_row #(parameter W = 8, parameter SUB = 0) (
+  input  [W-1:0] acc,
+  input  [W-1:0] x,
+  input          en,
+  output [W-1:0] s
+);
+  wire [W-1:0] pp = x & {W{en}};
+  generate
+    if (SUB) begin : g_sub
+      assign s = acc - pp;
+    end else begin : g_add
+      assign s = acc + pp;
+    end
+  endgenerate
+endmodule
+
 // Signed WA x WB multiplier, result bits [SHIFT+WO-1:SHIFT] of the exact product, LAT registers
 // (the product register, then LAT-1 delay registers on the WO-bit result).
 module mt_mul #(parameter WA = 8, parameter WB = 8, parameter WO = 8, parameter SHIFT = 7,
@@ -73,26 +93,21 @@ module mt_mul #(parameter WA = 8, parameter WB = 8, parameter WO = 8, parameter 
   output signed [WO-1:0] p
 );
   localparam WP = WA + WB;
-  // The explicit array: row i adds a * b[i] * 2^i; the sign row (b's top bit, weight -2^(WB-1))
-  // subtracts. A loop in a function so that it unrolls into a chain of WB - 1 adders.
-  function signed [WP-1:0] array_product(input signed [WA-1:0] x, input signed [WB-1:0] y);
-    reg signed [WP-1:0] x_ext, acc;
-    integer i;
-    begin
-      x_ext = x;
-      acc = y[0] ? x_ext : {WP{1'b0}};
-      for (i = 1; i < WB; i = i + 1)
-        if (i == WB - 1)
-          acc = acc - (y[i] ? (x_ext <<< i) : {WP{1'b0}});
-        else
-          acc = acc + (y[i] ? (x_ext <<< i) : {WP{1'b0}});
-      array_product = acc;
-    end
-  endfunction
   wire signed [WP-1:0] full;
   generate
     if (SOFT) begin : g_array
-      assign full = array_product(a, b);
+      // The explicit array: row i adds a * b[i] * 2^i (an AND row into a WP-i bit adder on the upper
+      // bits; the low i bits pass); the sign row (b's top bit, weight -2^(WB-1)) subtracts.
+      wire signed [WP-1:0] a_ext = a;
+      wire [WP*WB-1:0] acc /* verilator split_var */;
+      assign acc[WP-1:0] = a_ext & {WP{b[0]}};
+      genvar i;
+      for (i = 1; i < WB; i = i + 1) begin : g_row
+        mt_row #(.W(WP - i), .SUB(i == WB - 1)) row (
+          .acc(acc[WP*i-1:WP*(i-1)+i]), .x(a_ext[WP-1-i:0]), .en(b[i]), .s(acc[WP*(i+1)-1:WP*i+i]));
+        assign acc[WP*i+i-1:WP*i] = acc[WP*(i-1)+i-1:WP*(i-1)];
+      end
+      assign full = acc[WP*WB-1:WP*(WB-1)];
     end else begin : g_op
       assign full = a * b;
     end

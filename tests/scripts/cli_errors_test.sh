@@ -93,7 +93,7 @@ refused "$work/o" "--lanes-impl rtl: the RTL pipeline is fixed-point; it does no
   "${board[@]}" --lanes-impl rtl --arith float:5,10 --out "$work/o"
 refused "$work/o" "--lanes-impl rtl: " "${board[@]}" --lanes-impl rtl --bits 8 --out "$work/o"  # no model at 8 bits (or no Verilator)
 refused "$work/o" "--lanes-compute does not apply with --lanes-impl rtl" "${board[@]}" --lanes-impl rtl --lanes-compute --out "$work/o"
-refused "$work/o" "lanes implementation" "${board[@]}" --lanes-impl verilog --out "$work/o"
+refused "$work/o" "--lanes-impl: verilog not in {cpp,rtl}" "${board[@]}" --lanes-impl verilog --out "$work/o"
 refused "$work/o" "--bits does not apply with --visibility float" run "${tiny[@]}" --bits 12 --out "$work/o"
 refused "$work/o" "--bits does not apply with --arith float:5,10" run "${tiny[@]}" --arith float:5,10 --bits 12 --out "$work/o"
 refused "$work/o" "--steps must be at least 1; omit it to run to convergence" run --steps 0 --quiet --out "$work/o"

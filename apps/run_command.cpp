@@ -17,6 +17,8 @@
 #include "host_sw/studies/workload.h"
 #include "host_sw/studies/workload_json.h"
 #include "pipeline/float_format.h"
+#include "rtl/lanes/rtl_lanes.h"
+#include "rtl/sim/rtl_pipeline.h"
 #include "host_sw/visibility/fixed_visibility.h"
 #include "host_sw/visibility/visibility_factory.h"
 #include "host_sw/outputs/run_report_json.h"
@@ -96,6 +98,10 @@ BoardRunOptions board_options(const RunOptions& o) {
   board.bits = o.bits;
   if (!o.cpu_share.empty()) board.cpu_split = parse_cpu_split(o.cpu_share, o.cpu_cores);
   if (float_arith(o)) board.float_format = o.arith.float_format();  // float lanes
+  if (o.lanes_impl == LanesImpl::rtl) {  // the Verilated RTL in the cycle-level wrapper; it computes
+    board.model = board::WrapperModel::cycle;
+    board.clocked_lanes = rtl::rtl_lanes_factory();
+  }
   return board;
 }
 
@@ -105,7 +111,7 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   // The lanes copy the culled kernel's answer, proven bit-identical (tests BoardOracle.*, FastVisibility.*);
   // float lanes copy the `float:E,M` software backend's (tests BoardSystem.FloatLanes*).
   std::unique_ptr<VisibilityBackend> oracle;
-  if (!o.lanes_compute) {
+  if (!o.lanes_compute && o.lanes_impl == LanesImpl::cpp) {
     oracle = make_functional_answer(float_arith(o) ? o.arith.name() : "fast", o.bits);
     board.oracle = oracle.get();
   }
@@ -123,7 +129,8 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   RunOutcome out;
   out.solver = std::move(r.solver);
   out.visibility_name = "board " + board.device + ", " + std::to_string(board.lanes.value()) + " lane(s), " +
-                        (float_arith(o) ? o.arith.name() : std::to_string(o.bits) + "-bit") + (board.concurrent ? ", concurrent" : ", serial") +
+                        (float_arith(o) ? o.arith.name() : std::to_string(o.bits) + "-bit") +
+                        (o.lanes_impl == LanesImpl::rtl ? " RTL lanes" : "") + (board.concurrent ? ", concurrent" : ", serial") +
                         (board.cpu_split.on() ? ", cpu share " + board.cpu_split.name() : "") +
                         (board.chunk_rays != 0 ? ", chunks of " + std::to_string(board.chunk_rays) : "") +
                         (o.board.cards > 1 ? ", " + std::to_string(o.board.cards) + " cards (split " + choice_name(o.board.card_split) + ", " +
@@ -281,7 +288,7 @@ pipeline::Arithmetic parse_arith_option(const std::string& text) {
 void check_run_options(const CLI::App& cmd, const RunOptions& o) {
   if (o.impl != Impl::board) {
     refuse_given(cmd, {"--device", "--lanes", "--banks", "--concurrent", "--cards", "--card-split", "--card-bus",
-                       "--lanes-compute", "--host", "--trace", "--trace-steps", "--vcd", "--cpu-share", "--cpu-cores", "--chunk-rays"},
+                       "--lanes-compute", "--lanes-impl", "--host", "--trace", "--trace-steps", "--vcd", "--cpu-share", "--cpu-cores", "--chunk-rays"},
                  "applies to --impl board only (the simulated RC2000); this run answers visibility in software");
   } else {
     refuse_given(cmd, {"--visibility"}, "applies to --impl software only: with --impl board the board's lanes answer "
@@ -309,11 +316,21 @@ void check_run_options(const CLI::App& cmd, const RunOptions& o) {
                                   "--visibility fixed or fast, or --impl board, use it");
   }
   // The fast backend is the only part of a run with threads of its own: the software run's with
-  // --visibility fast, the board's answer unless --lanes-compute or --arith float:E,M.
-  const bool fast = !float_arith(o) && (o.impl == Impl::board ? !o.lanes_compute : o.visibility == SoftwareVisibility::fast);
+  // --visibility fast, the board's answer unless its lanes compute (--lanes-compute, --lanes-impl rtl)
+  // or --arith float:E,M.
+  const bool fast = !float_arith(o) && (o.impl == Impl::board ? !o.lanes_compute && o.lanes_impl != LanesImpl::rtl
+                                                              : o.visibility == SoftwareVisibility::fast);
   if (!fast) {
     refuse_given(cmd, {"--jobs"}, "applies only where the fast backend runs (--impl software --visibility fast, or --impl "
-                                  "board without --lanes-compute or --arith float:E,M): this run has no threads of its own");
+                                  "board without --lanes-compute, --lanes-impl rtl or --arith float:E,M): this run has no threads of its own");
+  }
+  if (o.lanes_impl == LanesImpl::rtl) {
+    if (o.impl != Impl::board) refuse_option("--lanes-impl", "applies to --impl board only (the simulated RC2000's lanes)");
+    if (o.arith.is_float())
+      refuse_option("--lanes-impl", "rtl: the RTL pipeline is fixed-point; it does not apply with --arith " + o.arith.name());
+    refuse_given(cmd, {"--lanes-compute"}, "does not apply with --lanes-impl rtl (the RTL lanes always compute)");
+    if (const std::string why = rtl::rtl_unavailable_reason(o.bits); !why.empty())
+      refuse_option("--lanes-impl", "rtl: " + why);
   }
   if (o.trace_path.empty()) {
     refuse_given(cmd, {"--trace-steps"}, "applies only with --trace (the steps it records)");
@@ -416,6 +433,10 @@ void add_run_command(CLI::App& app, int& exit_code) {
                     "card a share of the faces, every segment)");
   add_choice_option(*cmd, "--card-bus", b.card_bus,
                     "Board, several cards: shared (one PCI bus, transfers contend) or separate (each card on its own bus)");
+  add_choice_option(*cmd, "--lanes-impl", options->lanes_impl,
+                    "Board: the lanes' implementation: cpp (the C++ pipeline) or rtl (the Verilog pipeline rtl/mt_pipeline.v, "
+                    "Verilated, one model per lane, clocked cycle by cycle in the cycle-level wrapper: slow, small scenes; "
+                    "docs/board.md, RTL lanes)");
   cmd->add_flag("--lanes-compute", options->lanes_compute,
                 "Board: the lanes test every ray against every face (slow) instead of copying the bit-identical "
                 "culled answer; timing and results are the same");

@@ -18,6 +18,9 @@ namespace rc {
 
 // Who answers visibility: a software backend or the simulated RC2000.
 enum class Impl { software, board };
+// The board's lanes: the C++ pipeline (pipeline/fixed_mt.h) or the Verilated RTL (rtl/mt_pipeline.v)
+// in the cycle-level wrapper (docs/board.md, "RTL lanes").
+enum class LanesImpl { cpp, rtl };
 
 }  // namespace rc
 
@@ -25,6 +28,12 @@ template <>
 struct rc::ChoiceNames<rc::Impl> {
   static constexpr std::string_view what = "implementation";
   static constexpr std::array<std::string_view, 2> names = {"software", "board"};
+};
+
+template <>
+struct rc::ChoiceNames<rc::LanesImpl> {
+  static constexpr std::string_view what = "lanes implementation";
+  static constexpr std::array<std::string_view, 2> names = {"cpp", "rtl"};
 };
 
 namespace rc {
@@ -36,6 +45,7 @@ struct RunOptions {
   SoftwareVisibility visibility = SoftwareVisibility::float_double;  // software runs' backend
   pipeline::Arithmetic arith;        // --arith, parsed once: fixed (width --bits) or float:E,M (float lanes on the board)
   bool lanes_compute = false;        // board: the lanes test every ray against every face themselves
+  LanesImpl lanes_impl = LanesImpl::cpp;  // board: rtl = the Verilated RTL lanes in the cycle-level wrapper
   int bits = 15;                     // fractional bits of the fixed-point pipeline
   // --impl board: device, host, lanes, banks, cards and their split and bus, --vcd (board.vcd_path:
   // where the VCD ends up), parsed straight into it.

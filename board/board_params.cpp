@@ -45,6 +45,14 @@ BoardParams make_board_params(const DeviceProfile& p, const BoardChoices& c) {
   b.bridge_latency_cycles = p.bridge_latency_cycles;
   b.irq_latency = c.irq_latency;
   b.model = c.model;
+  if (c.clocked_lanes) {
+    if (c.float_format)
+      throw std::invalid_argument("the " + c.clocked_lanes.name + " lanes are fixed-point: they do not apply to float lanes (" +
+                                  c.float_format->to_string() + ")");
+    if (c.model != WrapperModel::cycle)
+      throw std::invalid_argument("the " + c.clocked_lanes.name + " lanes need the cycle-level wrapper model");
+    b.clocked_lanes = c.clocked_lanes;
+  }
   b.results = p.results;
   b.result_store_bits = b.fit.block_ram_bits_available - std::min(b.fit.block_ram_bits, b.fit.block_ram_bits_available);
   if (b.results == ResultStore::on_chip && b.result_store_bits == 0) {

@@ -8,6 +8,7 @@
 
 #include <systemc>
 
+#include "board/clocked_lanes.h"
 #include "board/design_fit.h"
 #include "board/device_profile.h"
 #include "board/pass_timing.h"
@@ -32,6 +33,9 @@ struct BoardParams {
   unsigned bridge_latency_cycles = 2;  // PCI cycles through the bridge to the local bus
   sc_core::sc_time irq_latency = sc_core::SC_ZERO_TIME;  // device raises -> host thread runs
   WrapperModel model = WrapperModel::fast;
+  // Set: the cycle-level wrapper's lanes are these (the RTL lanes), not the C++ stage functions
+  // (docs/board.md, "RTL lanes"). Needs model == cycle and fixed-point lanes.
+  ClockedLanesFactory clocked_lanes;
   ResultStore results = ResultStore::bank;  // where a pass's blocked bits accumulate (bank_layout.h)
   std::uint64_t result_store_bits = 0;  // on chip: block RAM bits left for them (device's minus the design's)
   bool report_at_end = false;          // print the tlm parts' summaries at sc_stop()
@@ -45,11 +49,13 @@ struct BoardChoices {
   std::optional<pipeline::FloatFormat> float_format;  // set: float lanes (docs/board.md, "Float lanes")
   std::uint64_t bank_capacity_bytes = 0; // 0: the profile's
   WrapperModel model = WrapperModel::fast;
+  ClockedLanesFactory clocked_lanes;     // set: lanes plugged in (BoardParams::clocked_lanes)
   sc_core::sc_time irq_latency = sc_core::SC_ZERO_TIME;
 };
 
 // Throws std::invalid_argument if the lanes do not fit the device (design_fit.h), the profile
-// has no clock for the lane count, or results on chip find no block RAM left. Float lanes: the
+// has no clock for the lane count, or results on chip find no block RAM left, or plugged-in lanes are
+// asked for with the fast wrapper or float lanes. Float lanes: the
 // design's resources and clock are fit_float_design's ESTIMATE; the pipeline latency stays the
 // profile's (the float operators' latencies are not sourced; docs/board.md, "Float lanes").
 BoardParams make_board_params(const DeviceProfile& profile, const BoardChoices& choices);

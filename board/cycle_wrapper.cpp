@@ -11,10 +11,16 @@ constexpr const char* kMsgType = "rc/board/CycleWrapper";
 CycleWrapper::CycleWrapper(const sc_core::sc_module_name& name, const BankLayout& layout,
                            const WrapperTiming& timing, ControlRegs& regs, tlmx::IrqLine& irq,
                            std::vector<tlmx::DmiActivitySink*> bank_sinks, std::vector<std::uint64_t> bank_addresses,
-                           WrapperSignals signals)
+                           WrapperSignals signals, std::unique_ptr<ClockedLanes> lanes)
     : WrapperBase(name, layout, timing, regs, irq, std::move(bank_sinks), std::move(bank_addresses), signals),
-      clock("clock", timing.device_period, 0.5, sc_core::SC_ZERO_TIME, true) {
+      clock("clock", timing.device_period, 0.5, sc_core::SC_ZERO_TIME, true),
+      m_plugged(std::move(lanes)) {
   if (timing.pipeline_latency < 4) SC_REPORT_ERROR(kMsgType, "the cycle-level pipeline needs a latency of at least 4");
+  if (m_plugged) {
+    if (layout.float_format) SC_REPORT_ERROR(kMsgType, "plugged-in lanes are fixed-point: not with float lanes");
+    if (m_plugged->lanes() != layout.lanes.value()) SC_REPORT_ERROR(kMsgType, "plugged-in lanes: not as many as the layout's");
+    m_staged.assign(layout.lanes.value(), ClockedLaneInput{});
+  }
   SC_HAS_PROCESS(CycleWrapper);
   SC_METHOD(on_edge);
   sensitive << clock.posedge_event();
@@ -33,9 +39,15 @@ void CycleWrapper::on_edge() {
     if (!m_regs.start_pending() || m_regs.start_time() > sc_core::sc_time_stamp()) return;
     begin();
   }
+  if (m_plugged) clock_plugged_lanes();
   advance_pipeline();
   controller();
   ++m_cycle;
+}
+
+void CycleWrapper::clock_plugged_lanes() {
+  m_plugged->clock_edge(m_staged);
+  for (ClockedLaneInput& in : m_staged) in.valid = false;
 }
 
 void CycleWrapper::begin() {
@@ -221,7 +233,13 @@ bool CycleWrapper::try_issue(unsigned g) {
     const pipeline::FixedVec3 end{coordinate_field(word[0], slot, m_layout.field_bits),
                                   coordinate_field(word[1], slot, m_layout.field_bits),
                                   coordinate_field(word[2], slot, m_layout.field_bits)};
-    if (m_layout.float_format) {
+    if (m_plugged) {
+      ClockedLaneInput& in = m_staged[group.first_lane + slot];
+      in.valid = true;
+      in.start = m_in.start;
+      in.end = end;
+      in.face = m_face_record;
+    } else if (m_layout.float_format) {
       const pipeline::FloatFormat format = *m_layout.float_format;
       lane.fdirection = pipeline::segment_direction(m_float_start, float_point_from_codes(end.x, end.y, end.z, format),
                                                     format);
@@ -245,6 +263,7 @@ void CycleWrapper::advance_pipeline() {
     write_back(m_pipe.front());
     m_pipe.pop_front();
   }
+  if (m_plugged) return;  // their arithmetic is theirs: write_back reads their output ports
   for (Packet& p : m_pipe) {
     const std::uint64_t age = m_cycle - p.issued;
     if (age != s1 && age != s2 && age != s3) continue;
@@ -270,7 +289,16 @@ void CycleWrapper::write_back(const Packet& p) {
   std::uint64_t hits = 0;
   for (unsigned slot = 0; slot < p.lanes.size(); ++slot) {
     const Lane& lane = p.lanes[slot];
-    const bool hit = m_layout.float_format ? lane.fs3.hit : lane.s3.hit;
+    bool hit = m_layout.float_format ? lane.fs3.hit : lane.s3.hit;
+    if (m_plugged && lane.valid) {
+      const unsigned at = group.first_lane + slot;
+      if (!m_plugged->out_valid(at)) {
+        SC_REPORT_ERROR(kMsgType, ("plugged-in lane " + std::to_string(at) + ": no result at cycle " + std::to_string(m_cycle) +
+                                   ", " + std::to_string(m_timing.pipeline_latency) + " cycles after its input")
+                                      .c_str());
+      }
+      hit = m_plugged->out_hit(at);
+    }
     if (lane.valid && !lane.masked && hit) hits |= std::uint64_t(1) << slot;
   }
   const std::uint64_t at = m_in.split.result_base[p.group] + p.index;

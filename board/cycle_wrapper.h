@@ -22,6 +22,12 @@
 // decoded from their bit patterns (word_format.h) and the lanes run float_mt's stages at the same
 // stage positions; timing is the same machine on the float layout (docs/board.md, "Float lanes").
 //
+// Plugged-in lanes (`lanes` given, e.g. the RTL lanes: board/clocked_lanes.h): the same machine, but the
+// lanes' arithmetic is theirs. A packet issued in cycle c is presented at their input ports and sampled
+// at the next edge (c + 1); every edge of a running pass clocks them (idle lanes: valid low), and the
+// packet's hit bits are read from their output ports at edge c + L, when the C++ lanes write back. A lane
+// whose out_valid is not high then (a latency other than L) is an error naming the lane and cycle.
+//
 // Stage positions (assumption: the paper gives only the total, 37): the direction end - start is
 // formed in the input cycle (age 0); stage 1 completes at age 12, stage 2 at age 24, stage 3 (and the
 // decision) at age 36, and the result is written at age 37, i.e. ages (L-1)/3, 2(L-1)/3, L-1, L.
@@ -29,8 +35,10 @@
 
 #include <cstdint>
 #include <deque>
+#include <memory>
 #include <vector>
 
+#include "board/clocked_lanes.h"
 #include "board/wrapper_base.h"
 #include "pipeline/fixed_mt.h"
 #include "pipeline/float_mt.h"
@@ -43,7 +51,8 @@ class CycleWrapper : public WrapperBase {
 
   CycleWrapper(const sc_core::sc_module_name& name, const BankLayout& layout, const WrapperTiming& timing,
                ControlRegs& regs, tlmx::IrqLine& irq, std::vector<tlmx::DmiActivitySink*> bank_sinks,
-               std::vector<std::uint64_t> bank_addresses, WrapperSignals signals = {});
+               std::vector<std::uint64_t> bank_addresses, WrapperSignals signals = {},
+               std::unique_ptr<ClockedLanes> lanes = nullptr);
 
  private:
   enum class Phase { Start, NextFace, Setup, Fetch, Stream, Drain, Tail };
@@ -79,6 +88,7 @@ class CycleWrapper : public WrapperBase {
   void write_back(const Packet& p);
   bool drain();  // one drain cycle; true when every result word has been written
   void finish();
+  void clock_plugged_lanes();  // plugged-in lanes: one edge with the inputs staged last cycle
   std::uint64_t allowed(std::uint64_t t) const;  // bank accesses by the end of phase cycle t
 
   bool m_running = false;
@@ -103,6 +113,9 @@ class CycleWrapper : public WrapperBase {
   std::uint64_t m_drain_first = 0;  // cycle of the drain's first cycle (the pipeline is empty by then)
   std::uint64_t m_drain_word = 0, m_drain_used = 0;  // next word to write, bank accesses so far
   std::vector<unsigned> m_word_group;  // group of each result word
+  // Plugged-in lanes: the lanes, the inputs staged this cycle for the next edge.
+  std::unique_ptr<ClockedLanes> m_plugged;
+  std::vector<ClockedLaneInput> m_staged;
 };
 
 }  // namespace rc::board

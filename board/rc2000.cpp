@@ -110,7 +110,9 @@ Rc2000::Rc2000(const sc_core::sc_module_name& name, const BoardParams& params, B
   }
   const WrapperSignals signals{&start_signal, &busy_signal, &done_signal, &irq_signal};
   if (m_params.model == WrapperModel::cycle)
-    m_wrapper = std::make_unique<CycleWrapper>("wrapper", m_layout, m_params.timing, regs, irq, sinks, addresses, signals);
+    m_wrapper = std::make_unique<CycleWrapper>(
+        "wrapper", m_layout, m_params.timing, regs, irq, sinks, addresses, signals,
+        m_params.clocked_lanes ? m_params.clocked_lanes.make(m_layout.lanes.value(), m_params.bits) : nullptr);
   else
     m_wrapper = std::make_unique<FastWrapper>("wrapper", m_layout, m_params.timing, regs, irq, sinks, addresses, signals);
   bind_hop(m_wrapper->out, local.in, hops.wrapper_to_local);

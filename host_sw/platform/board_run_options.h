@@ -50,6 +50,9 @@ struct BoardRunOptions {
   std::uint64_t bank_capacity_bytes = 0;  // 0: the profile's (tests force batching with small banks)
   bool allow_batching = true;
   board::WrapperModel model = board::WrapperModel::fast;  // cycle: tests on small scenes only
+  // Set: lanes plugged into the cycle-level wrapper (model must be cycle), e.g. the RTL lanes that the
+  // application wires in (rtl/lanes/rtl_lanes.h; docs/board.md, "RTL lanes"). Empty: the C++ lanes.
+  board::ClockedLanesFactory clocked_lanes;
   VisibilityBackend* oracle = nullptr;  // lanes' answer from a bit-identical host model (BoardVisibilityOptions)
   bool print_summaries = false;         // the tlm parts' one-line summaries at the end
   std::function<void(const StepProgress&)> on_progress;  // after every step (host thread)

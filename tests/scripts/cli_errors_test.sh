@@ -84,11 +84,16 @@ refused "$work/o" "--patch-size 1e-09: face 0: patches of at most 1e-09 need mor
 
 echo "2. options that do not apply"
 for option in "--lanes 2" "--banks 6" "--concurrent" "--device xc2v6000" "--host athlon-mp-2600" "--trace $work/t.json" \
-              "--vcd $work/v.vcd" "--cards 2" "--lanes-compute"; do
+              "--vcd $work/v.vcd" "--cards 2" "--lanes-compute" "--lanes-impl rtl"; do
   # shellcheck disable=SC2086  # the option and its value are two words
   refused "$work/o" "${option%% *} applies to --impl board only" run "${tiny[@]}" $option --out "$work/o"
 done
 refused "$work/o" "--visibility applies to --impl software only" "${board[@]}" --visibility fixed --out "$work/o"
+refused "$work/o" "--lanes-impl rtl: the RTL pipeline is fixed-point; it does not apply with --arith float:5,10" \
+  "${board[@]}" --lanes-impl rtl --arith float:5,10 --out "$work/o"
+refused "$work/o" "--lanes-impl rtl: " "${board[@]}" --lanes-impl rtl --bits 8 --out "$work/o"  # no model at 8 bits (or no Verilator)
+refused "$work/o" "--lanes-compute does not apply with --lanes-impl rtl" "${board[@]}" --lanes-impl rtl --lanes-compute --out "$work/o"
+refused "$work/o" "--lanes-impl: verilog not in {cpp,rtl}" "${board[@]}" --lanes-impl verilog --out "$work/o"
 refused "$work/o" "--bits does not apply with --visibility float" run "${tiny[@]}" --bits 12 --out "$work/o"
 refused "$work/o" "--bits does not apply with --arith float:5,10" run "${tiny[@]}" --arith float:5,10 --bits 12 --out "$work/o"
 refused "$work/o" "--steps must be at least 1; omit it to run to convergence" run --steps 0 --quiet --out "$work/o"

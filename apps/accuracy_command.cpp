@@ -71,7 +71,7 @@ WidthResult measure(const Scene& scene, const SolverOptions& solver, const Solve
   return r;
 }
 
-std::string csv_text(const std::vector<WidthResult>& rows, int float_steps) {
+std::string width_rows_csv(const std::vector<WidthResult>& rows, int float_steps) {
   std::ostringstream out;
   out << "arithmetic,bits,coordinate_bits,bytes_per_intersection,steps,float_steps,rmse,max_abs_error,relative_rmse,"
          "relative_max_error,segments,decisions_differ,fixed_blocks_float_clear,float_blocks_fixed_clear\n";
@@ -104,7 +104,7 @@ int run_accuracy(const AccuracyOptions& o) {
     rows.push_back(measure(scene, o.solver, reference, format, 0));
   }
   progress.finish();
-  outputs.add(csv, csv_text(rows, reference.steps));
+  outputs.add(csv, width_rows_csv(rows, reference.steps));
   outputs.write();
   const bool drawn = plot("accuracy.py", csv, png);
 

@@ -34,7 +34,7 @@ std::string image_name(const PatchingRun& r) { return r.kind + "_L" + std::to_st
 
 std::string png_bytes(const HdrImage& image) { return encode_png(tone_map(image, 0.18)); }
 
-std::string csv_text(const AdaptiveResult& a) {
+std::string adaptive_csv(const AdaptiveResult& a) {
   std::ostringstream out;
   out << "kind,level,patches,solves,final_steps,wall_seconds,simulated_seconds,final_simulated_seconds,"
          "relative_rmse,relative_max,image_difference,image\n";
@@ -50,7 +50,7 @@ std::string csv_text(const AdaptiveResult& a) {
   return out.str();
 }
 
-std::string markdown(const AdaptiveOptions& o, const AdaptiveResult& a, const std::string& pictures_rel) {
+std::string adaptive_markdown(const AdaptiveOptions& o, const AdaptiveResult& a, const std::string& pictures_rel) {
   std::ostringstream md;
   char line[2048];
   md << "# Adaptive patches against uniform patches\n\n"
@@ -113,12 +113,12 @@ int run_adaptive(const AdaptiveOptions& o) {
   ProgressLine progress(!o.quiet);
   const AdaptiveResult a = run_adaptive_study(o, [&](const std::string& what) { progress.update("%-60s", what.c_str()); });
   progress.finish();
-  const std::string table = csv_text(a);
+  const std::string table = adaptive_csv(a);
   outputs.add(csv, table);
   outputs.add(pictures + "/reference.png", png_bytes(a.reference_image));
   for (const PatchingRun& r : a.runs) outputs.add(pictures + "/" + image_name(r), png_bytes(r.image));
   if (!o.docs_dir.empty()) {
-    outputs.add(markdown_path, markdown(o, a, "adaptive-patches"));
+    outputs.add(markdown_path, adaptive_markdown(o, a, "adaptive-patches"));
     outputs.add(pictures + "/adaptive.csv", table);
   }
   outputs.write();

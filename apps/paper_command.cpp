@@ -155,9 +155,9 @@ ordered_json paper_json(const PaperDocument& d) {
 }
 
 // Numbers as paper.json spells them (shortest text that reads back to the same double).
-std::string number(double x) { return ordered_json(x).dump(); }
+std::string json_number_text(double x) { return ordered_json(x).dump(); }
 
-std::string csv_text(const PaperDocument& d) {
+std::string paper_csv(const PaperDocument& d) {
   std::ostringstream out;
   out << "record,faces,patches,steps,implementation,seconds,paper_seconds,relative_residual,spread_min_seconds,"
          "spread_max_seconds,fpga_busy_seconds,speedup_vs_software,device,lanes,clock_mhz,intersections_per_s,"
@@ -165,25 +165,25 @@ std::string csv_text(const PaperDocument& d) {
          "interval_low_seconds,interval_high_seconds\n";
   for (const PaperTableRow& s : d.rows) {
     out << "scene," << s.scene.faces << ',' << s.scene.patches << ',' << s.scene.steps << ',' << to_string(s.implementation)
-        << ',' << number(s.seconds) << ',' << (s.calibration ? number(s.paper_seconds()) : "") << ','
-        << (s.calibration ? number(s.relative_residual()) : "") << ','
-        << (s.spread.empty() ? "" : number(s.spread_min_seconds)) << ','
-        << (s.spread.empty() ? "" : number(s.spread_max_seconds)) << ',' << number(s.fpga_busy_seconds) << ','
-        << number(s.speedup_vs_software) << ",,,,,,,,,,,,,,,,"
-        << (s.spread.empty() ? "" : number(s.interval_low_seconds)) << ','
-        << (s.spread.empty() ? "" : number(s.interval_high_seconds)) << "\n";
+        << ',' << json_number_text(s.seconds) << ',' << (s.calibration ? json_number_text(s.paper_seconds()) : "") << ','
+        << (s.calibration ? json_number_text(s.relative_residual()) : "") << ','
+        << (s.spread.empty() ? "" : json_number_text(s.spread_min_seconds)) << ','
+        << (s.spread.empty() ? "" : json_number_text(s.spread_max_seconds)) << ',' << json_number_text(s.fpga_busy_seconds) << ','
+        << json_number_text(s.speedup_vs_software) << ",,,,,,,,,,,,,,,,"
+        << (s.spread.empty() ? "" : json_number_text(s.interval_low_seconds)) << ','
+        << (s.spread.empty() ? "" : json_number_text(s.interval_high_seconds)) << "\n";
   }
   for (std::size_t i = 0; i < d.paper_rule.size(); ++i) {
     for (const board::PaperEstimate* e : {&d.paper_rule[i], &d.model[i]}) {
-      out << "estimate,,,,,,,,,,," << number(e->speedup_vs_software) << ',' << e->device << ',' << e->lanes << ','
-          << number(e->clock_mhz) << ',' << number(e->intersections_per_s) << ',' << number(e->bytes_per_cycle) << ','
-          << number(e->gb_per_s) << ",\"" << e->estimate << "\"," << board::to_string(e->rule) << ",,,,,,,,,\n";
+      out << "estimate,,,,,,,,,,," << json_number_text(e->speedup_vs_software) << ',' << e->device << ',' << e->lanes << ','
+          << json_number_text(e->clock_mhz) << ',' << json_number_text(e->intersections_per_s) << ',' << json_number_text(e->bytes_per_cycle) << ','
+          << json_number_text(e->gb_per_s) << ",\"" << e->estimate << "\"," << board::to_string(e->rule) << ",,,,,,,,,\n";
     }
   }
-  auto nj = [](double x) { return std::isnan(x) ? std::string() : number(x); };
+  auto nj = [](double x) { return std::isnan(x) ? std::string() : json_number_text(x); };
   for (const energy::FullRateEnergy& e : d.energy) {
-    out << "energy,,,,,,,,,,,," << e.device << ',' << e.lanes << ',' << number(e.clock_mhz) << ','
-        << number(e.intersections_per_s) << ",,,\"" << e.estimate << "\",model," << nj(e.fpga_nj) << ',' << nj(e.sram_nj)
+    out << "energy,,,,,,,,,,,," << e.device << ',' << e.lanes << ',' << json_number_text(e.clock_mhz) << ','
+        << json_number_text(e.intersections_per_s) << ",,,\"" << e.estimate << "\",model," << nj(e.fpga_nj) << ',' << nj(e.sram_nj)
         << ',' << nj(e.pci_nj) << ',' << nj(e.card_nj) << ',' << nj(e.host_waiting_nj) << ',' << nj(e.system_nj) << ','
         << nj(e.software_nj) << ",,\n";
   }
@@ -312,7 +312,7 @@ int run_paper(const PaperOptions& o) {
   const std::string config_dir = profiles::default_config_dir() + "/";
   document.variants = o.variants.rfind(config_dir, 0) == 0 ? "configs/" + o.variants.substr(config_dir.size()) : o.variants;
   outputs.add(json_path, pretty_json(paper_json(document)));
-  outputs.add(csv_path, csv_text(document));
+  outputs.add(csv_path, paper_csv(document));
   outputs.add(o.out_dir + "/roofline.csv", roofline_csv(document.rooflines));  // paper.py draws it beside paper.csv
   if (!o.docs_dir.empty()) outputs.add(markdown_path, paper_markdown(document));
   outputs.write();

@@ -17,7 +17,7 @@ std::string format(const char* pattern, double a, double b = 0) {
   return text;
 }
 
-ordered_json number(double v) { return std::isfinite(v) ? ordered_json(v) : ordered_json(); }
+ordered_json finite_or_null(double v) { return std::isfinite(v) ? ordered_json(v) : ordered_json(); }
 
 // The paper's rule again at the clock the device's design was measured at, when that differs from
 // Table 1's: the profile's clock for the most lanes it lists (sec 5.5's two lanes on the XC2V6000).
@@ -116,17 +116,17 @@ ordered_json sec56_devices_json(const std::vector<Sec56DeviceRow>& rows) {
                       {"lanes", e.lanes},
                       {"clock_mhz", e.clock_mhz},
                       {"clock_assumption", e.clock_assumption},
-                      {"intersections_per_s", number(e.intersections_per_s)},
-                      {"bytes_per_intersection", number(e.bytes_per_intersection)},
-                      {"bytes_per_cycle", number(e.bytes_per_cycle)},
-                      {"gb_per_s", number(e.gb_per_s)},
-                      {"speedup_vs_software", number(e.speedup_vs_software)},
+                      {"intersections_per_s", finite_or_null(e.intersections_per_s)},
+                      {"bytes_per_intersection", finite_or_null(e.bytes_per_intersection)},
+                      {"bytes_per_cycle", finite_or_null(e.bytes_per_cycle)},
+                      {"gb_per_s", finite_or_null(e.gb_per_s)},
+                      {"speedup_vs_software", finite_or_null(e.speedup_vs_software)},
                       {"note", e.note}};
     if (e.rule == board::EstimateRule::Model) {
       j["board_assumption"] = row.board;
       j["bound"] = row.bound;
-      j["workload_seconds"] = number(row.run_seconds);
-      j["nanojoules_per_intersection"] = number(row.nanojoules_per_test);
+      j["workload_seconds"] = finite_or_null(row.run_seconds);
+      j["nanojoules_per_intersection"] = finite_or_null(row.nanojoules_per_test);
       j["designs"] = row.designs;
       j["feasible"] = row.feasible;
       j["simulated"] = row.simulated;

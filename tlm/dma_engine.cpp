@@ -8,13 +8,13 @@
 namespace rc::tlmx {
 
 namespace {
-constexpr const char* kMsgType = "rc/tlmx/DmaEngine";
+constexpr const char* kDmaEngineMsgType = "rc/tlmx/DmaEngine";
 }
 
 DmaEngine::DmaEngine(const sc_core::sc_module_name& name, const DmaConfig& config)
     : sc_core::sc_module(name), out("out"), m_config(config) {
   if (m_config.burst_bytes == 0 || m_config.burst_bytes > UINT32_MAX)
-    SC_REPORT_ERROR(kMsgType, "burst_bytes must be in [1, 2^32)");  // a payload length is 32-bit
+    SC_REPORT_ERROR(kDmaEngineMsgType, "burst_bytes must be in [1, 2^32)");  // a payload length is 32-bit
   SC_HAS_PROCESS(DmaEngine);
   SC_THREAD(worker);
 }
@@ -44,7 +44,7 @@ tlm::tlm_response_status DmaEngine::burst(tlm::tlm_generic_payload& trans, const
 template <class Sync>
 DmaResult DmaEngine::run_bursts(tlm::tlm_generic_payload& trans, const DmaRequest& request, sc_core::sc_time& local,
                                 Sync&& sync) {
-  if (request.host == nullptr && request.bytes != 0) SC_REPORT_ERROR(kMsgType, "transfer without a host buffer");
+  if (request.host == nullptr && request.bytes != 0) SC_REPORT_ERROR(kDmaEngineMsgType, "transfer without a host buffer");
   if (request.no_data) trans.set_extension(&m_no_data);
   DmaResult result;
   result.start = sc_core::sc_time_stamp() + local;
@@ -121,7 +121,7 @@ std::string DmaEngine::summary() const {
 }
 
 void DmaEngine::end_of_simulation() {
-  if (m_config.report_at_end) SC_REPORT_INFO(kMsgType, summary().c_str());
+  if (m_config.report_at_end) SC_REPORT_INFO(kDmaEngineMsgType, summary().c_str());
 }
 
 }  // namespace rc::tlmx

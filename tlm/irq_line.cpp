@@ -5,7 +5,7 @@
 namespace rc::tlmx {
 
 namespace {
-constexpr const char* kMsgType = "rc/tlmx/IrqLine";
+constexpr const char* kIrqLineMsgType = "rc/tlmx/IrqLine";
 }
 
 IrqLine::IrqLine(const sc_core::sc_module_name& name, const IrqLineConfig& config)
@@ -66,7 +66,7 @@ std::string IrqLine::summary() const {
 }
 
 void IrqLine::end_of_simulation() {
-  if (m_config.report_at_end) SC_REPORT_INFO(kMsgType, summary().c_str());
+  if (m_config.report_at_end) SC_REPORT_INFO(kIrqLineMsgType, summary().c_str());
 }
 
 }  // namespace rc::tlmx

@@ -9,16 +9,16 @@
 namespace rc::tlmx {
 
 namespace {
-constexpr const char* kMsgType = "rc/tlmx/PciBus";
+constexpr const char* kPciBusMsgType = "rc/tlmx/PciBus";
 }
 
 PciBus::PciBus(const sc_core::sc_module_name& name, const PciBusConfig& config)
     : sc_core::sc_module(name), in("in"), out("out"), m_config(config), m_peq("responses", this, &PciBus::deliver) {
   if (m_config.width_bits == 0 || m_config.width_bits % 8 != 0)
-    SC_REPORT_ERROR(kMsgType, "width_bits must be a positive multiple of 8 (PCI: 32 or 64)");
+    SC_REPORT_ERROR(kPciBusMsgType, "width_bits must be a positive multiple of 8 (PCI: 32 or 64)");
   if (!(m_config.burst_efficiency > 0.0 && m_config.burst_efficiency <= 1.0))
-    SC_REPORT_ERROR(kMsgType, "burst_efficiency must be in (0, 1]");
-  if (m_config.max_burst_bytes == 0) SC_REPORT_ERROR(kMsgType, "max_burst_bytes must be positive");
+    SC_REPORT_ERROR(kPciBusMsgType, "burst_efficiency must be in (0, 1]");
+  if (m_config.max_burst_bytes == 0) SC_REPORT_ERROR(kPciBusMsgType, "max_burst_bytes must be positive");
   in.register_b_transport(this, &PciBus::b_transport);
   in.register_nb_transport_fw(this, &PciBus::nb_transport_fw);
   in.register_transport_dbg(this, &PciBus::transport_dbg);
@@ -47,7 +47,7 @@ sc_core::sc_time PciBus::transfer_time(std::uint64_t bytes) const {
 
 sc_core::sc_time PciBus::programmed_io_time(std::uint64_t bytes, unsigned access_bytes, bool read,
                                             const sc_core::sc_time& read_round_trip) const {
-  if (access_bytes == 0) SC_REPORT_ERROR(kMsgType, "programmed I/O needs access_bytes > 0");
+  if (access_bytes == 0) SC_REPORT_ERROR(kPciBusMsgType, "programmed I/O needs access_bytes > 0");
   const std::uint64_t accesses = ceil_div(bytes, access_bytes);
   // In time units: one access is its burst's cycles plus a read's round trip (what cycles() and
   // sc_time's + compute, one conversion instead of three on every programmed I/O transaction).
@@ -77,7 +77,7 @@ sc_core::sc_time PciBus::master_abort(tlm::tlm_generic_payload& trans) {
   std::ostringstream msg;
   msg << name() << ": no BAR window holds address 0x" << std::hex << trans.get_address() << " + 0x"
       << bytes_touched(trans) << " bytes (master abort)";
-  SC_REPORT_WARNING(kMsgType, msg.str().c_str());
+  SC_REPORT_WARNING(kPciBusMsgType, msg.str().c_str());
   trans.set_response_status(tlm::TLM_ADDRESS_ERROR_RESPONSE);
   return cycles(m_config.master_abort_cycles, m_config.clock_period);
 }
@@ -142,7 +142,7 @@ PciBus::AtPort& PciBus::at_port(int port) {
 
 void PciBus::protocol_error(int port, const std::string& what) const {
   const std::string msg = std::string(name()) + ": in[" + std::to_string(port) + "]: " + what;
-  SC_REPORT_ERROR(kMsgType, msg.c_str());
+  SC_REPORT_ERROR(kPciBusMsgType, msg.c_str());
 }
 
 tlm::tlm_sync_enum PciBus::nb_transport_fw(int port, tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase,
@@ -285,12 +285,12 @@ void PciBus::invalidate_direct_mem_ptr(int, sc_dt::uint64, sc_dt::uint64) {}
 
 void PciBus::share_arbitration_with(PciBus& owner) {
   if (sc_core::sc_get_status() != sc_core::SC_ELABORATION && sc_core::sc_get_status() != sc_core::SC_BEFORE_END_OF_ELABORATION) {
-    SC_REPORT_ERROR(kMsgType, (std::string(name()) + ": share_arbitration_with must be called during elaboration").c_str());
+    SC_REPORT_ERROR(kPciBusMsgType, (std::string(name()) + ": share_arbitration_with must be called during elaboration").c_str());
   }
   PciBus* root = owner.m_arbiter;  // a chain of sharing ends at the bus that owns the arbitration
-  if (root == this) SC_REPORT_ERROR(kMsgType, (std::string(name()) + ": cannot share arbitration with itself").c_str());
+  if (root == this) SC_REPORT_ERROR(kPciBusMsgType, (std::string(name()) + ": cannot share arbitration with itself").c_str());
   if (m_sharers != 0) {
-    SC_REPORT_ERROR(kMsgType, (std::string(name()) + ": other buses already share this bus's arbitration").c_str());
+    SC_REPORT_ERROR(kPciBusMsgType, (std::string(name()) + ": other buses already share this bus's arbitration").c_str());
   }
   if (m_arbiter != this) --m_arbiter->m_sharers;
   m_arbiter = root;
@@ -318,7 +318,7 @@ void PciBus::end_of_elaboration() {
     if (w.port >= out.size()) {
       const std::string msg = std::string(name()) + ": window '" + w.name + "' maps to out[" +
                               std::to_string(w.port) + "], which is not bound";
-      SC_REPORT_ERROR(kMsgType, msg.c_str());
+      SC_REPORT_ERROR(kPciBusMsgType, msg.c_str());
     }
   }
 }
@@ -354,7 +354,7 @@ std::string PciBus::summary() const {
 }
 
 void PciBus::end_of_simulation() {
-  if (m_config.report_at_end) SC_REPORT_INFO(kMsgType, summary().c_str());
+  if (m_config.report_at_end) SC_REPORT_INFO(kPciBusMsgType, summary().c_str());
 }
 
 }  // namespace rc::tlmx

@@ -8,7 +8,7 @@
 namespace rc::tlmx {
 
 namespace {
-constexpr const char* kMsgType = "rc/tlmx/Router";
+constexpr const char* kRouterMsgType = "rc/tlmx/Router";
 }
 
 Router::Router(const sc_core::sc_module_name& name, const RouterConfig& config)
@@ -32,7 +32,7 @@ void Router::unmapped(tlm::tlm_generic_payload& trans) {
   std::ostringstream msg;
   msg << name() << ": no window holds address 0x" << std::hex << trans.get_address() << " + 0x"
       << bytes_touched(trans) << " bytes";
-  SC_REPORT_WARNING(kMsgType, msg.str().c_str());
+  SC_REPORT_WARNING(kRouterMsgType, msg.str().c_str());
   trans.set_response_status(tlm::TLM_ADDRESS_ERROR_RESPONSE);
 }
 
@@ -68,7 +68,7 @@ Router::Flight* Router::flight_of(const tlm::tlm_generic_payload& trans, const c
   const auto it = m_flights.find(&trans);
   if (it != m_flights.end()) return &it->second;
   const std::string msg = std::string(name()) + ": " + call + " for a transaction this router is not carrying";
-  SC_REPORT_ERROR(kMsgType, msg.c_str());
+  SC_REPORT_ERROR(kRouterMsgType, msg.c_str());
   return nullptr;
 }
 
@@ -83,7 +83,7 @@ tlm::tlm_sync_enum Router::nb_transport_fw(int port, tlm::tlm_generic_payload& t
   if (phase == tlm::END_RESP) return end_response(trans, delay);
   std::ostringstream msg;
   msg << name() << ": in[" << port << "]: phase " << phase << " is not a forward phase of the base protocol";
-  SC_REPORT_ERROR(kMsgType, msg.str().c_str());
+  SC_REPORT_ERROR(kRouterMsgType, msg.str().c_str());
   return tlm::TLM_COMPLETED;
 }
 
@@ -152,7 +152,7 @@ tlm::tlm_sync_enum Router::nb_transport_bw(int port, tlm::tlm_generic_payload& t
   if (phase != tlm::END_REQ) {
     std::ostringstream msg;
     msg << name() << ": out[" << port << "]: phase " << phase << " is not a backward phase of the base protocol";
-    SC_REPORT_ERROR(kMsgType, msg.str().c_str());
+    SC_REPORT_ERROR(kRouterMsgType, msg.str().c_str());
     return tlm::TLM_COMPLETED;
   }
   request_ended(trans, now() + delay);
@@ -171,7 +171,7 @@ void Router::send_end_request(tlm::tlm_generic_payload& trans, tlm::tlm_phase& p
   } else if (answer != tlm::TLM_ACCEPTED) {
     const std::string msg = std::string(name()) + ": in[" + std::to_string(f.in_port) +
                             "]: END_REQ must be answered TLM_ACCEPTED or TLM_COMPLETED";
-    SC_REPORT_ERROR(kMsgType, msg.c_str());
+    SC_REPORT_ERROR(kRouterMsgType, msg.c_str());
   }
 }
 
@@ -209,7 +209,7 @@ tlm::tlm_sync_enum Router::end_response(tlm::tlm_generic_payload& trans, sc_core
   Flight* f = flight_of(trans, "END_RESP");
   if (f == nullptr) return tlm::TLM_COMPLETED;
   if (initiator_hop(f->in_port).open != &trans) {
-    SC_REPORT_ERROR(kMsgType, (std::string(name()) + ": END_RESP for a transaction without an open response").c_str());
+    SC_REPORT_ERROR(kRouterMsgType, (std::string(name()) + ": END_RESP for a transaction without an open response").c_str());
   }
   response_ended(trans, now() + delay);
   end_target_response(trans, delay);
@@ -342,7 +342,7 @@ bool Router::get_direct_mem_ptr(int, tlm::tlm_generic_payload& trans, tlm::tlm_d
     msg << name() << ": window '" << w.name << "': the target's DMI answer for 0x" << std::hex << hit->offset
         << " covers [0x" << dmi.get_start_address() << ", 0x" << dmi.get_end_address()
         << "], which does not hold that address";
-    SC_REPORT_ERROR(kMsgType, msg.str().c_str());
+    SC_REPORT_ERROR(kRouterMsgType, msg.str().c_str());
   }
   dmi.set_start_address(w.base + first);
   dmi.set_end_address(w.base + last);
@@ -367,7 +367,7 @@ void Router::end_of_elaboration() {
     if (w.port >= out.size()) {
       const std::string msg = std::string(name()) + ": window '" + w.name + "' maps to out[" +
                               std::to_string(w.port) + "], which is not bound";
-      SC_REPORT_ERROR(kMsgType, msg.c_str());
+      SC_REPORT_ERROR(kRouterMsgType, msg.c_str());
     }
   }
 }
@@ -380,7 +380,7 @@ std::string Router::summary() const {
 }
 
 void Router::end_of_simulation() {
-  if (m_config.report_at_end) SC_REPORT_INFO(kMsgType, summary().c_str());
+  if (m_config.report_at_end) SC_REPORT_INFO(kRouterMsgType, summary().c_str());
 }
 
 }  // namespace rc::tlmx

@@ -9,7 +9,7 @@
 namespace rc::tlmx {
 
 namespace {
-constexpr const char* kMsgType = "rc/tlmx/SparseDmiCache";
+constexpr const char* kSparseDmiCacheMsgType = "rc/tlmx/SparseDmiCache";
 
 bool allows(const DmiRegion& r, tlm::tlm_command command) {
   return command == tlm::TLM_WRITE_COMMAND ? r.writable : r.readable;
@@ -78,7 +78,7 @@ const DmiRegion& SparseDmiCache::acquire(std::uint64_t address, tlm::tlm_command
     std::ostringstream msg;
     msg << m_owner << ": no DMI " << (command == tlm::TLM_WRITE_COMMAND ? "write" : "read") << " access at 0x"
         << std::hex << address << (granted ? " (the grant does not cover it)" : " (refused)");
-    SC_REPORT_ERROR(kMsgType, msg.str().c_str());
+    SC_REPORT_ERROR(kSparseDmiCacheMsgType, msg.str().c_str());
     throw std::runtime_error(msg.str());  // in case errors were set not to throw: never use the region
   }
   // A new grant replaces whatever it overlaps (a target may grant a larger region after an invalidation).

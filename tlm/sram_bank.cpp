@@ -13,13 +13,13 @@
 namespace rc::tlmx {
 
 namespace {
-constexpr const char* kMsgType = "rc/tlmx/SramBank";
+constexpr const char* kSramBankMsgType = "rc/tlmx/SramBank";
 }
 
 SramBank::SramBank(const sc_core::sc_module_name& name, const SramBankConfig& config)
     : sc_core::sc_module(name), in("in"), m_config(config), m_memory(config.capacity_bytes, config.page_bytes) {
   if (m_config.capacity_bytes == 0 || m_config.word_bytes == 0 || m_config.cycles_per_word == 0)
-    SC_REPORT_ERROR(kMsgType, "capacity_bytes, word_bytes and cycles_per_word must be positive");
+    SC_REPORT_ERROR(kSramBankMsgType, "capacity_bytes, word_bytes and cycles_per_word must be positive");
   in.register_b_transport(this, &SramBank::b_transport);
   in.register_transport_dbg(this, &SramBank::transport_dbg);
   in.register_get_direct_mem_ptr(this, &SramBank::get_direct_mem_ptr);
@@ -94,7 +94,7 @@ tlm::tlm_response_status SramBank::check(const tlm::tlm_generic_payload& trans) 
     std::ostringstream msg;
     msg << name() << ": address 0x" << std::hex << trans.get_address() << " + 0x" << bytes_touched(trans)
         << " bytes is outside the bank (capacity 0x" << m_config.capacity_bytes << ")";
-    SC_REPORT_WARNING(kMsgType, msg.str().c_str());
+    SC_REPORT_WARNING(kSramBankMsgType, msg.str().c_str());
     return tlm::TLM_ADDRESS_ERROR_RESPONSE;
   }
   if (trans.get_byte_enable_ptr() != nullptr && !byte_enables_valid(trans)) {
@@ -223,7 +223,7 @@ std::string SramBank::summary() const {
 }
 
 void SramBank::end_of_simulation() {
-  if (m_config.report_at_end) SC_REPORT_INFO(kMsgType, summary().c_str());
+  if (m_config.report_at_end) SC_REPORT_INFO(kSramBankMsgType, summary().c_str());
 }
 
 }  // namespace rc::tlmx

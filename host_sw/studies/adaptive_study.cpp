@@ -45,7 +45,7 @@ SolverOptions point_solver(const AdaptiveSpec& s) {
   return o;
 }
 
-PatchingSolve solve(const AdaptiveSpec& s, Scene scene) {
+PatchingSolve solve_adaptive(const AdaptiveSpec& s, Scene scene) {
   PatchingSolve p;
   p.scene = std::move(scene);
   p.solver = point_solver(s);
@@ -87,7 +87,7 @@ PatchingRun adaptive_run(const AdaptiveSpec& s, int level, const std::function<v
     }
     progress("adaptive to level " + std::to_string(level) + ": round " + std::to_string(round + 1) + " of " +
              std::to_string(counts.size()) + ", " + std::to_string(scene.patches.size()) + " patches");
-    r.solves.push_back(solve(s, scene));
+    r.solves.push_back(solve_adaptive(s, scene));
   }
   return r;
 }
@@ -144,7 +144,7 @@ AdaptiveResult run_adaptive_study(const AdaptiveSpec& s, const std::function<voi
     PatchingRun uniform;
     uniform.kind = "uniform";
     uniform.level = level;
-    uniform.solves.push_back(solve(s, scene_at(s, level)));
+    uniform.solves.push_back(solve_adaptive(s, scene_at(s, level)));
     result.runs.push_back(std::move(uniform));
     result.runs.push_back(adaptive_run(s, level, progress));
   }

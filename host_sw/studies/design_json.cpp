@@ -11,7 +11,7 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-Json number(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
+Json finite_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
 
 std::string fmt(const char* format, double v) {
   char text[64];
@@ -42,15 +42,15 @@ Json point_json(const DesignPoint& p, const DesignSearchResult& r) {
   j["multipliers"] = to_string(p.design.multipliers);
   j["cards"] = c.cards;
   j["concurrent"] = c.concurrent;
-  j["clock_mhz"] = number(p.row.clock_mhz);
+  j["clock_mhz"] = finite_or_null(p.row.clock_mhz);
   j["simulated_seconds"] = p.row.simulated_seconds;
-  j["speedup_vs_reference"] = r.reference ? number(r.reference->row.simulated_seconds / p.row.simulated_seconds) : Json(nullptr);
-  j["speedup_vs_software"] = number(r.software_seconds / p.row.simulated_seconds);
-  j["energy_joules"] = number(p.row.energy_joules);
-  j["average_watts"] = number(p.row.average_watts);
+  j["speedup_vs_reference"] = r.reference ? finite_or_null(r.reference->row.simulated_seconds / p.row.simulated_seconds) : Json(nullptr);
+  j["speedup_vs_software"] = finite_or_null(r.software_seconds / p.row.simulated_seconds);
+  j["energy_joules"] = finite_or_null(p.row.energy_joules);
+  j["average_watts"] = finite_or_null(p.row.average_watts);
   j["tests"] = p.tests;
   j["tests_per_second"] = p.tests_per_second;
-  j["tests_per_second_while_fpga_busy"] = number(p.row.intersections_per_second_while_busy);
+  j["tests_per_second_while_fpga_busy"] = finite_or_null(p.row.intersections_per_second_while_busy);
   j["bank_bytes_per_test"] = p.bank_bytes_per_test;
   j["pci_bytes_per_test"] = p.pci_bytes_per_test;
   j["bound"] = {{"run", p.bound.run}, {"fpga_stream", p.bound.fpga}, {"fpga_share", p.bound.fpga_share},
@@ -99,8 +99,8 @@ Json design_json(const DesignDocument& doc) {
   j["workload"] = workload_json(r.workload, r.faces, r.patches, r.steps);
   j["constraints"] = {{"max_banks", r.max_banks},
                       {"min_bits", doc.constraints.min_bits},
-                      {"max_energy_joules", number(doc.constraints.max_energy_joules)},
-                      {"max_watts", number(doc.constraints.max_watts)}};
+                      {"max_energy_joules", finite_or_null(doc.constraints.max_energy_joules)},
+                      {"max_watts", finite_or_null(doc.constraints.max_watts)}};
   j["designs"] = r.designs;
   j["infeasible"] = r.infeasible;
   j["pruned_spare_banks"] = r.pruned;

@@ -18,7 +18,7 @@ namespace rc {
 namespace {
 
 template <class T, class Name>
-std::string joined(const std::vector<T>& values, Name name) {
+std::string joined_names(const std::vector<T>& values, Name name) {
   std::string text;
   for (const T& v : values) text += (text.empty() ? "" : ",") + name(v);
   return text;
@@ -82,10 +82,10 @@ std::vector<board::ResultStore> parse_results(const std::string& text) {
 }  // namespace
 
 DesignOptions::DesignOptions()
-    : results(joined(space.results, [](board::ResultStore r) { return std::string(board::to_string(r)); })),
-      bits(joined(space.bits, [](int b) { return std::to_string(b); })),
-      multipliers(joined(space.multipliers, [](Multipliers m) { return std::string(to_string(m)); })),
-      cards(joined(space.cards, [](int c) { return std::to_string(c); })),
+    : results(joined_names(space.results, [](board::ResultStore r) { return std::string(board::to_string(r)); })),
+      bits(joined_names(space.bits, [](int b) { return std::to_string(b); })),
+      multipliers(joined_names(space.multipliers, [](Multipliers m) { return std::string(to_string(m)); })),
+      cards(joined_names(space.cards, [](int c) { return std::to_string(c); })),
       concurrent(concurrency_text(space.concurrent)) {}
 
 void check_design_steps(long long steps) { check_range("--steps", steps, 1, SolverOptions{}.max_steps); }
@@ -127,7 +127,7 @@ void check_scene_file(const std::string& path) {
 void check_form_factor(const std::string& name) {
   const std::vector<std::string> names = form_factor_names();
   if (std::find(names.begin(), names.end(), name) == names.end())
-    throw std::invalid_argument("--form-factor: " + name + " not in {" + joined(names, [](const std::string& n) { return n; }) +
+    throw std::invalid_argument("--form-factor: " + name + " not in {" + joined_names(names, [](const std::string& n) { return n; }) +
                                 "}");
 }
 

@@ -13,7 +13,7 @@ std::string last_part(const std::string& path) {
   return dot == std::string::npos ? path : path.substr(dot + 1);
 }
 
-std::string joined(const std::vector<std::string>& items) {
+std::string comma_joined(const std::vector<std::string>& items) {
   std::string text;
   for (const std::string& s : items) text += (text.empty() ? "" : ", ") + s;
   return text;
@@ -41,10 +41,10 @@ std::string resolve_field(const std::string& path, const std::string& wanted, co
   if (by_leaf.size() == 1) return by_leaf.front();
   if (by_leaf.size() > 1) {
     throw std::invalid_argument("profile path '" + path + "': '" + wanted + "' names several fields of " + file + " (" +
-                                joined(by_leaf) + "); write the whole path");
+                                comma_joined(by_leaf) + "); write the whole path");
   }
   throw std::invalid_argument("profile path '" + path + "': " + file + " has no sourced field '" + wanted +
-                              "'; fields there: " + joined(nearby_fields(fields, wanted)) +
+                              "'; fields there: " + comma_joined(nearby_fields(fields, wanted)) +
                               (path.rfind("host.", 0) == 0 ? "" : " (host profile fields start with \"host.\")"));
 }
 
@@ -70,7 +70,7 @@ std::string origin(const std::string& file, const std::vector<ProfileSetting>& s
   std::vector<std::string> texts;
   for (const ProfileSetting& s : settings)
     if (s.field.kind == kind) texts.push_back(s.text());
-  return texts.empty() ? file : file + " with " + joined(texts) + " (study " + study + ")";
+  return texts.empty() ? file : file + " with " + comma_joined(texts) + " (study " + study + ")";
 }
 
 }  // namespace

@@ -36,7 +36,7 @@ void workload_roofs(Roofline& r, double pci_bytes_per_test, double host_seconds,
 
 namespace {
 
-std::string number(double v) {
+std::string number_text(double v) {
   char text[32];
   std::snprintf(text, sizeof text, "%.17g", v);
   return text;
@@ -54,7 +54,7 @@ std::string quoted(const std::string& s) {
 std::string roofline_csv(const std::vector<Roofline>& rooflines) {
   std::string csv = "kind,device,label,bytes_per_test,tests_per_second\n";
   auto row = [&](const std::string& kind, const std::string& device, const std::string& label, double x, double y) {
-    csv += kind + "," + device + "," + quoted(label) + "," + number(x) + "," + number(y) + "\n";
+    csv += kind + "," + device + "," + quoted(label) + "," + number_text(x) + "," + number_text(y) + "\n";
   };
   for (const Roofline& r : rooflines) {
     char text[160];

@@ -10,7 +10,7 @@ namespace rc {
 
 namespace {
 
-std::string csv_field(const std::string& text) {
+std::string quoted_csv_field(const std::string& text) {
   if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
   std::string quoted = "\"";
   for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
@@ -43,7 +43,7 @@ void write_study_table_csv(std::ostream& out, const StudyResult& result, const s
       out << "scene," << line << '\n';
       header_written = true;
     }
-    const std::string scene = csv_field(result.study.scenes.at(i).name);
+    const std::string scene = quoted_csv_field(result.study.scenes.at(i).name);
     while (next_record(lines, line)) out << scene << ',' << line << '\n';
   }
 }

@@ -24,7 +24,7 @@ std::string csv_number(double x) {
   return buf;
 }
 
-std::string csv_field(const SweepCell& v) {
+std::string cell_csv_field(const SweepCell& v) {
   switch (v.kind) {
     case SweepCell::Kind::none: return "";
     case SweepCell::Kind::text: return csv_text(v.text);
@@ -42,7 +42,7 @@ void write_sweep_csv(std::ostream& out, const std::vector<SweepRow>& rows, const
   out << "\n";
   for (const SweepRow& r : rows) {
     const std::vector<SweepCell> values = sweep_cells(r, extra);
-    for (std::size_t i = 0; i < values.size(); ++i) out << (i ? "," : "") << csv_field(values[i]);
+    for (std::size_t i = 0; i < values.size(); ++i) out << (i ? "," : "") << cell_csv_field(values[i]);
     out << "\n";
   }
 }

@@ -11,7 +11,7 @@ namespace rc {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kNullAsNaN = std::numeric_limits<double>::quiet_NaN();
 
 nlohmann::ordered_json json_value(const SweepCell& v) {
   switch (v.kind) {
@@ -38,7 +38,7 @@ namespace {
 
 double number_from(const nlohmann::ordered_json& j, const char* key) {
   const nlohmann::ordered_json& v = j.at(key);
-  return v.is_null() ? kNaN : v.get<double>();
+  return v.is_null() ? kNullAsNaN : v.get<double>();
 }
 
 Validity validity_from(const std::string& status, const std::string& kind) {

@@ -41,7 +41,7 @@ struct Solved {
   WidthSummary summary;
 };
 
-Solved solve(const Study& s, const StudyScene& study_scene, const Scene& scene, int bits, int steps) {
+Solved solve_study_point(const Study& s, const StudyScene& study_scene, const Scene& scene, int bits, int steps) {
   SolverOptions solver = base_solver(s, study_scene);
   solver.fixed_steps = steps;
   Solved w;
@@ -267,7 +267,7 @@ ShardResult run_study_shard(const Study& study, const Shard& shard, const Progre
     const Scene& scene = scenes[g.scene];
     progress("solving " + s.name + " (" + std::to_string(scene.patches.size()) + " patches) at " +
              std::to_string(g.bits) + " bits");
-    running.push_back({g, &scene, solve(study, s, scene, g.bits, fixed_steps(study, s, scene)), {}, {}, {}});
+    running.push_back({g, &scene, solve_study_point(study, s, scene, g.bits, fixed_steps(study, s, scene)), {}, {}, {}});
     result.scenes[g.scene] = summary(s, scene);
   }
   std::vector<TimingCase> cases;

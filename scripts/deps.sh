@@ -47,17 +47,15 @@ rc_build() {
   cmake --build "$RC_BUILD" -j "$(nproc)" ${1:+--target "$@"} >&2
 }
 
-# rc_announce_build DIR [TARGET...]: one line saying what is about to be built and how many steps
-# (ninja's dry run; a configure step that has to run again counts as one).
+# rc_announce_build DIR [TARGET...]: one line saying what is about to be built and how many steps it
+# takes from nothing (ninja -t commands). The steps out of date are counted off by ninja itself as
+# [k/n] lines, also when piped. (A dry run, ninja -n, cannot count them: the folders' globs make it
+# stop at "Re-running CMake".)
 rc_announce_build() {
   local dir="$1"; shift
-  local what="${*:-every target}" steps
-  steps="$(ninja -C "$dir" -n "$@" 2>/dev/null | grep -c '^\[' || true)"
-  if [ "${steps:-0}" -eq 0 ]; then
-    echo "== build: $what in $dir is up to date" >&2
-  else
-    echo "== build: $what in $dir: $steps steps on $(nproc) cores" >&2
-  fi
+  local steps
+  steps="$(ninja -C "$dir" -t commands "$@" 2>/dev/null | wc -l)"
+  echo "== build: ${*:-every target} in $dir ($steps compile and link steps from nothing; ninja counts off those out of date)" >&2
 }
 
 # The sanitizer build (docs/reliability.md): clang, ASan + UBSan, libFuzzer's coverage and the fuzz

@@ -35,7 +35,7 @@ const Workload& workload() {
 
 // range(1) picks the instruction-set variant: 0 baseline (SSE2), 1 x86-64-v3 (AVX2),
 // 2 x86-64-v4 (AVX-512); the default entry point uses best_kernel_isa() (the best the CPU
-// supports, capped by RC2000_SIMD). Variants the CPU cannot run or above the cap are skipped.
+// supports, capped by RC2000SIM_SIMD). Variants the CPU cannot run or above the cap are skipped.
 bool select_isa(benchmark::State& state, int index, rc::pipeline::KernelIsa& isa) {
   isa = static_cast<rc::pipeline::KernelIsa>(index);
   state.SetLabel(rc::pipeline::simd_name(isa));
@@ -44,7 +44,7 @@ bool select_isa(benchmark::State& state, int index, rc::pipeline::KernelIsa& isa
     return false;
   }
   if (isa > rc::pipeline::best_kernel_isa()) {
-    state.SkipWithError("instruction set above the RC2000_SIMD cap");
+    state.SkipWithError("instruction set above the RC2000SIM_SIMD cap");
     return false;
   }
   return true;

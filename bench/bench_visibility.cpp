@@ -9,7 +9,7 @@
 //       --benchmark_repetitions=5 --benchmark_report_aggregates_only=true   (one line)
 //
 // BM_FastFixed runs once per instruction-set variant this CPU runs (avx512, avx2, baseline; capped
-// by RC2000_SIMD, pipeline/kernel_isa.h), the variants of one width next to each other.
+// by RC2000SIM_SIMD, pipeline/kernel_isa.h), the variants of one width next to each other.
 //
 // Counters: items_per_second = segments/s (wall clock); on the fast backend, x_embree = its
 // segments/s over Embree's on the same segments, Embree run off the clock in every iteration so
@@ -241,7 +241,7 @@ BENCHMARK(BM_BruteForceFixed)->ArgName("bits")->Arg(15)->Unit(benchmark::kMillis
 }  // namespace
 
 // BM_FastFixed/<variant>/bits:B/threads:T for every variant allowed (the CPU's, up to the cap
-// RC2000_SIMD sets), one thread, the widths side by side, best variant first; and two threads on
+// RC2000SIM_SIMD sets), one thread, the widths side by side, best variant first; and two threads on
 // the best variant.
 int main(int argc, char** argv) {
   std::vector<rc::pipeline::KernelIsa> isas;

@@ -72,7 +72,7 @@ void occlude_face(const FaceRecord& face, const FixedVec3& start, const std::int
                   const std::int64_t* end_y, const std::int64_t* end_z, std::size_t n, FracBits bits,
                   std::uint8_t* blocked, const std::uint8_t* skip = nullptr);
 // The same on one particular instruction-set variant (tests, benchmarks); the overload above
-// uses best_kernel_isa() (kernel_isa.h: the CPU's best, capped by RC2000_SIMD). Throws
+// uses best_kernel_isa() (kernel_isa.h: the CPU's best, capped by RC2000SIM_SIMD). Throws
 // std::invalid_argument if the CPU cannot run it.
 void occlude_face(KernelIsa isa, const FaceRecord& face, const FixedVec3& start,
                   const std::int64_t* end_x, const std::int64_t* end_y, const std::int64_t* end_z,

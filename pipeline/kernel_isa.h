@@ -6,7 +6,7 @@
 // One rule picks the variant everywhere our code dispatches by instruction set (the streaming
 // kernels here, the fast backend's face loop and end-point tree in host_sw/visibility):
 // best_kernel_isa(). It is the best variant the CPU runs, capped by the environment variable
-// RC2000_SIMD (kSimdVariable) when that is set: "avx512", "avx2" or "baseline". A value the CPU
+// RC2000SIM_SIMD (kSimdVariable) when that is set: "avx512", "avx2" or "baseline". A value the CPU
 // (or this build) cannot run, an unknown value or an empty one is an error naming the variable,
 // the value and the allowed values. Answers are bit-exact on every variant; only speed differs.
 #pragma once
@@ -19,20 +19,20 @@ namespace rc::pipeline {
 enum class KernelIsa { Baseline, X86_64_V3, X86_64_V4 };
 
 // The environment variable that caps the variant.
-inline constexpr const char* kSimdVariable = "RC2000_SIMD";
+inline constexpr const char* kSimdVariable = "RC2000SIM_SIMD";
 
 const char* name(KernelIsa isa);       // "baseline", "x86-64-v3", "x86-64-v4"
-const char* simd_name(KernelIsa isa);  // RC2000_SIMD's spelling: "baseline", "avx2", "avx512"
+const char* simd_name(KernelIsa isa);  // RC2000SIM_SIMD's spelling: "baseline", "avx2", "avx512"
 bool is_supported(KernelIsa isa);
 std::vector<KernelIsa> supported_kernel_isas();  // baseline first, best last
 
-// The rule, with its inputs given: `value` is RC2000_SIMD's value (nullptr when unset),
+// The rule, with its inputs given: `value` is RC2000SIM_SIMD's value (nullptr when unset),
 // `supported` what the CPU runs (baseline first, best last). Unset: the last of `supported`;
 // set: the variant it names. Throws std::invalid_argument (naming the variable, the value and
 // the allowed values) for an unknown or empty value or a variant not in `supported`.
 KernelIsa simd_cap(const char* value, const std::vector<KernelIsa>& supported);
 
-// simd_cap(getenv(RC2000_SIMD), supported_kernel_isas()), read once. The variant every
+// simd_cap(getenv(RC2000SIM_SIMD), supported_kernel_isas()), read once. The variant every
 // dispatching site uses unless a test or benchmark names one; throws as simd_cap does (every
 // time it is called, while the variable is wrong).
 KernelIsa best_kernel_isa();

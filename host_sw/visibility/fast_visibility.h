@@ -46,7 +46,7 @@ class FastFixedVisibility : public VisibilityBackend {
   // Throws std::invalid_argument unless 7 <= frac_bits <= 31 and threads >= 0.
   // threads = 0: one per hardware thread. The threads are created here, once.
   // The face loop, the end-point tree's marking and the streaming kernel run the instruction-set
-  // variant pipeline::best_kernel_isa() (the CPU's best, capped by RC2000_SIMD: a wrong value
+  // variant pipeline::best_kernel_isa() (the CPU's best, capped by RC2000SIM_SIMD: a wrong value
   // throws std::invalid_argument here), or `isa` (benchmarks, tests: std::invalid_argument if the
   // CPU cannot run it). Every variant gives the same answers and counters.
   explicit FastFixedVisibility(pipeline::FracBits frac_bits, int threads = 0);

@@ -24,7 +24,7 @@ std::unique_ptr<VisibilityBackend> make_software_visibility(const std::string& n
   if (pipeline::names_float_format(name)) {
     return std::make_unique<FloatPipelineVisibility>(pipeline::parse_float_format(name));
   }
-  // Only the name's error gets the float hint; the backend's own (a width, RC2000_SIMD) pass as
+  // Only the name's error gets the float hint; the backend's own (a width, RC2000SIM_SIMD) pass as
   // they are.
   SoftwareVisibility kind;
   try {

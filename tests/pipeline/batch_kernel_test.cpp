@@ -134,7 +134,7 @@ TEST(PipelineBatch, BaselineVariantAlwaysExistsAndUnsupportedOnesAreRefused) {
   const auto isas = supported_kernel_isas();
   ASSERT_FALSE(isas.empty());
   EXPECT_EQ(isas.front(), KernelIsa::Baseline);
-  EXPECT_LE(best_kernel_isa(), isas.back());  // RC2000_SIMD may cap it (kernel_isa_test.cpp)
+  EXPECT_LE(best_kernel_isa(), isas.back());  // RC2000SIM_SIMD may cap it (kernel_isa_test.cpp)
   for (KernelIsa isa : {KernelIsa::X86_64_V3, KernelIsa::X86_64_V4}) {
     if (is_supported(isa)) continue;
     const FaceRecord face{{1, 1, 1}, {2, 0, 0}, {0, 2, 0}};

@@ -1,4 +1,4 @@
-// The one rule that picks an instruction-set variant (pipeline/kernel_isa.h): RC2000_SIMD caps
+// The one rule that picks an instruction-set variant (pipeline/kernel_isa.h): RC2000SIM_SIMD caps
 // the CPU's best; unknown, empty and unrunnable values are errors naming the variable, the value
 // and the allowed values.
 #include "pipeline/kernel_isa.h"
@@ -43,7 +43,7 @@ TEST(SimdCap, EachValueNamesItsVariant) {
 
 TEST(SimdCap, AVariantTheCpuCannotRunIsAnError) {
   const std::string e = error_of("avx512", kAvx2Cpu);
-  EXPECT_NE(e.find("RC2000_SIMD=avx512"), std::string::npos) << e;
+  EXPECT_NE(e.find("RC2000SIM_SIMD=avx512"), std::string::npos) << e;
   EXPECT_NE(e.find("cannot run"), std::string::npos) << e;
   EXPECT_NE(e.find("best it runs: avx2"), std::string::npos) << e;
   EXPECT_NE(e.find("avx512, avx2, baseline"), std::string::npos) << e;
@@ -53,7 +53,7 @@ TEST(SimdCap, AVariantTheCpuCannotRunIsAnError) {
 TEST(SimdCap, UnknownAndEmptyValuesAreErrors) {
   for (const char* value : {"", "AVX2", "avx", "x86-64-v3", "sse2", "avx2 ", "native"}) {
     const std::string e = error_of(value, kEvery);
-    EXPECT_NE(e.find("RC2000_SIMD=\"" + std::string(value) + "\""), std::string::npos) << e;
+    EXPECT_NE(e.find("RC2000SIM_SIMD=\"" + std::string(value) + "\""), std::string::npos) << e;
     EXPECT_NE(e.find("is not a variant"), std::string::npos) << e;
     EXPECT_NE(e.find("allowed: avx512, avx2, baseline"), std::string::npos) << e;
   }

@@ -40,7 +40,9 @@ TEST(Jobs, UsableCoresAreTheAffinityMaskAtMost) {
   const unsigned cores = usable_cores();
   EXPECT_GE(cores, 1u);
   EXPECT_LE(cores, static_cast<unsigned>(CPU_COUNT(&set)));
-  if (std::thread::hardware_concurrency() > 0) EXPECT_LE(cores, std::thread::hardware_concurrency());
+  if (std::thread::hardware_concurrency() > 0) {
+    EXPECT_LE(cores, std::thread::hardware_concurrency());
+  }
 }
 
 TEST(Jobs, OutOfRangeIsRefusedNamingTheOptionAndTheLimit) {

@@ -63,7 +63,9 @@ rc_announce_build() {
 # and line, without the full debug information that made compiling and linking slower). NDEBUG as
 # in the Release build: the pipeline's per-operation range asserts would double the test run
 # (nlohmann::json's stay, CMakeLists.txt). No benchmarks: nothing runs them under the sanitizers
-# (the plain build compiles them, so they cannot rot). One build serves the tests and the fuzzers.
+# (the plain build compiles them, so they cannot rot). No Verilated models: their C++ is generated
+# by Verilator, and the co-simulation runs in the plain build (the RTL tests say SKIP here, with the
+# reason). One build serves the tests and the fuzzers.
 RC_SANITIZE_BUILD="${RC_SANITIZE_BUILD:-$RC_ROOT/build-sanitize}"
 
 # Prints why the sanitizer build cannot be made here and succeeds, or fails (prints nothing) when it
@@ -92,7 +94,7 @@ rc_build_sanitize() {
     echo "== configure: cmake -S $RC_ROOT -B $RC_SANITIZE_BUILD (Ninja, clang, ASan + UBSan, libFuzzer)" >&2
     CC=clang CXX=clang++ cmake -S "$RC_ROOT" -B "$RC_SANITIZE_BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" -DRC_SANITIZE=ON -DRC_FUZZ=ON \
-      -DRC_BUILD_BENCH=OFF -DRC_WERROR="$werror" >&2
+      -DRC_BUILD_BENCH=OFF -DRC_RTL_VERILATE=OFF -DRC_WERROR="$werror" >&2
   fi
   rc_announce_build "$RC_SANITIZE_BUILD" "$@"
   cmake --build "$RC_SANITIZE_BUILD" -j "$(nproc)" ${1:+--target "$@"} >&2

@@ -129,7 +129,9 @@ TEST_P(RtlCosim, ValidBitLeavesExactly37EdgesAfterItEntered) {
   for (unsigned e = 1; e < 3 * kRtlLatency; ++e) {
     rtl->clock({});
     EXPECT_EQ(rtl->out_valid(), e == kRtlLatency - 1) << "after edge " << e;
-    if (e == kRtlLatency - 1) EXPECT_EQ(rtl->out_hit(), one[0].expected);
+    if (e == kRtlLatency - 1) {
+      EXPECT_EQ(rtl->out_hit(), one[0].expected);
+    }
   }
   // reset empties the valid chain
   rtl->clock(one[0].in);
@@ -168,7 +170,7 @@ TEST_P(RtlCosim, StressCasesEqualTheCppPipelineBitForBit) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Widths, RtlCosim, ::testing::Values(7, 11, 15, 23, 31),
-                         [](const auto& info) { return std::to_string(info.param) + "Bits"; });
+                         [](const auto& width) { return std::to_string(width.param) + "Bits"; });
 
 // The array-multiplier build (SOFT_MULTS = 1, what synthesis without block multipliers maps) computes
 // the same bits as the `*` build and the C++ model.

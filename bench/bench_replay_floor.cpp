@@ -37,6 +37,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "bench/recorded_box.h"
 #include "bench/systemc_benchmark_main.h"
 #include "host_sw/platform/board_setup.h"
 #include "host_sw/platform/board_system.h"
@@ -138,24 +139,10 @@ Figures in_child(const Elaborate& elaborate) {
 
 // ---- the real replay ------------------------------------------------------------------------------
 
-struct Workload {
-  rc::Scene scene;
-  rc::SolverOptions solver;
-  rc::RecordedRun recorded;
-};
+using Workload = rc::bench::RecordedBox;
 
 const Workload& workload() {
-  static const Workload w = [] {
-    Workload made;
-    rc::SceneOptions options;
-    options.face_target = 70;
-    options.face_levels = 0;
-    options.patch_levels = 1;
-    made.scene = rc::prepare_scene(options).scene;
-    made.solver.fixed_steps = kSteps;
-    made.recorded = rc::record_functional_run(made.scene, made.solver, "fast", 15, 1);
-    return made;
-  }();
+  static const Workload w = rc::bench::record_box(kSteps);
   return w;
 }
 

@@ -183,4 +183,12 @@ void add_bits_option(CLI::App& cmd, int& bits) {
       ->capture_default_str();
 }
 
+CLI::Option* add_resources_option(CLI::App& cmd, pipeline::ResourceSource& source, const std::string& what) {
+  return add_choice_option(cmd, "--resources", source,
+                           what + "Where the lanes' slices and block multipliers come from: paper (the paper's place-and-route "
+                                  "figures, a fit through them elsewhere) or synthesis (Yosys's counts of rtl/mt_pipeline.v for "
+                                  "the device's family, turned into slices by a rule fitted on the paper's points; "
+                                  "docs/pipeline.md, Two sources of resources); the clock is the paper's under both");
+}
+
 }  // namespace rc

@@ -11,6 +11,7 @@
 #include "board/checked_count.h"
 #include "host_sw/radiosity/radiosity.h"
 #include "io/choice.h"
+#include "pipeline/resource_source.h"
 #include "scenes/prepare.h"
 
 namespace rc {
@@ -27,6 +28,9 @@ struct SolverCli {
 void add_scene_options(CLI::App& cmd, SceneOptions& scene);
 void add_solver_options(CLI::App& cmd, SolverCli& solver);
 void add_bits_option(CLI::App& cmd, int& bits);
+// --resources paper|synthesis: where the fixed-point lanes' slices and block multipliers come from
+// (pipeline/resource_source.h; docs/pipeline.md, "Two sources of resources"). `what` prefixes the help.
+CLI::Option* add_resources_option(CLI::App& cmd, pipeline::ResourceSource& source, const std::string& what = "");
 // `flag` NAME sets `value` to the choice of that name (io/choice.h): the option accepts exactly the
 // choice's name list and shows its default by name.
 template <class E>

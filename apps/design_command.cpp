@@ -113,6 +113,7 @@ void add_design_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--bits", o->bits, "Fractional widths, e.g. 15,23")->capture_default_str();
   cmd->add_option("--multipliers", o->multipliers, "block (block multipliers while they last), slice")
       ->capture_default_str();
+  add_resources_option(*cmd, o->space.resources);
   cmd->add_option("--cards", o->cards, "Card counts, e.g. 1-4")->capture_default_str();
   cmd->add_option("--concurrent", o->concurrent, "Driver: on (sec 4.3), off, both")->capture_default_str();
   cmd->add_option("--max-banks", o->constraints.max_banks, "Most banks a design may have (default: the profile's count; " + std::to_string(board::kMinBanks) + ".." +

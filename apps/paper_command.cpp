@@ -36,6 +36,7 @@ struct PaperOptions {
   std::string docs_dir;  // also write paper.md and the plots here (e.g. docs/results)
   std::string variants = default_variants_path();  // every driver-model variant, for the spread
   std::string visibility = "fast";
+  pipeline::ResourceSource resources = pipeline::ResourceSource::paper_fit;  // of the sec 5.6 searches' lane fits
   bool quiet = false;
 };
 
@@ -146,6 +147,8 @@ ordered_json paper_json(const PaperDocument& d) {
   j["energy_records"] = energy;
   // Per device: the paper's rule at its clock(s), the model's best searched design with its bound.
   j["device_estimates"] = sec56_devices_json(d.devices);
+  j["device_search_resources"] = choice_name(d.resources);
+  j["lanes_by_source"] = lanes_by_source_json(d.lanes_by_source);
   j["bank_variants"] = banks;
   j["summary"] = {{"average_overall_speedup", d.summary.average_overall_speedup},
                   {"largest_scene_overall_speedup", d.summary.largest_scene_overall_speedup},
@@ -289,7 +292,7 @@ int run_paper(const PaperOptions& o) {
   progress.update("simulating the configurations%-20s", "");
   const double functional_seconds = progress.seconds();
   PlotProcess plotter("paper.py");  // the interpreter loads while the study runs
-  const PaperPrediction r = predict_paper(scenes, rows, o.host, host, variants);
+  const PaperPrediction r = predict_paper(scenes, rows, o.host, host, variants, o.resources);
   const double study_seconds = progress.seconds() - functional_seconds;
   progress.finish();
 
@@ -303,6 +306,8 @@ int run_paper(const PaperOptions& o) {
   const double paper_rate = measured_peak_software_rate(rows);
   document.devices = sec56_device_rows(r, paper_rate, r.model.front().software_rate);
   document.rooflines = sec56_rooflines(r, paper_rate);
+  document.lanes_by_source = sec56_lanes_by_source();
+  document.resources = o.resources;
   document.host_profile = o.host;
   document.driver_model = host.driver_model.name();
   document.left_out_error_low = r.left_out_error_low;
@@ -318,6 +323,7 @@ int run_paper(const PaperOptions& o) {
   outputs.write();
   print_table(document);
   print_sec56_devices(document.devices);
+  print_lanes_by_source(document.lanes_by_source);
   std::printf("\n  average overall speedup %.2fx, largest scene %.2fx (software / concurrent)\n",
               document.summary.average_overall_speedup, document.summary.largest_scene_overall_speedup);
   std::filesystem::create_directories(pictures);  // the plots' folder, now that the data is written
@@ -345,6 +351,7 @@ void add_paper_command(CLI::App& app, int& exit_code) {
       ->check(output_path());
   cmd->add_option("--visibility", o->visibility, "Bit-exact backend that answers visibility once per scene: fixed or fast")
       ->check(CLI::IsMember(choice_names<BitExactVisibility>()))->capture_default_str();
+  add_resources_option(*cmd, o->resources, "Sec 5.6's design searches: ");
   cmd->add_flag("--quiet", o->quiet, "No progress output");
   add_jobs_option(*cmd, "the scenes solved side by side, the timing study's processes");
   cmd->callback([o, cmd, &exit_code] {

@@ -22,6 +22,10 @@ struct PaperDocument {
   // Sec 5.6 per device: the paper's rule at its clock(s) and the model's searched designs (apps/paper_sec56.h).
   std::vector<Sec56DeviceRow> devices;
   std::vector<Roofline> rooflines;
+  // Lanes that fit on the three devices under both sources of resources, and the source the model's
+  // searches above used (--resources).
+  Sec56LanesBySource lanes_by_source;
+  pipeline::ResourceSource resources = pipeline::ResourceSource::paper_fit;
   PaperSummary summary;
   std::string host_profile;  // as given to --host
   std::string driver_model;  // the host profile's

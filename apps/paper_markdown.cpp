@@ -184,6 +184,11 @@ std::string paper_markdown(const PaperDocument& j) {
         "moved per intersection, the workload's seconds and energy, and the bound. `rc2000sim design` searches the\n"
         "whole space and prints the Pareto front ([../design.md](../design.md)).\n\n";
   sec56_devices_markdown(md, j.devices);
+  md << "\nThe designs above take their lanes' slices and block multipliers from the "
+     << (j.resources == pipeline::ResourceSource::synthesis ? "synthesis" : "paper fit")
+     << " (`--resources`). Lanes that fit at 15 bits under both sources ([../pipeline.md](../pipeline.md), Two sources\n"
+        "of resources; [synthesis.md](synthesis.md)):\n\n";
+  lanes_by_source_markdown(md, j.lanes_by_source);
   md << "\n![Rooflines](paper/roofline.png)\n\n"
         "The rooflines: attainable tests per second against bank bytes per test, under the lanes' roof (lanes x\n"
         "clock), the SRAM roof (banks x 4 bytes x bank clock, a diagonal), and the flat PCI and host roofs of the\n"

@@ -165,4 +165,100 @@ void sec56_devices_markdown(std::ostream& md, const std::vector<Sec56DeviceRow>&
   }
 }
 
+Sec56LanesBySource sec56_lanes_by_source() {
+  Sec56LanesBySource out;
+  for (const char* name : kSec56Devices) out.devices.push_back(board::lanes_by_source(board::find_device_profile(name), 15));
+  const pipeline::ResourceModel synthesis = pipeline::ResourceModel::load_default(pipeline::ResourceSource::synthesis);
+  out.fit = synthesis.synthesis()->fit();
+  out.synthesizer = synthesis.synthesis()->synthesizer();
+  return out;
+}
+
+namespace {
+
+ordered_json fit_json(const board::DesignFit& f, int lanes) {
+  return {{"lanes", lanes},
+          {"block_multiplier_lanes", lanes > 0 ? f.hard_lanes : 0},
+          {"slice_multiplier_lanes", lanes > 0 ? f.soft_lanes : 0},
+          {"slices", lanes > 0 ? f.slices : 0},
+          {"block_multipliers", lanes > 0 ? f.block_multipliers : 0},
+          {"clock_mhz", lanes > 0 ? f.clock_mhz : 0}};
+}
+
+std::string lanes_text(const board::DesignFit& f, int lanes) {
+  if (lanes == 0) return "none fits";
+  char text[160];
+  std::snprintf(text, sizeof text, "%d (%d block + %d slice), %d slices, %d blocks", lanes, f.hard_lanes, f.soft_lanes,
+                f.slices, f.block_multipliers);
+  return text;
+}
+
+std::string signed_percent(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%+.1f%%", 100.0 * x);
+  return text;
+}
+
+}  // namespace
+
+ordered_json lanes_by_source_json(const Sec56LanesBySource& lanes) {
+  ordered_json devices = ordered_json::array();
+  for (const board::LanesBySource& d : lanes.devices) {
+    devices.push_back({{"device", d.device},
+                       {"bits", d.bits},
+                       {"paper", fit_json(d.paper, d.paper_lanes)},
+                       {"synthesis", fit_json(d.synthesis, d.synthesis_lanes)}});
+  }
+  ordered_json loo = ordered_json::array();
+  for (const pipeline::LeaveOneOutError& e : lanes.fit.leave_one_out) {
+    loo.push_back({{"frac_bits", e.point.frac_bits},
+                   {"block_multipliers", e.point.block_multipliers},
+                   {"paper_slices", e.point.slices},
+                   {"predicted_slices", finite_or_null(e.predicted)},
+                   {"relative_error", finite_or_null(e.relative_error)}});
+  }
+  return {{"devices", devices},
+          {"synthesis_rule",
+           {{"synthesizer", lanes.synthesizer},
+            {"slices_per_lut", lanes.fit.per_lut},
+            {"slices_per_flip_flop", lanes.fit.per_flip_flop},
+            {"max_abs_fit_error", lanes.fit.max_abs_fit_error},
+            {"max_abs_leave_one_out_error", finite_or_null(lanes.fit.max_abs_leave_one_out)},
+            {"leave_one_out", loo}}}};
+}
+
+void print_lanes_by_source(const Sec56LanesBySource& lanes) {
+  std::printf("\nLanes that fit at 15 bits by source of resources (docs/pipeline.md, Two sources of resources; the wrapper "
+              "counted, block-multiplier lanes first)\n");
+  std::printf("  %-14s %-52s %s\n", "device", "paper fit", "synthesis");
+  for (const board::LanesBySource& d : lanes.devices) {
+    std::printf("  %-14s %-52s %s\n", d.device.c_str(), lanes_text(d.paper, d.paper_lanes).c_str(),
+                lanes_text(d.synthesis, d.synthesis_lanes).c_str());
+  }
+  std::printf("  synthesis: %s counts, slices = %.4f x LUTs + %.4f x flip-flops fitted on the paper's %zu points; "
+              "leave-one-out error on them up to %s (fit %s)\n",
+              lanes.synthesizer.c_str(), lanes.fit.per_lut, lanes.fit.per_flip_flop, lanes.fit.leave_one_out.size(),
+              format("%.1f%%", 100.0 * lanes.fit.max_abs_leave_one_out).c_str(),
+              format("%.1f%%", 100.0 * lanes.fit.max_abs_fit_error).c_str());
+}
+
+void lanes_by_source_markdown(std::ostream& md, const Sec56LanesBySource& lanes) {
+  md << "| device | paper fit: lanes | slices | blocks | synthesis: lanes | slices | blocks |\n"
+        "|---|---:|---:|---:|---:|---:|---:|\n";
+  for (const board::LanesBySource& d : lanes.devices) {
+    md << "| " << d.device << " | " << d.paper_lanes << " (" << d.paper.hard_lanes << " block + " << d.paper.soft_lanes
+       << " slice) | " << d.paper.slices << " | " << d.paper.block_multipliers << " | " << d.synthesis_lanes << " ("
+       << d.synthesis.hard_lanes << " block + " << d.synthesis.soft_lanes << " slice) | " << d.synthesis.slices << " | "
+       << d.synthesis.block_multipliers << " |\n";
+  }
+  md << "\nSynthesis: " << lanes.synthesizer << " counts of `rtl/mt_pipeline.v`; slices = "
+     << format("%.4f", lanes.fit.per_lut) << " x LUTs + " << format("%.4f", lanes.fit.per_flip_flop)
+     << " x flip-flops, fitted on the paper's published pipelines; leave-one-out error on each:";
+  for (const pipeline::LeaveOneOutError& e : lanes.fit.leave_one_out) {
+    md << " " << e.point.frac_bits << " bits " << (e.point.block_multipliers ? "with" : "without") << " block multipliers "
+       << signed_percent(e.relative_error) << ";";
+  }
+  md << " largest " << format("%.1f%%", 100.0 * lanes.fit.max_abs_leave_one_out) << ".\n";
+}
+
 }  // namespace rc

@@ -32,6 +32,18 @@ std::vector<Sec56DeviceRow> sec56_device_rows(const PaperPrediction& prediction,
                                               double model_software_rate);
 std::vector<Roofline> sec56_rooflines(const PaperPrediction& prediction, double paper_software_rate);
 
+// Lanes that fit at 15 bits on each sec 5.6 device under both sources of resources (the paper fit and
+// the synthesis, pipeline/resource_source.h) side by side, with the synthesis rule's fit.
+struct Sec56LanesBySource {
+  std::vector<board::LanesBySource> devices;
+  pipeline::SynthesisSliceFit fit;  // slices = per_lut * LUTs + per_flip_flop * FFs, and its leave-one-out errors
+  std::string synthesizer;          // the synthesizer's version
+};
+Sec56LanesBySource sec56_lanes_by_source();
+nlohmann::ordered_json lanes_by_source_json(const Sec56LanesBySource& lanes);
+void print_lanes_by_source(const Sec56LanesBySource& lanes);
+void lanes_by_source_markdown(std::ostream& md, const Sec56LanesBySource& lanes);
+
 nlohmann::ordered_json sec56_devices_json(const std::vector<Sec56DeviceRow>& rows);
 void print_sec56_devices(const std::vector<Sec56DeviceRow>& rows);
 void sec56_devices_markdown(std::ostream& md, const std::vector<Sec56DeviceRow>& rows);

@@ -111,12 +111,13 @@ LanesThatFit estimated_or_why(const board::DeviceProfile& profile, Estimate esti
 
 }  // namespace
 
-LanesThatFit lanes_that_fit(const board::DeviceProfile& profile, const HostProfile& host_profile, int bits) {
+LanesThatFit lanes_that_fit(const board::DeviceProfile& profile, const HostProfile& host_profile, int bits,
+                            pipeline::ResourceSource resources) {
   return estimated_or_why(profile, [&] {
     return LanesThatFit{
         board::paper_rule_lanes_that_fit(profile, measured_peak_software_rate(load_paper_table(default_paper_table_path()))),
         board::model_lanes_that_fit(profile, 1.0 / host_profile.work[static_cast<int>(HostWork::IntersectionTest)].to_seconds(),
-                                    bits),
+                                    bits, resources),
         ""};
   });
 }
@@ -144,9 +145,11 @@ std::string lanes_that_fit_line(const LanesThatFit& e) {
   char line[320];
   std::snprintf(line, sizeof line,
                 "%s: paper's rule (15-bit Table 1 pipeline at %g MHz) %d lanes, %.4g int/s (%.1fx software); "
-                "model %d lanes at %g MHz (the profile's design clock), %.4g int/s (%.1fx)",
+                "model %d lanes at %g MHz (the profile's design clock%s), %.4g int/s (%.1fx)",
                 e.model.device.c_str(), e.paper_rule.clock_mhz, e.paper_rule.lanes, e.paper_rule.intersections_per_s,
-                e.paper_rule.speedup_vs_software, e.model.lanes, e.model.clock_mhz, e.model.intersections_per_s,
+                e.paper_rule.speedup_vs_software, e.model.lanes, e.model.clock_mhz,
+                e.model.resources == pipeline::ResourceSource::synthesis ? "; synthesis resources" : "",
+                e.model.intersections_per_s,
                 e.model.speedup_vs_software);
   return line;
 }

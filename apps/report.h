@@ -36,7 +36,9 @@ struct LanesThatFit {
   std::string missing;  // "": estimated
 };
 LanesThatFit lanes_that_fit(const std::string& device, const std::string& host, int bits);
-LanesThatFit lanes_that_fit(const board::DeviceProfile& device, const HostProfile& host, int bits);
+// `resources`: the model's source of slices and block multipliers (the paper's rule has its own).
+LanesThatFit lanes_that_fit(const board::DeviceProfile& device, const HostProfile& host, int bits,
+                            pipeline::ResourceSource resources = pipeline::ResourceSource::paper_fit);
 // Float lanes (estimates, docs/pipeline.md): the model's estimate for `format`; the paper's rule is its own.
 LanesThatFit lanes_that_fit(const board::DeviceProfile& device, const HostProfile& host, pipeline::FloatFormat format);
 nlohmann::ordered_json lanes_that_fit_json(const LanesThatFit& estimates);

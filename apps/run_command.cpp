@@ -124,7 +124,7 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   // exception caught here, and once SystemC has switched stacks AddressSanitizer cannot follow a
   // throw (docs/reliability.md, "Sanitizers").
   LanesThatFit fit = float_arith(o) ? lanes_that_fit(*board.device_profile, *board.host_profile, o.arith.float_format())
-                                    : lanes_that_fit(*board.device_profile, *board.host_profile, o.bits);
+                                    : lanes_that_fit(*board.device_profile, *board.host_profile, o.bits, board.resources);
   BoardRunResult r = run_radiosity_on_board(scene, o.solver, board);
   RunOutcome out;
   out.solver = std::move(r.solver);
@@ -288,7 +288,7 @@ pipeline::Arithmetic parse_arith_option(const std::string& text) {
 void check_run_options(const CLI::App& cmd, const RunOptions& o) {
   if (o.impl != Impl::board) {
     refuse_given(cmd, {"--device", "--lanes", "--banks", "--concurrent", "--cards", "--card-split", "--card-bus",
-                       "--lanes-compute", "--lanes-impl", "--host", "--trace", "--trace-steps", "--vcd", "--cpu-share", "--cpu-cores", "--chunk-rays"},
+                       "--lanes-compute", "--lanes-impl", "--resources", "--host", "--trace", "--trace-steps", "--vcd", "--cpu-share", "--cpu-cores", "--chunk-rays"},
                  "applies to --impl board only (the simulated RC2000); this run answers visibility in software");
   } else {
     refuse_given(cmd, {"--visibility"}, "applies to --impl software only: with --impl board the board's lanes answer "
@@ -308,6 +308,8 @@ void check_run_options(const CLI::App& cmd, const RunOptions& o) {
     }
   }
   if (o.arith.is_float()) {
+    refuse_given(cmd, {"--resources"}, "applies to fixed-point lanes only: the float lanes (--arith " + o.arith.name() +
+                                           ") have no RTL to synthesise; their costs are counting-rule estimates");
     refuse_given(cmd, {"--bits", "--visibility"},
                  "does not apply with --arith " + o.arith.name() +
                      " (the float pipeline has no fractional width and is its own backend)");
@@ -437,6 +439,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
                     "Board: the lanes' implementation: cpp (the C++ pipeline) or rtl (the Verilog pipeline rtl/mt_pipeline.v, "
                     "Verilated, one model per lane, clocked cycle by cycle in the cycle-level wrapper: slow, small scenes; "
                     "docs/board.md, RTL lanes)");
+  add_resources_option(*cmd, b.resources, "Board: ");
   cmd->add_flag("--lanes-compute", options->lanes_compute,
                 "Board: the lanes test every ray against every face (slow) instead of copying the bit-identical "
                 "culled answer; timing and results are the same");

@@ -49,6 +49,7 @@ struct SweepOptions {
   std::string visibility = "fast";
   std::string form_factor = Study{}.form_factor;  // the paper's point rule (a sweep replicates its workload)
   bool full_banks = false;
+  pipeline::ResourceSource resources = pipeline::ResourceSource::paper_fit;
   bool quiet = false;
   bool list_fields = false;
   std::string out_dir = "out/sweep";
@@ -58,7 +59,7 @@ struct SweepOptions {
 const char* const kStudyOptions[] = {"--scene", "--faces", "--face-levels", "--patch-levels", "--patch-size",
                                      "--steps", "--convergence", "--lanes", "--banks", "--bits", "--devices",
                                      "--concurrent", "--paper-faithful", "--host", "--visibility", "--full-banks",
-                                     "--cards", "--card-split", "--card-bus", "--form-factor"};
+                                     "--cards", "--card-split", "--card-bus", "--form-factor", "--resources"};
 
 Study study_from_options(const SweepOptions& o) {
   Study s = default_study();
@@ -70,6 +71,7 @@ Study study_from_options(const SweepOptions& o) {
   s.visibility = parse_choice<BitExactVisibility>(o.visibility);  // CLI::IsMember has checked the name
   s.form_factor = o.form_factor;
   s.full_banks = o.full_banks;
+  s.resources = o.resources;
   s.axes.devices = parse_name_list(o.devices, "--devices");
   s.axes.hosts = parse_name_list(o.hosts, "--host");
   s.axes.bits = parse_int_list(o.bits, "--bits", 7, 31);
@@ -154,6 +156,7 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   cmd->add_flag("--full-banks", o->full_banks,
                 "Model the profile's bank capacity even when smaller banks change nothing (more memory)");
+  add_resources_option(*cmd, o->resources);
   cmd->add_flag("--quiet", o->quiet, "No progress output");
   add_jobs_option(*cmd, "the timing study's processes and the fast backend's threads");
   cmd->add_flag("--list-fields", o->list_fields,

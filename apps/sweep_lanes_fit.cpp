@@ -31,7 +31,7 @@ std::vector<SweptFit> swept_fits(const Study& s) {
       }
       for (int bits : s.axes.bits) {
         SweptFit fit{device, bits, combination, {}, why};
-        if (d) fit.estimates = lanes_that_fit(*d, host, bits);
+        if (d) fit.estimates = lanes_that_fit(*d, host, bits, s.resources);
         fits.push_back(fit);
       }
     }

@@ -1,12 +1,21 @@
 // Prints the pipeline's register widths and the resource/clock model for every fractional width
-// (the tables of docs/pipeline.md):
+// (the tables of docs/pipeline.md), then the synthesis source (pipeline/synthesis_resources.h): its
+// rule fitted on the paper's points with the leave-one-out errors, its slices and block multipliers
+// per family and width, and the lanes that fit on every device profile under both sources (the
+// tables of docs/results/synthesis.md, which `scripts/synthesize page` copies):
 //
-//   build-pipeline/bench/pipeline_resources [path/to/pipeline_resources.json]
+//   build/bench/pipeline_resources [path/to/pipeline_resources.json [path/to/synthesis_resources.json]]
 //
-// Not a Google Benchmark program: it has its own main.
+// Not a Google Benchmark program: it has its own entry, sc_main (the device profiles it reads live in
+// board/, which links SystemC, whose library supplies main()).
 #include <cstdio>
 #include <exception>
+#include <string>
 
+#include <systemc>  // declares sc_main with C linkage
+
+#include "board/design_fit.h"
+#include "board/device_profile.h"
 #include "pipeline/bit_bounds.h"
 #include "pipeline/fixed_format.h"
 #include "pipeline/resource_model.h"
@@ -76,14 +85,66 @@ void print_resources(const rc::pipeline::ResourceModel& model) {
   }
 }
 
+void print_synthesis(const rc::pipeline::ResourceModel& model) {
+  const rc::pipeline::SynthesisResources& syn = *model.synthesis();
+  const rc::pipeline::SynthesisSliceFit& fit = syn.fit();
+  std::printf("\n## The synthesis source\n\n");
+  std::printf("Rule: slices = %.4f x (LUTs + SRLs) + %.4f x flip-flops, least squares on the paper's %zu published "
+              "pipelines paired with %s's counts for the paper's family; largest error of the fit on its own points "
+              "%.1f%%, largest leave-one-out error %.1f%%.\n\n",
+              fit.per_lut, fit.per_flip_flop, fit.leave_one_out.size(), syn.synthesizer().c_str(),
+              100.0 * fit.max_abs_fit_error, 100.0 * fit.max_abs_leave_one_out);
+  std::printf("| bits | block mults | paper slices | fitted on the others | leave-one-out error |\n|---:|---|---:|---:|---:|\n");
+  for (const rc::pipeline::LeaveOneOutError& e : fit.leave_one_out) {
+    std::printf("| %d | %s | %.0f | %.0f | %+.1f%% |\n", e.point.frac_bits, e.point.block_multipliers ? "yes" : "no",
+                e.point.slices, e.predicted, 100.0 * e.relative_error);
+  }
+  std::printf("\nOne pipeline by the synthesis source (* = counts interpolated between synthesised widths, ! = "
+              "extrapolated beyond them; paper-fit slices beside).\n\n");
+  std::printf("| family | bits | slices | paper fit | slices (block mults) | block mults | paper fit (block mults) | paper block mults |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
+  const rc::pipeline::ResourceModel paper = rc::pipeline::ResourceModel::load(rc::pipeline::ResourceModel::default_path());
+  for (const char* part : {"XC2V", "XC3S", "XC4V"}) {
+    for (int bits = rc::pipeline::kMinFracBits; bits <= rc::pipeline::kMaxFracBits; ++bits) {
+      const auto counts = [&](bool hard) { return syn.counts(part, bits, hard); };
+      const auto soft = model.pipeline(bits, false, part), hard = model.pipeline(bits, true, part);
+      const auto mark = [&](bool h) {
+        const rc::pipeline::SynthesisCounts c = counts(h);
+        return c.extrapolated ? "!" : (c.interpolated ? "*" : "");
+      };
+      std::printf("| %s | %d | %d%s | %d | %d%s | %d | %d | %d |\n", soft.synthesis_family.c_str(), bits, soft.slices, mark(false),
+                  paper.pipeline(bits, false).slices, hard.slices, mark(true), hard.block_multipliers,
+                  paper.pipeline(bits, true).slices, paper.pipeline(bits, true).block_multipliers);
+    }
+  }
+}
+
+void print_lanes_by_source(int bits) {
+  std::printf("\nLanes that fit at %d bits on the device profiles of configs/devices/ (wrapper counted; block-multiplier lanes first, slice "
+              "multipliers beyond):\n\n", bits);
+  std::printf("| device | part | paper fit: lanes | slices | blocks | synthesis: lanes | slices | blocks |\n");
+  std::printf("|---|---|---:|---:|---:|---:|---:|---:|\n");
+  for (const std::string name : {"xc2v6000", "virtex4-sx55", "spartan3-5000"}) {
+    const rc::board::DeviceProfile device = rc::board::find_device_profile(name);
+    const rc::board::LanesBySource l = rc::board::lanes_by_source(device, bits);
+    std::printf("| %s | %s | %d (%d block + %d slice) | %d | %d | %d (%d block + %d slice) | %d | %d |\n", name.c_str(),
+                device.part.c_str(), l.paper_lanes, l.paper.hard_lanes, l.paper.soft_lanes, l.paper.slices,
+                l.paper.block_multipliers, l.synthesis_lanes, l.synthesis.hard_lanes, l.synthesis.soft_lanes,
+                l.synthesis.slices, l.synthesis.block_multipliers);
+  }
+}
+
 }  // namespace
 
-int main(int argc, char** argv) {
+int sc_main(int argc, char* argv[]) {
   try {
     const auto model = argc > 1 ? rc::pipeline::ResourceModel::load(argv[1])
                                 : rc::pipeline::ResourceModel::load_default();
     print_register_widths();
     print_resources(model);
+    const std::string synthesis_path = argc > 2 ? argv[2] : rc::pipeline::ResourceModel::default_synthesis_path();
+    print_synthesis(model.with_synthesis(rc::profiles::read_synthesis_table(synthesis_path), synthesis_path));
+    for (int bits : {15, 23}) print_lanes_by_source(bits);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;

@@ -23,9 +23,14 @@ BoardParams make_board_params(const DeviceProfile& p, const BoardChoices& c) {
   // own at this width if that is slower).
   b.float_format = c.float_format;
   if (c.float_format) {
+    if (c.resources != pipeline::ResourceSource::paper_fit) {
+      throw std::invalid_argument("resources from " + choice_name(c.resources) +
+                                  " apply to fixed-point lanes only: the float lanes (" + c.float_format->to_string() +
+                                  ") have no RTL to synthesise; their costs are counting-rule estimates");
+    }
     b.fit = fit_float_design(p, pipeline::ResourceModel::load_default(), c.lanes, *c.float_format);  // an estimate
   } else {
-    b.fit = fit_design(p, pipeline::ResourceModel::load_default(), static_cast<int>(c.lanes), c.bits);
+    b.fit = fit_design(p, pipeline::ResourceModel::load_default(c.resources), static_cast<int>(c.lanes), c.bits);
   }
   if (!b.fit.fits) throw std::invalid_argument(b.fit.describe());
   b.timing.device_period = tlmx::period_from_hz(b.fit.clock_mhz * 1e6);

@@ -50,6 +50,9 @@ struct BoardChoices {
   std::uint64_t bank_capacity_bytes = 0; // 0: the profile's
   WrapperModel model = WrapperModel::fast;
   ClockedLanesFactory clocked_lanes;     // set: lanes plugged in (BoardParams::clocked_lanes)
+  // Where the fixed-point lanes' slices and block multipliers come from (pipeline/resource_source.h);
+  // float lanes have counting-rule estimates only, so they take the paper fit.
+  pipeline::ResourceSource resources = pipeline::ResourceSource::paper_fit;
   sc_core::sc_time irq_latency = sc_core::SC_ZERO_TIME;
 };
 

@@ -13,6 +13,8 @@ std::string DesignFit::describe() const {
                 "slices and %d block multipliers of %d and %d: %s; clock %.3f MHz",
                 lanes, bits, device.c_str(), hard_lanes, soft_lanes, slices, block_multipliers, slices_available,
                 block_multipliers_available, fits ? "fits" : "does not fit", clock_mhz);
+  // The paper fit is the default and says nothing; the other source is named (docs/pipeline.md).
+  if (resources != pipeline::ResourceSource::paper_fit) return std::string(line) + " (resources: " + choice_name(resources) + ")";
   return line;
 }
 
@@ -47,12 +49,13 @@ void place_lanes(const DeviceProfile& device, const pipeline::WrapperCost& wrapp
 DesignFit fit_design(const DeviceProfile& device, const pipeline::ResourceModel& resources, LaneCount lane_count,
                      pipeline::FracBits bits) {
   const int lanes = static_cast<int>(lane_count.value());
-  const pipeline::PipelineResources hard = resources.pipeline(bits, true);
-  const pipeline::PipelineResources soft = resources.pipeline(bits, false);
+  const pipeline::PipelineResources hard = resources.pipeline(bits, true, device.part);
+  const pipeline::PipelineResources soft = resources.pipeline(bits, false, device.part);
   const pipeline::WrapperCost wrapper = resources.wrapper();
 
   DesignFit f;
   f.bits = bits;
+  f.resources = resources.source();
   place_lanes(device, wrapper, lanes, hard, soft, f);
   f.modelled = (f.hard_lanes > 0 && (hard.interpolated || hard.extrapolated)) ||
                (f.soft_lanes > 0 && (soft.interpolated || soft.extrapolated));
@@ -63,6 +66,21 @@ int max_lanes(const DeviceProfile& device, const pipeline::ResourceModel& resour
   int lanes = 0;
   while (lanes < static_cast<int>(LaneCount::kMax) && fit_design(device, resources, lanes + 1, bits).fits) ++lanes;
   return lanes;
+}
+
+LanesBySource lanes_by_source(const DeviceProfile& device, pipeline::FracBits bits) {
+  LanesBySource out;
+  out.device = device.name;
+  out.bits = bits;
+  const auto most = [&](pipeline::ResourceSource source, DesignFit& fit) {
+    const pipeline::ResourceModel model = pipeline::ResourceModel::load_default(source);
+    const int lanes = max_lanes(device, model, bits);
+    fit = fit_design(device, model, std::max(lanes, 1), bits);
+    return lanes;
+  };
+  out.paper_lanes = most(pipeline::ResourceSource::paper_fit, out.paper);
+  out.synthesis_lanes = most(pipeline::ResourceSource::synthesis, out.synthesis);
+  return out;
 }
 
 FloatDesignFit fit_float_design(const DeviceProfile& device, const pipeline::ResourceModel& resources,

@@ -1,6 +1,7 @@
 // Does a design of L pipeline lanes at N fractional bits fit a device, and how fast does it run?
 // Resources per lane and for the wrapper come from pipeline/'s resource model (the paper's
-// synthesis results); the device's slices, block multipliers and wrapper-limited clock from its
+// synthesis results, or with ResourceSource::synthesis the synthesizer's counts for the device's
+// family, pipeline/synthesis_resources.h); the device's slices, block multipliers and wrapper-limited clock from its
 // profile (configs/devices/). docs/board.md, "Lanes that fit".
 #pragma once
 
@@ -34,6 +35,7 @@ struct DesignFit {
   double pipeline_clock_mhz = 0;  // the slowest lane implementation used, at this width
   double clock_mhz = 0;           // min(the profile's design clock for this lane count, pipeline clock)
   bool modelled = false;          // any resource figure interpolated or extrapolated (not synthesised)
+  pipeline::ResourceSource resources = pipeline::ResourceSource::paper_fit;  // where slices and blocks came from
   bool fits = false;
 
   std::string describe() const;  // one line, e.g. for errors and reports
@@ -46,6 +48,17 @@ DesignFit fit_design(const DeviceProfile& device, const pipeline::ResourceModel&
 
 // The largest lane count that fits (0 if not even one does).
 int max_lanes(const DeviceProfile& device, const pipeline::ResourceModel& resources, pipeline::FracBits bits);
+
+// The most lanes that fit under each source of resources (pipeline/resource_source.h), side by side:
+// `paper` and `synthesis` are the fits of those lane counts (of one lane, not fitting, when none fits).
+// Throws what ResourceModel::load_default(synthesis) throws (the synthesis file missing or broken).
+struct LanesBySource {
+  std::string device;
+  int bits = 0;
+  int paper_lanes = 0, synthesis_lanes = 0;
+  DesignFit paper, synthesis;
+};
+LanesBySource lanes_by_source(const DeviceProfile& device, pipeline::FracBits bits);
 
 // The same for lanes of the floating-point pipeline in `format` (pipeline::ResourceModel::float_pipeline,
 // an ESTIMATE throughout: `modelled` is always true). The device's family comes from its part

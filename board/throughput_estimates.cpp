@@ -127,8 +127,8 @@ PaperEstimate paper_rule_lanes_that_fit(const DeviceProfile& device, double soft
   return e;
 }
 
-std::vector<PaperEstimate> model_estimates(double software_rate, int bits) {
-  const pipeline::ResourceModel model = pipeline::ResourceModel::load_default();
+std::vector<PaperEstimate> model_estimates(double software_rate, int bits, pipeline::ResourceSource resources) {
+  const pipeline::ResourceModel model = pipeline::ResourceModel::load_default(resources);
   const DeviceProfile rc2000 = find_device_profile("xc2v6000");
   const DesignFit two = fit_design(rc2000, model, 2, bits);
   const StreamRate two_rate = long_pass_rate(rc2000, 2, bits);
@@ -140,12 +140,14 @@ std::vector<PaperEstimate> model_estimates(double software_rate, int bits) {
   measured.clock_assumption = format("the profile's measured 2-lane design clock, %g MHz (sec 5.5)", two.clock_mhz);
   out.push_back(measured);
 
-  for (const char* name : kEstimateDevices) out.push_back(model_lanes_that_fit(find_device_profile(name), software_rate, bits));
+  for (const char* name : kEstimateDevices)
+    out.push_back(model_lanes_that_fit(find_device_profile(name), software_rate, bits, resources));
   return out;
 }
 
-PaperEstimate model_lanes_that_fit(const DeviceProfile& device, double software_rate, int bits) {
-  const pipeline::ResourceModel model = pipeline::ResourceModel::load_default();
+PaperEstimate model_lanes_that_fit(const DeviceProfile& device, double software_rate, int bits,
+                                   pipeline::ResourceSource resources) {
+  const pipeline::ResourceModel model = pipeline::ResourceModel::load_default(resources);
   const int lanes = max_lanes(device, model, bits);
   const DesignFit fit = fit_design(device, model, std::max(lanes, 1), bits);
   const StreamRate rate = lanes > 0 ? long_pass_rate(device, lanes, bits) : StreamRate{};
@@ -153,8 +155,10 @@ PaperEstimate model_lanes_that_fit(const DeviceProfile& device, double software_
                             rate.rays_per_cycle * fit.clock_mhz * 1e6, rate.bytes_per_ray, software_rate);
   e.note = format("%g with block multipliers, %g with slice multipliers, wrapper counted; ", fit.hard_lanes,
                   fit.soft_lanes) +
-           format("%.3f rays per cycle (bound: ", rate.rays_per_cycle) + (lanes > 0 ? rate.limit : "no lane fits") + ")";
+           format("%.3f rays per cycle (bound: ", rate.rays_per_cycle) + (lanes > 0 ? rate.limit : "no lane fits") + ")" +
+           (resources == pipeline::ResourceSource::paper_fit ? "" : "; resources: " + choice_name(resources));
   e.clock_assumption = format("the profile's design clock for these lanes, %g MHz", fit.clock_mhz);
+  e.resources = resources;
   return e;
 }
 

@@ -20,6 +20,7 @@
 
 #include "board/device_profile.h"
 #include "pipeline/float_format.h"
+#include "pipeline/resource_source.h"
 
 namespace rc::board {
 
@@ -40,6 +41,7 @@ struct PaperEstimate {
   double speedup_vs_software = 0;
   std::string note;          // how the figure was reached
   std::string clock_assumption;  // which clock the rate assumes and where it comes from
+  pipeline::ResourceSource resources = pipeline::ResourceSource::paper_fit;  // the lanes' slices and blocks (model rule)
 };
 
 // Bytes one intersection moves as sec 5.6(a) counts them at `bits`: three coordinate fields read,
@@ -52,12 +54,17 @@ std::vector<PaperEstimate> paper_rule_estimates(double software_peak_rate);
 
 // Our estimate of the same questions at `bits`; `software_rate`: the calibrated host's
 // intersections per second (1 / intersection_test).
-std::vector<PaperEstimate> model_estimates(double software_rate, int bits);
+// `resources`: the source of the lanes' slices and block multipliers (the measured 2-lane design fits
+// under either).
+std::vector<PaperEstimate> model_estimates(double software_rate, int bits,
+                                           pipeline::ResourceSource resources = pipeline::ResourceSource::paper_fit);
 
 // "Lanes that fit" on any device, each rule (the same functions give the tables above): what a run's or
 // a sweep's device would do at full rate. The paper's rule is Table 1's 15-bit pipeline at 176.9 MHz.
 PaperEstimate paper_rule_lanes_that_fit(const DeviceProfile& device, double software_peak_rate);
-PaperEstimate model_lanes_that_fit(const DeviceProfile& device, double software_rate, int bits);
+// `resources`: where the lanes' slices and block multipliers come from (pipeline/resource_source.h).
+PaperEstimate model_lanes_that_fit(const DeviceProfile& device, double software_rate, int bits,
+                                   pipeline::ResourceSource resources = pipeline::ResourceSource::paper_fit);
 
 // Floating point (docs/pipeline.md, "Resources, clock and lanes that fit"): bytes one intersection
 // moves as sec 5.6(a) counts them for coordinates of 1+E+M bits packed into the bank words as the

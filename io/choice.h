@@ -52,6 +52,20 @@ E parse_choice(std::string_view text) {
                               "' is not one of: " + choice_name_list<E>());
 }
 
+// `option` NAME parsed as a choice, refused in CLI11's words for a name outside the list ("--resources:
+// yosys not in {paper,synthesis}", what the command line's add_choice_option says): for front ends that
+// check the same option without CLI11 (the Python module). Throws std::invalid_argument.
+template <class E>
+E parse_choice_option(const std::string& option, std::string_view text) {
+  const auto& names = ChoiceNames<E>::names;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (names[i] == text) return static_cast<E>(i);
+  }
+  std::string list;
+  for (std::string_view name : names) list += (list.empty() ? "" : ",") + std::string(name);
+  throw std::invalid_argument(option + ": " + std::string(text) + " not in {" + list + "}");
+}
+
 // Each of `texts` parsed (parse_choice), in order.
 template <class E>
 std::vector<E> parse_choices(const std::vector<std::string>& texts) {

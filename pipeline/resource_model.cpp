@@ -6,6 +6,7 @@
 #include <map>
 #include <mutex>
 #include <stdexcept>
+#include <utility>
 
 #include "io/config_dir.h"
 #include "pipeline/bit_bounds.h"
@@ -31,16 +32,41 @@ ResourceModel ResourceModel::from_text(const std::string& text, const std::strin
 
 std::string ResourceModel::default_path() { return io::config_dir() + "/pipeline_resources.json"; }
 
-// Read once per process and path: nothing writes the file while a command runs, and the design fit,
-// the sec 5.6 estimates and the energy estimate each ask for it (tests/scripts/profile_reads_test.sh).
-ResourceModel ResourceModel::load_default() {
+std::string ResourceModel::default_synthesis_path() { return io::config_dir() + "/synthesis_resources.json"; }
+
+// Read once per process, path and source: nothing writes the files while a command runs, and the
+// design fit, the sec 5.6 estimates and the energy estimate each ask for it
+// (tests/scripts/profile_reads_test.sh).
+ResourceModel ResourceModel::load_default(ResourceSource source) {
   static std::mutex guard;
-  static std::map<std::string, ResourceModel> loaded;
+  static std::map<std::pair<std::string, ResourceSource>, ResourceModel> loaded;
   const std::string path = default_path();
   const std::lock_guard<std::mutex> lock(guard);
-  auto it = loaded.find(path);
-  if (it == loaded.end()) it = loaded.emplace(path, load(path)).first;
+  auto it = loaded.find({path, source});
+  if (it == loaded.end()) {
+    ResourceModel m = load(path);
+    if (source == ResourceSource::synthesis) {
+      const std::string synthesis = default_synthesis_path();
+      m = m.with_synthesis(profiles::read_synthesis_table(synthesis), synthesis);
+    }
+    it = loaded.emplace(std::make_pair(path, source), std::move(m)).first;
+  }
   return it->second;
+}
+
+std::vector<PublishedSlices> ResourceModel::published_slices() const {
+  std::vector<PublishedSlices> out;
+  for (const Point& p : soft_) out.push_back({p.frac_bits, false, p.slices});
+  for (const Point& p : hard_) out.push_back({p.frac_bits, true, p.slices});
+  return out;
+}
+
+ResourceModel ResourceModel::with_synthesis(const profiles::SynthesisTable& table, const std::string& origin) const {
+  ResourceModel m = *this;
+  m.source_ = ResourceSource::synthesis;
+  m.synthesis_ = std::make_shared<const SynthesisResources>(
+      SynthesisResources::build(table, published_slices(), device_.name, origin));
+  return m;
 }
 
 ResourceModel ResourceModel::from_table(const profiles::ResourceTable& t, const std::string& origin) {
@@ -165,7 +191,21 @@ int ResourceModel::block_multipliers_needed(FracBits bits, int block_bits) {
   return total;
 }
 
-PipelineResources ResourceModel::pipeline(FracBits bits, bool use_block_multipliers) const {
+PipelineResources ResourceModel::pipeline(FracBits bits, bool use_block_multipliers, const std::string& part) const {
+  PipelineResources r = paper_pipeline(bits, use_block_multipliers);
+  if (source_ != ResourceSource::synthesis) return r;
+  // Slices and block multipliers from the synthesizer; the clock stays the paper's (or its fit).
+  const SynthesisCounts c = synthesis_->counts(part.empty() ? device_.name : part, bits, use_block_multipliers);
+  r.source = ResourceSource::synthesis;
+  r.synthesis_family = c.family;
+  r.slices = synthesis_->slices(c);
+  r.block_multipliers = c.block_multipliers;
+  r.interpolated = true;  // a fitted rule on a synthesizer's counts, never a measured figure
+  r.extrapolated = r.extrapolated || c.extrapolated;
+  return r;
+}
+
+PipelineResources ResourceModel::paper_pipeline(FracBits bits, bool use_block_multipliers) const {
   PipelineResources r;
   r.frac_bits = bits;
   r.block_multipliers_used = use_block_multipliers;
@@ -196,7 +236,7 @@ PipelineResources ResourceModel::pipeline(FracBits bits, bool use_block_multipli
     // Beyond the measured range: the soft-multiplier clock, slowed by the ratio the block
     // multipliers cost at the widest measured width (placement around fixed multiplier sites).
     const Point& last = hard_.back();
-    r.clock_mhz = pipeline(bits, false).clock_mhz * last.clock_mhz / pipeline(last.frac_bits, false).clock_mhz;
+    r.clock_mhz = paper_pipeline(bits, false).clock_mhz * last.clock_mhz / paper_pipeline(last.frac_bits, false).clock_mhz;
   }
   r.extrapolated = bits > block_synthesis_limit_;
   return r;
@@ -381,7 +421,7 @@ FloatPipelineResources ResourceModel::float_pipeline(FloatFormat format, const F
   // significand (N = p, within 7..31): the same carry chains (the significand adder is p+3+1 bits,
   // the fixed lane's add/subs N+1..N+5) and multipliers of the same block tiling.
   r.clock_frac_bits = std::clamp(format.precision(), kMinFracBits, kMaxFracBits);
-  const PipelineResources fixed = pipeline(r.clock_frac_bits, use_block_multipliers);
+  const PipelineResources fixed = paper_pipeline(r.clock_frac_bits, use_block_multipliers);  // the clock is the paper's under either source
   r.clock_mhz = fixed.clock_mhz;
   r.clock_interpolated = fixed.interpolated;
   r.clock_extrapolated = fixed.extrapolated;

@@ -9,18 +9,25 @@
 //     soft-multiplier clock by the ratio measured at 15 bits; the block multiplier count from
 //     splitting each product into 18x18 pieces (reproduces the paper's 27 and 30);
 //   * wrapper: a fixed part plus a per-lane part, solved from the 1- and 2-lane designs.
+// With ResourceSource::synthesis (with_synthesis(), load_default(synthesis)) a pipeline's slices and
+// block multipliers come from the synthesizer's counts for the device's family instead
+// (pipeline/synthesis_resources.h); the clock and the wrapper stay the paper's.
 // Floating-point lanes (float_pipeline, docs/pipeline.md "Resources, clock and lanes that fit"):
 // ESTIMATES only -- operator logic counted by documented rules, the lane's registers and glue and
 // the slice-multiplier cost scaled from the paper's fixed-point figures, the clock taken from the
 // fixed lane at the significand width -- for Virtex-II, Virtex-4 and Spartan-3.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "pipeline/fixed_format.h"
 #include "pipeline/float_format.h"
+#include "pipeline/resource_source.h"
+#include "pipeline/synthesis_resources.h"
 #include "profiles/resource_table.h"
+#include "profiles/synthesis_table.h"
 
 namespace rc::pipeline {
 
@@ -32,6 +39,8 @@ struct PipelineResources {
   double clock_mhz = 0;
   bool interpolated = false;  // not a width the paper synthesised for this option
   bool extrapolated = false;  // beyond what the paper could synthesise (block multipliers > 15 bits)
+  ResourceSource source = ResourceSource::paper_fit;  // of slices and block multipliers (clock: the paper's)
+  std::string synthesis_family;  // synthesis: the family whose counts were used ("xc4v")
 };
 
 // Handel-C wrapper logic around L pipelines: fixed_slices + L * per_lane_slices.
@@ -105,11 +114,21 @@ class ResourceModel {
   // The model of a table already read; `origin` names it in errors.
   static ResourceModel from_table(const profiles::ResourceTable& table, const std::string& origin);
   // pipeline_resources.json in io::config_dir() (io/config_dir.h).
-  static ResourceModel load_default();
+  static ResourceModel load_default(ResourceSource source = ResourceSource::paper_fit);
   static std::string default_path();
+  static std::string default_synthesis_path();  // synthesis_resources.json in io::config_dir()
 
-  // Throws std::invalid_argument for widths outside 7..31.
-  PipelineResources pipeline(FracBits bits, bool use_block_multipliers) const;
+  // This model with its slices and block multipliers from a synthesizer's table (the fit on the
+  // paper's published points is made here; throws std::runtime_error naming `origin`).
+  ResourceModel with_synthesis(const profiles::SynthesisTable& table, const std::string& origin) const;
+  ResourceSource source() const { return source_; }
+  const SynthesisResources* synthesis() const { return synthesis_.get(); }  // null with the paper fit
+  std::vector<PublishedSlices> published_slices() const;  // the paper's pipeline points
+
+  // One pipeline on a device whose part is `part` ("XC4VSX55"; empty: the paper's XC2V6000). The part
+  // matters only with the synthesis source (its family's counts). Throws std::invalid_argument for a
+  // part the synthesis file has no family for.
+  PipelineResources pipeline(FracBits bits, bool use_block_multipliers, const std::string& part = {}) const;
   WrapperCost wrapper() const { return wrapper_; }
   double wrapper_clock_mhz(int lanes) const;
   DesignResources design(int bits, bool use_block_multipliers, int lanes) const;
@@ -156,7 +175,11 @@ class ResourceModel {
   static double interpolate(const std::vector<Point>& points, int bits, double Point::*field);
   static Quadratic fit(const std::vector<Point>& points, double Point::*field);
 
+  PipelineResources paper_pipeline(FracBits bits, bool use_block_multipliers) const;
+
   Device device_;
+  ResourceSource source_ = ResourceSource::paper_fit;
+  std::shared_ptr<const SynthesisResources> synthesis_;
   int block_bits_ = 18;
   int block_synthesis_limit_ = 15;
   std::vector<Point> soft_, hard_;  // without / with block multipliers, ascending width

@@ -50,8 +50,10 @@ unsigned use_jobs(const std::optional<long long>& jobs) {
 // step (its convergence and the simulated time when it ended).
 std::string run_board(const std::string& scene_file, int patch_levels, int face_target, int steps,
                       const std::string& device, unsigned lanes, int bits, unsigned banks, bool concurrent,
-                      const std::string& host, unsigned cards, const std::optional<long long>& jobs) {
+                      const std::string& host, unsigned cards, const std::string& resources,
+                      const std::optional<long long>& jobs) {
   use_jobs(jobs);  // the fast backend's threads (the board's answers)
+  const auto source = rc::parse_choice_option<rc::pipeline::ResourceSource>("--resources", resources);  // its words too
   rc::SceneOptions scene_options;
   scene_options.file = scene_file;
   scene_options.patch_levels = patch_levels;
@@ -67,6 +69,7 @@ std::string run_board(const std::string& scene_file, int patch_levels, int face_
   o.concurrent = concurrent;
   o.host = host;
   o.cards = cards;
+  o.resources = source;
   ordered_json per_step = ordered_json::array();
   o.on_progress = [&](const rc::StepProgress& p) {
     per_step.push_back({{"step", p.step},
@@ -150,7 +153,7 @@ PYBIND11_MODULE(_core, m) {
   m.doc() = "rc2000tlm's C++ core: one board run or one study per call, once per process";
   m.def("run_board", &run_board, py::arg("scene_file"), py::arg("patch_levels"), py::arg("face_target"),
         py::arg("steps"), py::arg("device"), py::arg("lanes"), py::arg("bits"), py::arg("banks"),
-        py::arg("concurrent"), py::arg("host"), py::arg("cards"), py::arg("jobs") = py::none(),
+        py::arg("concurrent"), py::arg("host"), py::arg("cards"), py::arg("resources") = "paper", py::arg("jobs") = py::none(),
         "One board run (host_sw/platform/board_run.h); the report as JSON text");
   m.def("study_file", [](const std::string& path, bool progress, const std::optional<long long>& jobs) {
           use_jobs(jobs);

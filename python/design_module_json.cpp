@@ -128,7 +128,11 @@ const std::vector<Option>& options() {
       {"host", [](DesignOptions& o, const ordered_json& v) { o.space.host = text("host", v); },
        [](const DesignOptions& o) { return ordered_json(o.space.host); }},
       RC_TEXT_AXIS(lanes), RC_TEXT_AXIS(banks), RC_TEXT_AXIS(bank_clocks), RC_TEXT_AXIS(results), RC_TEXT_AXIS(bits),
-      RC_TEXT_AXIS(multipliers), RC_TEXT_AXIS(cards), RC_TEXT_AXIS(concurrent),
+      RC_TEXT_AXIS(multipliers),
+      {"resources", [](DesignOptions& o, const ordered_json& v) {
+         o.space.resources = parse_choice_option<pipeline::ResourceSource>("--resources", text("resources", v));
+       }, [](const DesignOptions& o) { return ordered_json(choice_name(o.space.resources)); }},
+      RC_TEXT_AXIS(cards), RC_TEXT_AXIS(concurrent),
       {"max_banks", [](DesignOptions& o, const ordered_json& v) {
          const long long n = whole("max_banks", v);
          check_design_max_banks(n);

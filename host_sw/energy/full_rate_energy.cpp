@@ -42,7 +42,7 @@ FullRateEnergy full_rate_energy(const board::PaperEstimate& e, const board::Devi
     return out;
   }
   const board::DesignFit fit =
-      board::fit_design(device, pipeline::ResourceModel::load_default(), static_cast<unsigned>(e.lanes), bits);
+      board::fit_design(device, pipeline::ResourceModel::load_default(e.resources), static_cast<unsigned>(e.lanes), bits);
   Activity a;
   a.seconds = 1.0;
   a.intersections = static_cast<std::uint64_t>(std::llround(e.intersections_per_s));

@@ -33,7 +33,7 @@ struct FieldList<DesignReport> {
       field("block_multipliers", &DesignReport::block_multipliers),
       field("block_multipliers_available", &DesignReport::block_multipliers_available),
       field("pipeline_clock_mhz", &DesignReport::pipeline_clock_mhz),
-      field("resources_modelled", &DesignReport::resources_modelled));
+      field("resources_modelled", &DesignReport::resources_modelled), field("resources", &DesignReport::resources));
 };
 template <>
 struct FieldList<DeviceReport> {
@@ -44,7 +44,8 @@ struct FieldList<DeviceReport> {
       field("bank_word_bits", &DeviceReport::bank_word_bits), field("bank_clock_hz", &DeviceReport::bank_clock_hz),
       field("pci_width_bits", &DeviceReport::pci_width_bits), field("pci_clock_hz", &DeviceReport::pci_clock_hz),
       field("pipeline_latency_cycles", &DeviceReport::pipeline_latency_cycles),
-      field("wrapper_model", &DeviceReport::wrapper_model), field("design", &DeviceReport::design));
+      field("wrapper_model", &DeviceReport::wrapper_model), field("lanes_impl", &DeviceReport::lanes_impl),
+      field("design", &DeviceReport::design));
 };
 template <>
 struct FieldList<RayGroupReport> {

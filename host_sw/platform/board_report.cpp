@@ -34,8 +34,9 @@ DeviceReport device_report(const board::BoardParams& p) {
   d.pci_clock_hz = 1.0 / seconds(p.pci.clock_period);
   d.pipeline_latency_cycles = p.timing.pipeline_latency;
   d.wrapper_model = p.model == board::WrapperModel::fast ? "fast" : "cycle";
+  d.lanes_impl = p.clocked_lanes ? p.clocked_lanes.name : "cpp";
   d.design = {p.fit.hard_lanes, p.fit.soft_lanes, p.fit.slices, p.fit.slices_available, p.fit.block_multipliers,
-              p.fit.block_multipliers_available, p.fit.pipeline_clock_mhz, p.fit.modelled};
+              p.fit.block_multipliers_available, p.fit.pipeline_clock_mhz, p.fit.modelled, choice_name(p.fit.resources)};
   return d;
 }
 

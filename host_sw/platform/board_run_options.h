@@ -53,6 +53,9 @@ struct BoardRunOptions {
   // Set: lanes plugged into the cycle-level wrapper (model must be cycle), e.g. the RTL lanes that the
   // application wires in (rtl/lanes/rtl_lanes.h; docs/board.md, "RTL lanes"). Empty: the C++ lanes.
   board::ClockedLanesFactory clocked_lanes;
+  // Where the lanes' slices and block multipliers come from (pipeline/resource_source.h): the paper fit
+  // (default) or the synthesizer's counts; decides whether the lanes fit and the design's cost.
+  pipeline::ResourceSource resources = pipeline::ResourceSource::paper_fit;
   VisibilityBackend* oracle = nullptr;  // lanes' answer from a bit-identical host model (BoardVisibilityOptions)
   bool print_summaries = false;         // the tlm parts' one-line summaries at the end
   std::function<void(const StepProgress&)> on_progress;  // after every step (host thread)

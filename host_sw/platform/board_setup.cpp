@@ -14,6 +14,7 @@ BoardSetup make_board_setup(const BoardRunOptions& o) {
   c.bank_capacity_bytes = o.bank_capacity_bytes;
   c.model = o.model;
   c.clocked_lanes = o.clocked_lanes;
+  c.resources = o.resources;
   c.irq_latency = s.host.interrupt_latency;
   s.board = board::make_board_params(device, c);
   s.board.report_at_end = o.print_summaries;

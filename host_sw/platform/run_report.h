@@ -36,6 +36,7 @@ struct DesignReport {
   int slices = 0, slices_available = 0, block_multipliers = 0, block_multipliers_available = 0;
   double pipeline_clock_mhz = 0;
   bool resources_modelled = false;
+  std::string resources = "paper";  // where slices and block multipliers came from: "paper" or "synthesis"
 };
 
 struct DeviceReport {
@@ -51,6 +52,7 @@ struct DeviceReport {
   double pci_clock_hz = 0;
   unsigned pipeline_latency_cycles = 0;
   std::string wrapper_model;  // "fast" or "cycle"
+  std::string lanes_impl = "cpp";  // the lanes' implementation: "cpp" (the C++ pipeline) or "rtl" (Verilated)
   DesignReport design;
 };
 

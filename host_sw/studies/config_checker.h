@@ -46,8 +46,11 @@ class ConfigChecker {
   // Throws std::invalid_argument for an unknown device or host profile, or a fixed setting the
   // profiles reject: that is a bad option, not a configuration that cannot exist. `fixed` applies
   // to every configuration before its own settings; `study` names the study in errors and sources.
+  // `resources`: where the lanes' slices and block multipliers come from (pipeline/resource_source.h);
+  // the boards it passes carry it.
   ConfigChecker(const std::vector<std::string>& devices, const std::vector<std::string>& hosts,
-                const std::vector<ProfileSetting>& fixed = {}, const std::string& study = "command line");
+                const std::vector<ProfileSetting>& fixed = {}, const std::string& study = "command line",
+                pipeline::ResourceSource resources = pipeline::ResourceSource::paper_fit);
   ConfigChecker(const std::vector<std::string>& devices, const std::string& host)
       : ConfigChecker(devices, std::vector<std::string>{host}) {}
 
@@ -67,6 +70,7 @@ class ConfigChecker {
   board::DeviceProfile device(const SweepConfig& config) const;       // with the configuration's settings too
   HostProfile host(const SweepConfig& config) const;
   const std::string& first_host() const { return host_order_.front(); }
+  const pipeline::ResourceModel& resources() const { return resources_; }  // of the source it was made with
 
  private:
   std::map<std::string, board::DeviceProfile> devices_;
@@ -74,6 +78,7 @@ class ConfigChecker {
   std::vector<std::string> host_order_;
   pipeline::ResourceModel resources_;
   std::string study_;
+  pipeline::ResourceSource source_;
 };
 
 }  // namespace rc

@@ -85,6 +85,8 @@ std::string run_command(const DesignDocument& doc, const DesignPoint& p, const s
                     std::to_string(c.bits);
   if (c.cards > 1) cmd += " --cards " + std::to_string(c.cards);
   if (c.concurrent) cmd += " --concurrent";
+  // The source of resources decides whether the lanes fit: the run must use the search's.
+  if (doc.space.resources != pipeline::ResourceSource::paper_fit) cmd += " --resources " + choice_name(doc.space.resources);
   cmd += scene_arguments(w.scene) + " --steps " + std::to_string(doc.result.steps) + " --form-factor " + to_string(w.form_factor);
   if (w.paper_faithful) cmd += " --paper-faithful";
   return cmd + " --out " + doc.out_dir + "/best-run";
@@ -101,6 +103,7 @@ Json design_json(const DesignDocument& doc) {
                       {"min_bits", doc.constraints.min_bits},
                       {"max_energy_joules", finite_or_null(doc.constraints.max_energy_joules)},
                       {"max_watts", finite_or_null(doc.constraints.max_watts)}};
+  j["resources"] = choice_name(doc.space.resources);  // where the lanes' slices and block multipliers came from
   j["designs"] = r.designs;
   j["infeasible"] = r.infeasible;
   j["pruned_spare_banks"] = r.pruned;

@@ -94,7 +94,7 @@ std::vector<DesignCandidate> enumerate_designs(const DesignSpace& space, const D
   std::vector<int> banks = space.banks;
   if (banks.empty())
     for (unsigned b = board::kMinBanks; b <= max_banks; ++b) banks.push_back(static_cast<int>(b));
-  const pipeline::ResourceModel resources = pipeline::ResourceModel::load_default();
+  const pipeline::ResourceModel resources = pipeline::ResourceModel::load_default(space.resources);
   std::vector<DesignCandidate> out;
   for (int bits : space.bits) {
     if (bits < constraints.min_bits) continue;
@@ -266,7 +266,7 @@ void note_infeasible(DesignSearchResult& r, const std::vector<DesignCandidate>& 
 
 DesignSearchResult search_designs(const Workload& workload, BitExactVisibility visibility, const DesignSpace& space,
                                   const DesignConstraints& constraints, bool exhaustive, const Progress& progress) {
-  const ConfigChecker checker({space.device, "xc2v6000"}, space.host);
+  const ConfigChecker checker({space.device, "xc2v6000"}, {space.host}, {}, "command line", space.resources);
   DesignSearchResult r;
   r.device = space.device;
   r.workload = workload;

@@ -57,6 +57,8 @@ struct DesignSpace {
   std::vector<Multipliers> multipliers = {Multipliers::block, Multipliers::slice};
   std::vector<int> cards = {1};
   std::vector<bool> concurrent = {true};
+  // Not an axis: where the lanes' slices and block multipliers come from (which lane counts fit).
+  pipeline::ResourceSource resources = pipeline::ResourceSource::paper_fit;
 };
 
 struct DesignConstraints {

@@ -24,7 +24,7 @@ Sec56Search plan_one(const ConfigChecker& checker, const std::string& device, co
   s.device = device;
   s.assumption = full_rate ? "full-rate banks" : "profile banks";
   s.bank_clock_mhz = profile.bank_clock_mhz;
-  const int most = board::max_lanes(profile, pipeline::ResourceModel::load_default(), 15);
+  const int most = board::max_lanes(profile, checker.resources(), 15);
   s.max_banks = full_rate ? std::min(board::banks_for_full_rate(profile, std::max(most, 1), 15) + 1, 64u) : profile.bank_count;
   DesignSpace space;
   space.device = device;
@@ -91,8 +91,10 @@ board::PaperEstimate Sec56Search::estimate(double software_rate) const {
   return e;
 }
 
-std::vector<Sec56Search> plan_sec56_searches(const std::string& host, std::uint64_t rays, std::uint64_t faces) {
-  const ConfigChecker checker(std::vector<std::string>(std::begin(kSec56Devices), std::end(kSec56Devices)), host);
+std::vector<Sec56Search> plan_sec56_searches(const std::string& host, std::uint64_t rays, std::uint64_t faces,
+                                             pipeline::ResourceSource resources) {
+  const ConfigChecker checker(std::vector<std::string>(std::begin(kSec56Devices), std::end(kSec56Devices)), {host}, {},
+                              "command line", resources);
   std::vector<Sec56Search> out;
   for (const char* device : kSec56Devices)
     for (bool full_rate : {false, true}) out.push_back(plan_one(checker, device, host, full_rate, rays, faces));

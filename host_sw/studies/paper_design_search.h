@@ -51,7 +51,9 @@ struct Sec56Search {
 
 // The searches of every device and assumption, planned (designs checked and ranked by the formula).
 // `rays`, `faces`: one step's segments and the scene's faces, for the formula.
-std::vector<Sec56Search> plan_sec56_searches(const std::string& host, std::uint64_t rays, std::uint64_t faces);
+// `resources`: where the lanes' slices and block multipliers come from (which lane counts fit).
+std::vector<Sec56Search> plan_sec56_searches(const std::string& host, std::uint64_t rays, std::uint64_t faces,
+                                             pipeline::ResourceSource resources = pipeline::ResourceSource::paper_fit);
 // Appends the simulated designs' timing cases on `scene` (its recording, the paper's steps).
 void add_sec56_cases(std::vector<Sec56Search>& searches, const PaperScene& scene, std::vector<TimingCase>& cases);
 // Reads the outcomes back and picks each search's best by simulated time.

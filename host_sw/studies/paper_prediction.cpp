@@ -197,7 +197,7 @@ PaperSummary summarize(const PaperPrediction& r) {
 
 PaperPrediction predict_paper(const std::vector<PaperScene>& scenes, const std::vector<PaperRow>& rows,
                               const std::string& host_name, const HostProfile& host,
-                              const std::vector<CalibratedVariant>& variants) {
+                              const std::vector<CalibratedVariant>& variants, pipeline::ResourceSource resources) {
   std::vector<TimingCase> cases;
   for (const PaperScene& s : scenes) {
     for (int impl = 0; impl < kPaperImplementations; ++impl) {
@@ -211,7 +211,7 @@ PaperPrediction predict_paper(const std::vector<PaperScene>& scenes, const std::
   const std::optional<std::size_t> workload = sec56_scene(scenes);
   if (workload) {
     const PaperScene& s = scenes[*workload];
-    r.searched = plan_sec56_searches(host_name, s.scene.patches.size(), s.scene.faces.size());
+    r.searched = plan_sec56_searches(host_name, s.scene.patches.size(), s.scene.faces.size(), resources);
     add_sec56_cases(r.searched, s, cases);
   }
   std::vector<double> errors;
@@ -223,7 +223,8 @@ PaperPrediction predict_paper(const std::vector<PaperScene>& scenes, const std::
   r.outcomes = run_timing_study(cases);
   if (workload) collect_sec56(r.searched, r.outcomes, scenes[*workload].row.steps);
   r.paper_rule = board::paper_rule_estimates(measured_peak_software_rate(rows));
-  r.model = board::model_estimates(1.0 / host.work[static_cast<int>(HostWork::IntersectionTest)].to_seconds(), 15);
+  r.model = board::model_estimates(1.0 / host.work[static_cast<int>(HostWork::IntersectionTest)].to_seconds(), 15,
+                                   resources);
   return r;
 }
 

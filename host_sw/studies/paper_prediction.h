@@ -141,9 +141,11 @@ PaperSummary summarize(const PaperPrediction& prediction);
 
 // `host`: the profile of the main columns (by name, as `rc2000sim paper --host` gives it, and
 // loaded); `variants`: the calibrated variants (load_calibrated_variants). Runs the timing study
-// (once per process).
+// (once per process). `resources`: the source of the sec 5.6 design searches' lane fits (Table 2's
+// two-lane design is measured: it fits under either).
 PaperPrediction predict_paper(const std::vector<PaperScene>& scenes, const std::vector<PaperRow>& rows,
                               const std::string& host_name, const HostProfile& host,
-                              const std::vector<CalibratedVariant>& variants);
+                              const std::vector<CalibratedVariant>& variants,
+                              pipeline::ResourceSource resources = pipeline::ResourceSource::paper_fit);
 
 }  // namespace rc

@@ -5,6 +5,8 @@
 // study_json() (study_json.h); study_from_json() reads that record back (`sweep merge` plans from it).
 #pragma once
 
+#include "pipeline/resource_source.h"
+
 #include <string>
 #include <vector>
 
@@ -44,6 +46,9 @@ struct Study {
     return scene.form_factor.empty() ? form_factor : scene.form_factor;
   }
   bool full_banks = false;          // false: banks as small as change no pass (compact_bank_capacity)
+  // Where the lanes' slices and block multipliers come from (pipeline/resource_source.h): decides
+  // which lane counts fit each device; the study file's top-level `resources`, sweep's --resources.
+  pipeline::ResourceSource resources = pipeline::ResourceSource::paper_fit;
   SweepAxes axes;
   std::vector<ProfileSetting> fixed;  // applied to every configuration's profiles
 };

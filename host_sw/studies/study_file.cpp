@@ -438,12 +438,19 @@ Study parse_study_text(const std::string& text, const std::string& path) {
                                            : ""));
   }
   const Reader r(path);
-  r.only(root, "", {"name", "description", "scenes", "solver", "axes", "fixed"});
+  r.only(root, "", {"name", "description", "resources", "scenes", "solver", "axes", "fixed"});
   Study s = default_study();
   s.file = path;
   s.name = std::filesystem::path(path).stem().string();
   if (const toml::node* n = root.get("name")) s.name = r.text(*n, "name");
   if (const toml::node* n = root.get("description")) s.description = r.text(*n, "description");
+  if (const toml::node* n = root.get("resources")) {
+    try {
+      s.resources = parse_choice<pipeline::ResourceSource>(r.text(*n, "resources"));
+    } catch (const std::invalid_argument& e) {
+      r.fail(*n, "resources", e.what());
+    }
+  }
   if (root.contains("scenes")) read_scenes(r, *root.get("scenes"), s);
   if (root.contains("solver")) read_solver(r, table_at(r, root, "solver"), s);
   // Axes before fixed settings: profile paths resolve against the devices and hosts swept.

@@ -89,17 +89,18 @@ def _submit_all(calls, progress, what, show_worker_progress=False, workers=1):
 
 
 def _run_kwargs(scene=None, patch_levels=3, faces=0, steps=0, device="xc2v6000", lanes=1, bits=15, banks=0,
-                concurrent=False, host="athlon-mp-2600-calibrated", cards=1, jobs=None):
+                concurrent=False, host="athlon-mp-2600-calibrated", cards=1, resources="paper", jobs=None):
     return {"scene_file": "" if scene is None else os.path.abspath(scene), "patch_levels": patch_levels,
             "face_target": faces, "steps": steps, "device": device, "lanes": lanes, "bits": bits, "banks": banks,
-            "concurrent": concurrent, "host": host, "cards": cards, "jobs": jobs}
+            "concurrent": concurrent, "host": host, "cards": cards, "resources": resources, "jobs": jobs}
 
 
 def run(**options):
     """One board run (`rc2000sim run --impl board`; the defaults are its defaults): scene (a scene file;
     None: the embedded Cornell Box), patch_levels, faces (refine to this many faces first; 0: as is),
     steps (0: to convergence), device, lanes, bits, banks (0: the profile's), concurrent, host, cards,
-    jobs (the fast backend's threads, as --jobs; None: the rule's). Returns a RunResult."""
+    resources ("paper" or "synthesis", as --resources: where the lanes' slices and block multipliers come
+    from), jobs (the fast backend's threads, as --jobs; None: the rule's). Returns a RunResult."""
     return RunResult(_submit_all([("run_board", _run_kwargs(**options))], False, "runs")[0])
 
 
@@ -137,11 +138,14 @@ def _toml_key(k):
     return k if k.replace("_", "").replace("-", "").isalnum() else json.dumps(k)
 
 
-def study_text(scenes=None, steps=None, name="python", fixed=None, **axes):
+def study_text(scenes=None, steps=None, name="python", fixed=None, resources=None, **axes):
     """The study file (TOML) that sweep() runs: scenes as [[scenes]] tables, steps under [solver],
-    the keyword arguments under [axes] (as a study file spells them: devices, bits, lanes, banks,
+    resources ("paper" or "synthesis", the study's top-level key; None: the study default, paper), the
+    keyword arguments under [axes] (as a study file spells them: devices, bits, lanes, banks,
     concurrent, "banks.clock_mhz", ...) and `fixed` under [fixed]."""
     lines = ["name = %s" % _toml_value(name)]
+    if resources is not None:
+        lines.append("resources = %s" % _toml_value(resources))
     for s in scenes or []:
         lines += ["", "[[scenes]]"] + ["%s = %s" % (_toml_key(k), _toml_value(v)) for k, v in s.items()]
     if steps is not None:
@@ -153,11 +157,11 @@ def study_text(scenes=None, steps=None, name="python", fixed=None, **axes):
     return "\n".join(lines) + "\n"
 
 
-def sweep(scenes=None, steps=None, name="python", fixed=None, progress=False, jobs=None, **axes):
+def sweep(scenes=None, steps=None, name="python", fixed=None, resources=None, progress=False, jobs=None, **axes):
     """A sweep as a study (docs/studies.md) made from the arguments (study_text shows the file);
-    scenes: None for the study default (the paper's scene); jobs: as --jobs (None: the rule's).
-    Returns a SweepResult."""
-    text = study_text(scenes=scenes, steps=steps, name=name, fixed=fixed, **axes)
+    scenes: None for the study default (the paper's scene); resources: as --resources (None: paper);
+    jobs: as --jobs (None: the rule's). Returns a SweepResult."""
+    text = study_text(scenes=scenes, steps=steps, name=name, fixed=fixed, resources=resources, **axes)
     kwargs = {"text": text, "name": "rc2000tlm.sweep(%s)" % name, "progress": progress, "jobs": jobs}
     return SweepResult.from_core(_submit_all([("study_text", kwargs)], False, "studies", progress)[0])
 
@@ -187,7 +191,7 @@ def design(progress=False, **options):
     device for one workload and the Pareto front of time, energy and banks, every figure simulated.
     The options are the command's, by the same names in snake_case (scene, faces, face_levels,
     patch_levels, patch_size, steps, culled, form_factor, device, host, lanes, banks, bank_clocks,
-    results, bits, multipliers, cards, concurrent, max_banks, min_bits, max_energy, max_power,
+    results, bits, multipliers, resources, cards, concurrent, max_banks, min_bits, max_energy, max_power,
     exhaustive, jobs), with the command's defaults (design_defaults() lists them); an axis takes the
     command's text ("1-4"), a list ([1, 2, 4]) or one value. An option the command does not have is a
     TypeError; a value it refuses is a ValueError with its message. progress: the search's phases on

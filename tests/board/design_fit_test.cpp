@@ -114,5 +114,29 @@ TEST(DesignFit, FloatLanesThatFitByHand) {
   EXPECT_EQ(fit_float_design(find_device_profile("virtex4-sx55"), model, 1, pipeline::FloatFormat(5, 10)).block_multiplier, "DSP48");
 }
 
+// Lanes that fit under each source, against the fit's arithmetic done by hand from the device
+// profile: wrapper F + L (w + P) slices and L * blocks block multipliers, block lanes first.
+TEST(DesignFit, LanesThatFitOnTheSec56DevicesUnderBothSourcesOfResources) {
+  for (const char* name : {"xc2v6000", "virtex4-sx55", "spartan3-5000"}) {
+    const DeviceProfile device = find_device_profile(name);
+    const LanesBySource l = lanes_by_source(device, 15);
+    for (pipeline::ResourceSource source : {pipeline::ResourceSource::paper_fit, pipeline::ResourceSource::synthesis}) {
+      const pipeline::ResourceModel m = pipeline::ResourceModel::load_default(source);
+      const pipeline::PipelineResources hard = m.pipeline(15, true, device.part), soft = m.pipeline(15, false, device.part);
+      const pipeline::WrapperCost w = m.wrapper();
+      int most = 0;
+      for (int lanes = 1; lanes <= 255; ++lanes) {
+        const int block_lanes = std::min(lanes, (device.block_multipliers - w.block_multipliers) / hard.block_multipliers);
+        const int slices = w.fixed_slices + lanes * w.per_lane_slices + block_lanes * hard.slices + (lanes - block_lanes) * soft.slices;
+        if (slices > device.slices) break;
+        most = lanes;
+      }
+      const int got = source == pipeline::ResourceSource::synthesis ? l.synthesis_lanes : l.paper_lanes;
+      EXPECT_EQ(got, most) << name << " " << choice_name(source);
+      EXPECT_EQ((source == pipeline::ResourceSource::synthesis ? l.synthesis : l.paper).resources, source);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace rc::board

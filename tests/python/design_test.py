@@ -127,7 +127,8 @@ bad = [({"max_banks": 65}, ["--max-banks", "65"]), ({"max_banks": 4}, ["--max-ba
        ({"form_factor": "exact"}, ["--form-factor", "exact"]), ({"scene": "no-such.scene"}, ["--scene", "no-such.scene"]),
        ({"patch_size": 0.1}, ["--patch-levels", "1", "--patch-size", "0.1"]),
        ({"min_bits": 23, "bits": 15}, ["--min-bits", "23", "--bits", "15"]),
-       ({"jobs": 0}, ["--jobs", "0"]), ({"jobs": 513}, ["--jobs", "513"])]
+       ({"jobs": 0}, ["--jobs", "0"]), ({"jobs": 513}, ["--jobs", "513"]),
+       ({"resources": "yosys"}, ["--resources", "yosys"])]
 for options, flags in bad:
     given = dict(base, **dict(zip(flags[::2], flags[1::2])))  # the bad values in place of the space's
     done = command(*[x for pair in given.items() for x in pair], "--quiet", "--out", os.path.join(work, "bad"))
@@ -172,5 +173,23 @@ except ValueError as e:
 else:
     sys.exit("run_many accepted jobs=600")
 print("5. jobs=: the rule's count (RC2000SIM_JOBS too), and the command's refusal of 0 and 600")
+
+# 6. resources= of run() (`run --resources`): the source the report names, a lane count that fits only under
+# the paper fit refused with the run's message, and an unknown source refused naming the option.
+one = rc2000tlm.run(steps=1, patch_levels=1, device="virtex4-sx55", lanes=1, resources="synthesis")
+assert one.board["device"]["design"]["resources"] == "synthesis", one.board["device"]["design"]
+done = subprocess.run([sim, "run", "--impl", "board", "--device", "virtex4-sx55", "--lanes", "10", "--banks", "17",
+                       "--resources", "synthesis", "--steps", "1", "--quiet", "--out", os.path.join(work, "bad")],
+                      capture_output=True, text=True)
+assert done.returncode != 0 and "(resources: synthesis)" in done.stderr, done.stderr
+for options, expected in (({"lanes": 10, "banks": 17, "resources": "synthesis"}, "(resources: synthesis)"),
+                          ({"resources": "yosys"}, "--resources: yosys not in {paper,synthesis}")):
+    try:
+        rc2000tlm.run(steps=1, patch_levels=1, device="virtex4-sx55", **options)
+    except ValueError as e:
+        assert expected in str(e), (options, str(e))
+    else:
+        sys.exit("run() accepted %r" % options)
+print("6. resources=: the report names the source; a design that does not fit under it, and an unknown source, refused")
 subprocess.run(["rm", "-rf", work])
 print("PASS: rc2000tlm.design() is rc2000sim design")

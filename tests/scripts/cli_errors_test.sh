@@ -84,7 +84,7 @@ refused "$work/o" "--patch-size 1e-09: face 0: patches of at most 1e-09 need mor
 
 echo "2. options that do not apply"
 for option in "--lanes 2" "--banks 6" "--concurrent" "--device xc2v6000" "--host athlon-mp-2600" "--trace $work/t.json" \
-              "--vcd $work/v.vcd" "--cards 2" "--lanes-compute" "--lanes-impl rtl"; do
+              "--vcd $work/v.vcd" "--cards 2" "--lanes-compute" "--lanes-impl rtl" "--resources synthesis"; do
   # shellcheck disable=SC2086  # the option and its value are two words
   refused "$work/o" "${option%% *} applies to --impl board only" run "${tiny[@]}" $option --out "$work/o"
 done
@@ -94,6 +94,8 @@ refused "$work/o" "--lanes-impl rtl: the RTL pipeline is fixed-point; it does no
 refused "$work/o" "--lanes-impl rtl: " "${board[@]}" --lanes-impl rtl --bits 8 --out "$work/o"  # no model at 8 bits (or no Verilator)
 refused "$work/o" "--lanes-compute does not apply with --lanes-impl rtl" "${board[@]}" --lanes-impl rtl --lanes-compute --out "$work/o"
 refused "$work/o" "--lanes-impl: verilog not in {cpp,rtl}" "${board[@]}" --lanes-impl verilog --out "$work/o"
+refused "$work/o" "--resources applies to fixed-point lanes only" "${board[@]}" --arith float:5,10 --resources synthesis --out "$work/o"
+refused "$work/o" "--resources: yosys not in {paper,synthesis}" "${board[@]}" --resources yosys --out "$work/o"
 refused "$work/o" "--bits does not apply with --visibility float" run "${tiny[@]}" --bits 12 --out "$work/o"
 refused "$work/o" "--bits does not apply with --arith float:5,10" run "${tiny[@]}" --arith float:5,10 --bits 12 --out "$work/o"
 refused "$work/o" "--steps must be at least 1; omit it to run to convergence" run --steps 0 --quiet --out "$work/o"
@@ -118,6 +120,7 @@ refused "$work/o" "--shard: expected I/N" sweep --study "$root/tests/host_sw/stu
 refused "$work/o" "--study is empty: name a study file" sweep --study "" --out "$work/o"
 refused "$work/o" "--shard is empty: expected I/N" sweep --study "$root/tests/host_sw/studies/data/small.toml" --shard "" --out "$work/o"
 refused "$work/o" "--lanes does not apply with --study" sweep --study "$root/tests/host_sw/studies/data/small.toml" --lanes 2 --out "$work/o"
+refused "$work/o" "--resources does not apply with --study" sweep --study "$root/tests/host_sw/studies/data/small.toml" --resources synthesis --out "$work/o"
 # --jobs and RC2000SIM_JOBS (docs/outputs.md, "Cores: --jobs and RC2000SIM_JOBS"): one check everywhere.
 for command in paper design sweep calibrate adaptive bench accuracy; do
   refused "$work/o" "--jobs must be 1..512 (worker processes and threads; default: the " $command --jobs 0 --quiet --out "$work/o"

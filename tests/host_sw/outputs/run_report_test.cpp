@@ -51,9 +51,10 @@ RunReport every_field_set() {
   for (WorkTally& w : r.work) w = {f.count(), f.real()};
   BoardDetail& b = r.board;
   b.device = {f.text(), f.count(), -static_cast<int>(f.count()), f.real(), f.count(), f.count(), f.count(), f.real(),
-              f.count(), f.real(), f.count(), f.text(), {}};
+              f.count(), f.real(), f.count(), f.text(), f.text(), {}};
   b.device.design = {static_cast<int>(f.count()), static_cast<int>(f.count()), static_cast<int>(f.count()),
-                     static_cast<int>(f.count()), static_cast<int>(f.count()), static_cast<int>(f.count()), f.real(), true};
+                     static_cast<int>(f.count()), static_cast<int>(f.count()), static_cast<int>(f.count()), f.real(), true,
+                     f.text()};
   b.layout = {f.count(), f.count(), f.count(), f.count(), f.text(), {}, {f.count(), f.count()}, f.real()};
   b.layout.ray_groups = {{{f.count(), f.count()}, f.count(), f.count(), f.real()}, {{f.count()}, f.count(), f.count(), f.real()}};
   b.max_rays_per_batch = f.count();
@@ -110,6 +111,8 @@ void expect_same_board(const BoardDetail& a, const BoardDetail& b) {
   EXPECT_EQ(d.pci_clock_hz, e.pci_clock_hz);
   EXPECT_EQ(d.pipeline_latency_cycles, e.pipeline_latency_cycles);
   EXPECT_EQ(d.wrapper_model, e.wrapper_model);
+  EXPECT_EQ(d.lanes_impl, e.lanes_impl);
+  EXPECT_EQ(d.design.resources, e.design.resources);
   EXPECT_EQ(d.design.block_multiplier_lanes, e.design.block_multiplier_lanes);
   EXPECT_EQ(d.design.slice_multiplier_lanes, e.design.slice_multiplier_lanes);
   EXPECT_EQ(d.design.slices, e.design.slices);

@@ -93,6 +93,17 @@ concurrent = "both"
   EXPECT_EQ(s.scenes[0].name, "two-rooms");
 }
 
+// The source of resources (docs/pipeline.md, "Two sources of resources"): a top-level key, recorded in
+// study.json only when not the paper fit (so earlier records read as before), read back the same.
+TEST(StudyFile, ResourcesAreTheStudysSourceOfSlicesAndBlockMultipliers) {
+  EXPECT_EQ(parse("").resources, pipeline::ResourceSource::paper_fit);
+  EXPECT_FALSE(study_json(parse("")).contains("resources"));
+  const Study s = parse("resources = \"synthesis\"\n");
+  EXPECT_EQ(s.resources, pipeline::ResourceSource::synthesis);
+  EXPECT_EQ(study_json(s).at("resources"), "synthesis");
+  EXPECT_EQ(study_from_json(study_json(s)).resources, pipeline::ResourceSource::synthesis);
+}
+
 TEST(StudyFile, BadStudiesNameTheFileTheLineTheKeyAndTheLimit) {
   struct Case {
     const char* text;
@@ -116,6 +127,7 @@ TEST(StudyFile, BadStudiesNameTheFileTheLineTheKeyAndTheLimit) {
       {"[axes]\nbanks.clock_mhz = { from = 0, to = 1e308, step = 1e-308 }\n", {"spans more than 10^18", "at most 10000"}},
       {"[axes]\n\"banks.clock_mhz\" = [100]\n[fixed]\n\"banks.clock_mhz\" = 90\n", {"both an axis and fixed"}},
       {"[solver]\nsteps = 0\n", {"inline.toml:2", "solver.steps", "1..10000000"}},
+      {"resources = \"yosys\"\n", {"inline.toml:1", "resources", "'yosys' is not one of: paper, synthesis"}},
       {"[solver]\nsteps = \"often\"\n", {"inline.toml:2", "solver.steps"}},
       {"[solver]\nconvergence = 1.5\n", {"inline.toml:2", "strictly between 0 and 1"}},
       {"[solver]\nvisibility = \"exact\"\n", {"inline.toml:2", "is not one of: fixed, fast"}},

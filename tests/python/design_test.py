@@ -9,7 +9,8 @@ build tree's package:
      shows;
   4. values the command refuses raise ValueError with the command's message (naming the option and
      the limit); an option the command does not have is a TypeError;
-  5. jobs= of run_many, paper, run and sweep: checked as `--jobs` is, with its message.
+  5. jobs= of run_many, paper, run and sweep: checked as `--jobs` is, with its message;
+  6. resources= of run() and sweep() (`--resources`): the source the report names and the lanes it lets fit.
 Prints "SKIP: <reason>" and exits 77 without pandas or the module.
 usage: design_test.py RC2000SIM BUILD_DIR"""
 import glob
@@ -190,6 +191,15 @@ for options, expected in (({"lanes": 10, "banks": 17, "resources": "synthesis"},
         assert expected in str(e), (options, str(e))
     else:
         sys.exit("run() accepted %r" % options)
-print("6. resources=: the report names the source; a design that does not fit under it, and an unknown source, refused")
+# sweep(resources=) writes the study file's top-level key: ten block-multiplier lanes fit the SX55 under the
+# paper fit (23,346 slices of 24,576) and not under the synthesis (24,836), so its row says why.
+fits = {}
+for source in ("paper", "synthesis"):
+    rows = rc2000tlm.sweep(lanes=[9, 10], banks=[17], devices=["virtex4-sx55"], steps=2, resources=source,
+                           scenes=[{"faces": 70, "patch_levels": 1}]).rows
+    fits[source] = [not row.get("reason") for row in rows]
+assert fits == {"paper": [True, True], "synthesis": [True, False]}, fits
+assert 'resources = "synthesis"' in rc2000tlm.workers.study_text(resources="synthesis")
+print("6. resources=: the report names the source; a design that does not fit under it, and an unknown source, refused; sweep(resources=) decides which lanes fit")
 subprocess.run(["rm", "-rf", work])
 print("PASS: rc2000tlm.design() is rc2000sim design")

@@ -85,7 +85,8 @@ void print_resources(const rc::pipeline::ResourceModel& model) {
   }
 }
 
-void print_synthesis(const rc::pipeline::ResourceModel& model) {
+// `paper`: the model the synthesis source was made from (its figures beside); `model`: with the synthesis.
+void print_synthesis(const rc::pipeline::ResourceModel& paper, const rc::pipeline::ResourceModel& model) {
   const rc::pipeline::SynthesisResources& syn = *model.synthesis();
   const rc::pipeline::SynthesisSliceFit& fit = syn.fit();
   std::printf("\n## The synthesis source\n\n");
@@ -103,18 +104,16 @@ void print_synthesis(const rc::pipeline::ResourceModel& model) {
               "extrapolated beyond them; paper-fit slices beside).\n\n");
   std::printf("| family | bits | slices | paper fit | slices (block mults) | block mults | paper fit (block mults) | paper block mults |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
-  const rc::pipeline::ResourceModel paper = rc::pipeline::ResourceModel::load(rc::pipeline::ResourceModel::default_path());
+  // The counts' own flags: under the synthesis source every figure is a fitted rule (`interpolated`),
+  // so whether the synthesizer ran at this width is read from the counts.
+  const auto mark = [](const rc::pipeline::SynthesisCounts& c) { return c.extrapolated ? "!" : (c.interpolated ? "*" : ""); };
   for (const char* part : {"XC2V", "XC3S", "XC4V"}) {
     for (int bits = rc::pipeline::kMinFracBits; bits <= rc::pipeline::kMaxFracBits; ++bits) {
-      const auto counts = [&](bool hard) { return syn.counts(part, bits, hard); };
       const auto soft = model.pipeline(bits, false, part), hard = model.pipeline(bits, true, part);
-      const auto mark = [&](bool h) {
-        const rc::pipeline::SynthesisCounts c = counts(h);
-        return c.extrapolated ? "!" : (c.interpolated ? "*" : "");
-      };
-      std::printf("| %s | %d | %d%s | %d | %d%s | %d | %d | %d |\n", soft.synthesis_family.c_str(), bits, soft.slices, mark(false),
-                  paper.pipeline(bits, false).slices, hard.slices, mark(true), hard.block_multipliers,
-                  paper.pipeline(bits, true).slices, paper.pipeline(bits, true).block_multipliers);
+      const auto paper_soft = paper.pipeline(bits, false), paper_hard = paper.pipeline(bits, true);
+      std::printf("| %s | %d | %d%s | %d | %d%s | %d | %d | %d |\n", soft.synthesis_family.c_str(), bits, soft.slices,
+                  mark(syn.counts(part, bits, false)), paper_soft.slices, hard.slices, mark(syn.counts(part, bits, true)),
+                  hard.block_multipliers, paper_hard.slices, paper_hard.block_multipliers);
     }
   }
 }
@@ -143,7 +142,7 @@ int sc_main(int argc, char* argv[]) {
     print_register_widths();
     print_resources(model);
     const std::string synthesis_path = argc > 2 ? argv[2] : rc::pipeline::ResourceModel::default_synthesis_path();
-    print_synthesis(model.with_synthesis(rc::profiles::read_synthesis_table(synthesis_path), synthesis_path));
+    print_synthesis(model, model.with_synthesis(rc::profiles::read_synthesis_table(synthesis_path), synthesis_path));
     for (int bits : {15, 23}) print_lanes_by_source(bits);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -41,13 +42,20 @@ std::string choice_name_list() {
   return list;
 }
 
-// The choice named `text`; std::invalid_argument naming the text and every name otherwise.
+// The choice named `text`, if one is (the lookup both parsers below share).
 template <class E>
-E parse_choice(std::string_view text) {
+std::optional<E> find_choice(std::string_view text) {
   const auto& names = ChoiceNames<E>::names;
   for (std::size_t i = 0; i < names.size(); ++i) {
     if (names[i] == text) return static_cast<E>(i);
   }
+  return std::nullopt;
+}
+
+// The choice named `text`; std::invalid_argument naming the text and every name otherwise.
+template <class E>
+E parse_choice(std::string_view text) {
+  if (const std::optional<E> value = find_choice<E>(text)) return *value;
   throw std::invalid_argument(std::string(ChoiceNames<E>::what) + " '" + std::string(text) +
                               "' is not one of: " + choice_name_list<E>());
 }
@@ -57,12 +65,9 @@ E parse_choice(std::string_view text) {
 // check the same option without CLI11 (the Python module). Throws std::invalid_argument.
 template <class E>
 E parse_choice_option(const std::string& option, std::string_view text) {
-  const auto& names = ChoiceNames<E>::names;
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    if (names[i] == text) return static_cast<E>(i);
-  }
+  if (const std::optional<E> value = find_choice<E>(text)) return *value;
   std::string list;
-  for (std::string_view name : names) list += (list.empty() ? "" : ",") + std::string(name);
+  for (std::string_view name : ChoiceNames<E>::names) list += (list.empty() ? "" : ",") + std::string(name);
   throw std::invalid_argument(option + ": " + std::string(text) + " not in {" + list + "}");
 }
 

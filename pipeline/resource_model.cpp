@@ -1,7 +1,6 @@
 #include "pipeline/resource_model.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <map>
 #include <mutex>
@@ -13,6 +12,8 @@
 #include "pipeline/fixed_format.h"
 #include "pipeline/hardware_blocks.h"
 #include "profiles/resource_table.h"
+
+#include "pipeline/part_family.h"
 
 namespace rc::pipeline {
 
@@ -282,14 +283,6 @@ int ceil_log2(int x) {
 
 int ceil_div(int a, int b) { return (a + b - 1) / b; }
 
-bool starts_with_nocase(const std::string& text, const std::string& prefix) {
-  if (text.size() < prefix.size()) return false;
-  for (std::size_t i = 0; i < prefix.size(); ++i) {
-    if (std::toupper(static_cast<unsigned char>(text[i])) != std::toupper(static_cast<unsigned char>(prefix[i]))) return false;
-  }
-  return true;
-}
-
 }  // namespace
 
 int ResourceModel::slices_for(int luts, int flip_flops) const {
@@ -298,7 +291,7 @@ int ResourceModel::slices_for(int luts, int flip_flops) const {
 
 const FloatFamily& ResourceModel::float_family_of_part(const std::string& part) const {
   for (const FloatFamily& f : families_) {
-    if (starts_with_nocase(part, f.part_prefix)) return f;
+    if (part_in_family(part, f.part_prefix)) return f;
   }
   throw std::invalid_argument("no floating-point resource figures for the family of part \"" + part +
                               "\" (known: XC2V Virtex-II, XC4V Virtex-4, XC3S Spartan-3)");

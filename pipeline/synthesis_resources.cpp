@@ -1,21 +1,14 @@
 #include "pipeline/synthesis_resources.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <stdexcept>
+
+#include "pipeline/part_family.h"
 
 namespace rc::pipeline {
 
 namespace {
-
-bool starts_with_nocase(const std::string& text, const std::string& prefix) {
-  if (text.size() < prefix.size()) return false;
-  for (std::size_t i = 0; i < prefix.size(); ++i) {
-    if (std::toupper(static_cast<unsigned char>(text[i])) != std::toupper(static_cast<unsigned char>(prefix[i]))) return false;
-  }
-  return true;
-}
 
 struct Pair {
   PublishedSlices point;
@@ -49,7 +42,7 @@ const profiles::SynthesisPoint* at_width(const std::vector<profiles::SynthesisPo
 
 const profiles::SynthesisFamily& SynthesisResources::family_of(const std::string& part) const {
   for (const profiles::SynthesisFamily& f : families_)
-    if (starts_with_nocase(part, f.part_prefix)) return f;
+    if (part_in_family(part, f.part_prefix)) return f;
   std::string names;
   for (const profiles::SynthesisFamily& f : families_) names += (names.empty() ? "" : ", ") + f.part_prefix;
   throw std::invalid_argument("synthesis resources " + origin_ + ": no synthesis for the part " + part +
@@ -65,7 +58,7 @@ SynthesisResources SynthesisResources::build(const profiles::SynthesisTable& tab
   s.origin_ = origin;
   const profiles::SynthesisFamily* paper_family = nullptr;
   for (const profiles::SynthesisFamily& f : s.families_)
-    if (starts_with_nocase(paper_part, f.part_prefix)) paper_family = &f;
+    if (part_in_family(paper_part, f.part_prefix)) paper_family = &f;
   if (!paper_family) throw std::runtime_error("synthesis resources " + origin + ": no family for the paper's part " + paper_part);
 
   std::vector<Pair> pairs;

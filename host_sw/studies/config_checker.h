@@ -78,7 +78,6 @@ class ConfigChecker {
   std::vector<std::string> host_order_;
   pipeline::ResourceModel resources_;
   std::string study_;
-  pipeline::ResourceSource source_;
 };
 
 }  // namespace rc

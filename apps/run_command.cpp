@@ -21,6 +21,7 @@
 #include "rtl/sim/rtl_pipeline.h"
 #include "host_sw/visibility/fixed_visibility.h"
 #include "host_sw/visibility/visibility_factory.h"
+#include "host_sw/outputs/fidelity_json.h"
 #include "host_sw/outputs/run_report_json.h"
 #include "host_sw/outputs/trace_json.h"
 
@@ -37,6 +38,8 @@ struct RunOutcome {
   std::optional<RunReport> board;                           // board runs
   std::optional<LanesThatFit> lanes_that_fit;               // board runs: sec 5.6 on the run's device
   std::string trace_json;                                   // board runs with --trace
+  std::optional<Fidelity> fidelity;                         // runs in the pipeline's arithmetic, sampled
+  std::string fidelity_warning;                             // "" when within --fidelity-warn
 };
 
 bool float_arith(const RunOptions& o) { return o.arith.is_float(); }
@@ -58,6 +61,19 @@ std::optional<std::string> faces_lost_at_width(const Scene& scene, int bits) {
          "shadows are missing; raise --bits, or bring the scene's parts closer together";
 }
 
+// Whether the run answers in the pipeline's arithmetic (fixed at --bits or float:E,M), whose decisions
+// the fidelity sample checks; double precision is the reference itself.
+bool in_pipeline_arithmetic(const RunOptions& o) { return o.impl == Impl::board || float_arith(o) || o.visibility != SoftwareVisibility::float_double; }
+
+// The run's fidelity from its sample (decision_sample.h), and its warning; progress says it is checking.
+void measure_fidelity(const RunOptions& o, const Scene& scene, const DecisionSampler& sampler, RunOutcome& out,
+                      ProgressLine& progress) {
+  if (!in_pipeline_arithmetic(o) || o.fidelity_sample == 0) return;
+  progress.update("checking %zu sampled segments against double precision", sampler.sample().size());
+  out.fidelity = estimate_fidelity(scene, sampler.sample(), sampler.population(), o.arith, o.bits);
+  out.fidelity_warning = fidelity_warning(*out.fidelity, o.fidelity_warn, o.bits);
+}
+
 RunOutcome run_software(const RunOptions& o, const Scene& scene, ProgressLine& progress) {
   // A float pipeline (--arith float:E,M) answers as the backend of that name (pipeline/float_mt.h).
   auto visibility = make_software_visibility(float_arith(o) ? o.arith.name() : choice_name(o.visibility), o.bits);
@@ -66,8 +82,11 @@ RunOutcome run_software(const RunOptions& o, const Scene& scene, ProgressLine& p
   solver.on_progress([&](const StepProgress& p) {
     progress.update("step %d, %.2f%% converged", p.step, 100.0 * p.convergence_reached);
   });
+  DecisionSampler sampler(in_pipeline_arithmetic(o) ? o.fidelity_sample : 0);
+  solver.on_answers(sampler.observer());
   RunOutcome out;
   out.solver = solver.run();
+  measure_fidelity(o, scene, sampler, out, progress);
   out.visibility_name =
       visibility->name() + (o.visibility != SoftwareVisibility::float_double && !float_arith(o) ? " " + std::to_string(o.bits) + "-bit" : "");
   out.visibility_tests = visibility->tests_performed();
@@ -125,9 +144,12 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   // throw (docs/reliability.md, "Sanitizers").
   LanesThatFit fit = float_arith(o) ? lanes_that_fit(*board.device_profile, *board.host_profile, o.arith.float_format())
                                     : lanes_that_fit(*board.device_profile, *board.host_profile, o.bits, board.resources);
+  DecisionSampler sampler(o.fidelity_sample);
+  board.on_answers = sampler.observer();
   BoardRunResult r = run_radiosity_on_board(scene, o.solver, board);
   RunOutcome out;
   out.solver = std::move(r.solver);
+  measure_fidelity(o, scene, sampler, out, progress);
   out.visibility_name = "board " + board.device + ", " + std::to_string(board.lanes.value()) + " lane(s), " +
                         (float_arith(o) ? o.arith.name() : std::to_string(o.bits) + "-bit") +
                         (o.lanes_impl == LanesImpl::rtl ? " RTL lanes" : "") + (board.concurrent ? ", concurrent" : ", serial") +
@@ -209,6 +231,7 @@ void print_summary(const RunOptions& o, const Scene& scene, const RunOutcome& ou
   std::printf("  visibility   %s: %llu segments (%llu blocked), %llu segment-face tests\n", out.visibility_name.c_str(),
               static_cast<unsigned long long>(r.segments), static_cast<unsigned long long>(r.blocked_segments),
               static_cast<unsigned long long>(out.visibility_tests));
+  if (out.fidelity) std::printf("  fidelity     %s\n", fidelity_line(*out.fidelity).c_str());
   std::printf("  energy       emitted %.6g = absorbed %.6g + escaping %.6g + unshot %.6g\n", r.energy.emitted,
               r.energy.absorbed, r.energy.escaping, r.energy.unshot);
   if (out.board) {
@@ -257,6 +280,7 @@ nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& pre
     report["host_work"] = counts;
   }
   report["visibility_tests"] = out.visibility_tests;
+  if (out.fidelity) report["fidelity"] = fidelity_json(*out.fidelity, o.fidelity_warn, out.fidelity_warning);
   if (out.board) {
     report["board"] = to_json(*out.board);
     report["lanes_that_fit"] = lanes_that_fit_json(*out.lanes_that_fit);
@@ -334,6 +358,13 @@ void check_run_options(const CLI::App& cmd, const RunOptions& o) {
     if (const std::string why = rtl::rtl_unavailable_reason(o.bits); !why.empty())
       refuse_option("--lanes-impl", "rtl: " + why);
   }
+  if (!in_pipeline_arithmetic(o)) {
+    refuse_given(cmd, {"--fidelity-sample", "--fidelity-warn"},
+                 "does not apply with --visibility float: double precision is the reference the fidelity sample "
+                 "checks against (it applies to --visibility fixed or fast, --arith float:E,M and --impl board)");
+  } else if (o.fidelity_sample == 0) {
+    refuse_given(cmd, {"--fidelity-warn"}, "does not apply with --fidelity-sample 0 (no fidelity is measured)");
+  }
   if (o.trace_path.empty()) {
     refuse_given(cmd, {"--trace-steps"}, "applies only with --trace (the steps it records)");
   } else {
@@ -373,6 +404,10 @@ int run_simulation(const RunOptions& given) {
   progress.finish();
   // Point and disc: steps that created energy, said once (docs/radiosity.md, Form-factor sums).
   std::vector<std::string> solver_warnings;
+  if (!out.fidelity_warning.empty()) {
+    std::fprintf(stderr, "warning: %s\n", out.fidelity_warning.c_str());
+    solver_warnings.push_back(out.fidelity_warning);
+  }
   if (std::string w = form_factor_sum_warning(scene, out.solver, o.solver.form_factor); !w.empty()) {
     std::fprintf(stderr, "warning: %s\n", w.c_str());
     solver_warnings.push_back(std::move(w));
@@ -451,6 +486,13 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--out", options->out_dir, "Output folder")->check(output_path())->capture_default_str();
   cmd->add_option("--image-size", options->render.width, "Image width and height in pixels")
       ->check(CLI::Range(16, 8192))->capture_default_str();
+  cmd->add_option("--fidelity-sample", options->fidelity_sample,
+                  "Segments of the run checked against double-precision visibility for the share of decisions that "
+                  "differ, 0..10000000 (0: none; docs/radiosity.md, Fidelity in every run)")
+      ->check(CLI::Range(std::size_t{0}, std::size_t{10'000'000}))->capture_default_str();
+  cmd->add_option("--fidelity-warn", options->fidelity_warn,
+                  "Warn when more than this share 0..1 of the sampled decisions differ from double precision")
+      ->check(CLI::Range(0.0, 1.0))->capture_default_str();
   cmd->add_flag("--quiet", options->quiet, "No progress output");
   add_jobs_option(*cmd, "the fast backend's threads (--visibility fast, or the board's answers)");
   cmd->callback([options, solver, arith, paper_faithful, cmd, &exit_code] {

@@ -9,6 +9,7 @@
 #include "host_sw/platform/board_run.h"
 #include "host_sw/radiosity/radiosity.h"
 #include "host_sw/radiosity/render.h"
+#include "host_sw/visibility/decision_sample.h"
 #include "host_sw/visibility/visibility_factory.h"
 #include "io/choice.h"
 #include "pipeline/arithmetic.h"
@@ -56,6 +57,10 @@ struct RunOptions {
   std::string trace_steps = "1:3";   // A:B, steps written to the trace
   std::string out_dir = "out";
   RenderOptions render;
+  // The fidelity sample (host_sw/visibility/decision_sample.h): segments checked against double
+  // precision (0: none) and the share of differing decisions above which the run warns.
+  std::size_t fidelity_sample = kDefaultFidelitySample;
+  double fidelity_warn = kDefaultFidelityWarnShare;
   bool quiet = false;
 };
 

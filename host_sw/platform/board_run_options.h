@@ -59,6 +59,7 @@ struct BoardRunOptions {
   VisibilityBackend* oracle = nullptr;  // lanes' answer from a bit-identical host model (BoardVisibilityOptions)
   bool print_summaries = false;         // the tlm parts' one-line summaries at the end
   std::function<void(const StepProgress&)> on_progress;  // after every step (host thread)
+  AnswersObserver on_answers;  // every step's segments and the board's answers (host thread)
   // Several identical cards (docs/board.md, "Several cards"): how many (1..16, checked when set),
   // how a step is split over them, and whether they share one PCI bus.
   CardCount cards = 1;

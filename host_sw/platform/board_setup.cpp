@@ -38,6 +38,7 @@ BoardSetup make_board_setup(const BoardRunOptions& o) {
     s.trace_last_step = o.trace_last_step;
   }
   s.on_progress = o.on_progress;
+  s.on_answers = o.on_answers;
   s.cards = o.cards;
   s.card_split = o.card_split;
   s.card_bus = o.card_bus;

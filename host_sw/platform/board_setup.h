@@ -28,6 +28,7 @@ struct BoardSetup {
   // solver, and the board runs the same passes without data. The result then has no radiosity.
   const VisibilityRecording* replay = nullptr;
   std::function<void(const StepProgress&)> on_progress;
+  AnswersObserver on_answers;
   CardCount cards = 1;  // identical cards, each `board`
   CardSplit card_split = CardSplit::rays;
   CardBus card_bus = CardBus::shared;

@@ -114,6 +114,7 @@ void BoardSystem::run() {
     } else {
       ProgressiveRadiosity solver(m_scene, visibility, m_solver, &m_cpu);
       if (m_setup.on_progress) solver.on_progress(m_setup.on_progress);
+      if (m_setup.on_answers) solver.on_answers(m_setup.on_answers);
       m_result = solver.run();
     }
     m_cpu.sync();

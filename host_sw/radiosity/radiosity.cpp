@@ -264,6 +264,7 @@ void ProgressiveRadiosity::shoot(int shooter, SolverResult& result) {
   charge(HostWork::FormFactor, receivers_.size());
 
   visibility_.collect(blocked_);
+  if (answers_) answers_(batch_, blocked_);
   if (visibility_.runs_on_host()) charge(HostWork::IntersectionTest, visibility_.tests_performed() - tests_before);
 
   // The share of the shot power the step delivers; above 1 the step creates energy. The analytic

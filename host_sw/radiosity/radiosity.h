@@ -115,6 +115,11 @@ struct StepProgress {
   double convergence_reached = 0;
 };
 
+// What a step asked and what the backend answered (blocked: one flag per segment of batch), seen
+// after collect() and before the solver uses the answers: a fidelity sample (host_sw/visibility/
+// decision_sample.h) watches the run's own decisions through it, whoever gives them.
+using AnswersObserver = std::function<void(const SegmentBatch& batch, const std::vector<std::uint8_t>& blocked)>;
+
 // One pass over n >= 1 values: the index of the first largest one (ignoring NaNs after the
 // first value, as `if (p > best)` does), and whether their sum in index order (power[0] + power[1]
 // + ...) is surely <= limit, known without forming that sum (false when unsure).
@@ -129,6 +134,7 @@ class ProgressiveRadiosity {
   ProgressiveRadiosity(const Scene& scene, VisibilityBackend& visibility, SolverOptions options,
                        HostCostSink* costs = nullptr);
   void on_progress(std::function<void(const StepProgress&)> callback) { progress_ = std::move(callback); }
+  void on_answers(AnswersObserver observer) { answers_ = std::move(observer); }
   SolverResult run();
 
  private:
@@ -168,6 +174,7 @@ class ProgressiveRadiosity {
   SolverOptions options_;
   HostCostSink* costs_;
   std::function<void(const StepProgress&)> progress_;
+  AnswersObserver answers_;
 
   std::vector<Spectrum> radiosity_;
   std::vector<Spectrum> unshot_;

@@ -489,7 +489,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--fidelity-sample", options->fidelity_sample,
                   "Segments of the run checked against double-precision visibility for the share of decisions that "
                   "differ, 0..10000000 (0: none; docs/radiosity.md, Fidelity in every run)")
-      ->check(CLI::Range(std::size_t{0}, std::size_t{10'000'000}))->capture_default_str();
+      ->check(CLI::Range(std::size_t{0}, static_cast<std::size_t>(kMaxFidelitySample)))->capture_default_str();
   cmd->add_option("--fidelity-warn", options->fidelity_warn,
                   "Warn when more than this share 0..1 of the sampled decisions differ from double precision")
       ->check(CLI::Range(0.0, 1.0))->capture_default_str();

@@ -19,7 +19,9 @@
 #include "design_module_json.h"
 #include "host_sw/platform/board_run.h"
 #include "host_sw/platform/run_report.h"
+#include "host_sw/outputs/fidelity_json.h"
 #include "host_sw/outputs/run_report_json.h"
+#include "host_sw/visibility/decision_sample.h"
 #include "host_sw/driver/host_cpu_model.h"
 #include "host_sw/radiosity/jobs.h"
 #include "host_sw/studies/calibration_variants.h"
@@ -51,8 +53,9 @@ unsigned use_jobs(const std::optional<long long>& jobs) {
 std::string run_board(const std::string& scene_file, int patch_levels, int face_target, int steps,
                       const std::string& device, unsigned lanes, int bits, unsigned banks, bool concurrent,
                       const std::string& host, unsigned cards, const std::string& resources,
-                      const std::optional<long long>& jobs) {
+                      const std::optional<long long>& jobs, long long fidelity_sample, double fidelity_warn) {
   use_jobs(jobs);  // the fast backend's threads (the board's answers)
+  rc::check_fidelity_options(fidelity_sample, fidelity_warn);  // --fidelity-sample's and --fidelity-warn's limits
   const auto source = rc::parse_choice_option<rc::pipeline::ResourceSource>("--resources", resources);  // its words too
   rc::SceneOptions scene_options;
   scene_options.file = scene_file;
@@ -76,6 +79,8 @@ std::string run_board(const std::string& scene_file, int patch_levels, int face_
                         {"convergence_reached", p.convergence_reached},
                         {"simulated_seconds", sc_core::sc_time_stamp().to_seconds()}});
   };
+  rc::DecisionSampler sampler(static_cast<std::size_t>(fidelity_sample));
+  o.on_answers = sampler.observer();
   const rc::BoardRunResult r = rc::run_radiosity_on_board(prepared.scene, solver, o);
   ordered_json out;
   out["steps"] = r.solver.steps;
@@ -86,7 +91,14 @@ std::string run_board(const std::string& scene_file, int patch_levels, int face_
   out["simulated_seconds"] = r.report.simulated_seconds;
   out["per_step"] = per_step;
   out["board"] = rc::to_json(r.report);
-  out["warnings"] = prepared.warnings;
+  std::vector<std::string> warnings = prepared.warnings;
+  if (fidelity_sample > 0) {  // as `rc2000sim run` says it (report.json's "fidelity")
+    const rc::Fidelity f = rc::estimate_fidelity(prepared.scene, sampler.sample(), sampler.population(), rc::pipeline::Arithmetic(), bits);
+    const std::string warning = rc::fidelity_warning(f, fidelity_warn, bits);
+    if (!warning.empty()) warnings.push_back(warning);
+    out["fidelity"] = rc::fidelity_json(f, fidelity_warn, warning);
+  }
+  out["warnings"] = warnings;
   return out.dump();
 }
 
@@ -154,6 +166,8 @@ PYBIND11_MODULE(_core, m) {
   m.def("run_board", &run_board, py::arg("scene_file"), py::arg("patch_levels"), py::arg("face_target"),
         py::arg("steps"), py::arg("device"), py::arg("lanes"), py::arg("bits"), py::arg("banks"),
         py::arg("concurrent"), py::arg("host"), py::arg("cards"), py::arg("resources") = "paper", py::arg("jobs") = py::none(),
+        py::arg("fidelity_sample") = static_cast<long long>(rc::kDefaultFidelitySample),
+        py::arg("fidelity_warn") = rc::kDefaultFidelityWarnShare,
         "One board run (host_sw/platform/board_run.h); the report as JSON text");
   m.def("study_file", [](const std::string& path, bool progress, const std::optional<long long>& jobs) {
           use_jobs(jobs);

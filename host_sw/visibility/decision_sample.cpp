@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <thread>
 
 #include "host_sw/radiosity/jobs.h"
@@ -41,6 +42,17 @@ void DecisionSampler::observe(const SegmentBatch& batch, const std::vector<std::
     } else {
       sample_[slot] = seg;
     }
+  }
+}
+
+void check_fidelity_options(long long sample, double warn_share) {
+  if (sample < 0 || sample > kMaxFidelitySample)
+    throw std::invalid_argument("--fidelity-sample: Value " + std::to_string(sample) + " not in range 0 to " +
+                                std::to_string(kMaxFidelitySample));
+  if (!(warn_share >= 0 && warn_share <= 1)) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%g", warn_share);
+    throw std::invalid_argument(std::string("--fidelity-warn: Value ") + text + " not in range 0 to 1");
   }
 }
 

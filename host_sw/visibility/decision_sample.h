@@ -93,6 +93,12 @@ constexpr double kDefaultFidelityWarnShare = 0.01;
 // The default sample (--fidelity-sample): a 95% interval of at most +-1.6 points at any share.
 constexpr std::size_t kDefaultFidelitySample = 4096;
 
+// Throws std::invalid_argument naming --fidelity-sample or --fidelity-warn and its range unless
+// 0 <= sample <= kMaxFidelitySample and 0 <= warn_share <= 1 (the library's and Python's check; the
+// command line's options carry the same ranges).
+constexpr long long kMaxFidelitySample = 10'000'000;
+void check_fidelity_options(long long sample, double warn_share);
+
 struct Fidelity {
   std::string arithmetic;           // "fixed:15", "float:5,10"
   std::uint64_t population = 0;     // needed segments the run asked

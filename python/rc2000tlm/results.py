@@ -35,6 +35,10 @@ class RunResult:
         self.simulated_seconds = data.get("simulated_seconds", _find(data, "simulated_seconds"))
         self.board = data.get("board", {})
         self.per_step = data.get("per_step", [])
+        # report.json's "fidelity" (docs/outputs.md): the sampled share of decisions that differ from
+        # double precision, its interval and causes; None with fidelity_sample=0.
+        self.fidelity = data.get("fidelity")
+        self.warnings = data.get("warnings", [])
 
     def to_dict(self):
         return self._data

@@ -89,8 +89,11 @@ def _submit_all(calls, progress, what, show_worker_progress=False, workers=1):
 
 
 def _run_kwargs(scene=None, patch_levels=3, faces=0, steps=0, device="xc2v6000", lanes=1, bits=15, banks=0,
-                concurrent=False, host="athlon-mp-2600-calibrated", cards=1, resources="paper", jobs=None):
-    return {"scene_file": "" if scene is None else os.path.abspath(scene), "patch_levels": patch_levels,
+                concurrent=False, host="athlon-mp-2600-calibrated", cards=1, resources="paper", jobs=None,
+                fidelity_sample=None, fidelity_warn=None):
+    # None: the core's defaults, which are the command line's (decision_sample.h).
+    fidelity = {k: v for k, v in (("fidelity_sample", fidelity_sample), ("fidelity_warn", fidelity_warn)) if v is not None}
+    return {**fidelity, "scene_file": "" if scene is None else os.path.abspath(scene), "patch_levels": patch_levels,
             "face_target": faces, "steps": steps, "device": device, "lanes": lanes, "bits": bits, "banks": banks,
             "concurrent": concurrent, "host": host, "cards": cards, "resources": resources, "jobs": jobs}
 
@@ -100,7 +103,9 @@ def run(**options):
     None: the embedded Cornell Box), patch_levels, faces (refine to this many faces first; 0: as is),
     steps (0: to convergence), device, lanes, bits, banks (0: the profile's), concurrent, host, cards,
     resources ("paper" or "synthesis", as --resources: where the lanes' slices and block multipliers come
-    from), jobs (the fast backend's threads, as --jobs; None: the rule's). Returns a RunResult."""
+    from), jobs (the fast backend's threads, as --jobs; None: the rule's), fidelity_sample and fidelity_warn
+    (as --fidelity-sample and --fidelity-warn: segments checked against double precision, 0 for none, and
+    the share of differing decisions that warns; RunResult.fidelity). Returns a RunResult."""
     return RunResult(_submit_all([("run_board", _run_kwargs(**options))], False, "runs")[0])
 
 

@@ -4,7 +4,7 @@
 # from a folder outside the source tree:
 #  1. `python3 -c "import rc2000tlm; ..."` runs a small sweep into a DataFrame, whose rows equal the
 #     installed rc2000sim's sweep.csv for the same study file (another process, another writer);
-#  2. run() gives `rc2000sim run --impl board`'s report for the same options, with per-step and
+#  2. run() gives `rc2000sim run --impl board`'s report (and its fidelity) for the same options, with per-step and
 #     per-bank DataFrames; run_many() gives the same answers in parallel; an unknown option is refused;
 #  3. a study over two scenes has a scene column, and load() of rc2000sim's outputs of the same study
 #     (its study.csv) gives the same rows;
@@ -95,6 +95,16 @@ cmd = json.load(open(sys.argv[1]))
 r = rc2000tlm.run(steps=3, patch_levels=1, lanes=2)
 assert r.steps == cmd["steps"] == 3 and r.simulated_seconds == cmd["simulated_seconds"], (r, cmd["simulated_seconds"])
 assert no_wall(r.board) == no_wall(cmd["board"]), "the board report differs from the command's"
+assert r.fidelity == cmd["fidelity"], ("run()'s fidelity differs from the command's", r.fidelity, cmd["fidelity"])
+assert rc2000tlm.run(steps=1, patch_levels=1, fidelity_sample=0).fidelity is None
+for bad, words in ((dict(fidelity_sample=-1), "--fidelity-sample: Value -1 not in range 0 to 10000000"),
+                   (dict(fidelity_warn=2.0), "--fidelity-warn: Value 2 not in range 0 to 1")):
+    try:
+        rc2000tlm.run(steps=1, patch_levels=1, **bad)
+    except Exception as e:
+        assert words in str(e), (bad, str(e))
+    else:
+        sys.exit("run() accepted %r" % bad)
 steps = r.to_dataframe()
 assert list(steps.step) == [1, 2, 3] and steps.simulated_seconds.is_monotonic_increasing
 assert steps.simulated_seconds.iloc[-1] <= r.simulated_seconds

@@ -48,6 +48,9 @@ void check_and_resolve(const CLI::App& cmd, DesignCli& cli) {
   DesignOptions& o = cli.options;
   try {
     if (given(cmd, "--steps")) o.workload.steps = design_steps(cli.steps);
+    // A scene file as it is, solved with run's form factor, unless told otherwise (workload.h).
+    take_scene_as_given(o.workload.scene, [&](const std::string& option) { return given(cmd, option); });
+    if (!o.workload.scene.file.empty() && !given(cmd, "--form-factor")) o.workload.form_factor = kSceneFileFormFactor;
     if (given(cmd, "--max-banks")) check_design_max_banks(o.constraints.max_banks);
     if (given(cmd, "--min-bits")) check_design_min_bits(o.constraints.min_bits);
     if (given(cmd, "--max-energy")) check_design_cap("--max-energy", o.constraints.max_energy_joules);

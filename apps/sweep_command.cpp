@@ -185,14 +185,10 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
       exit_code = run(load_study_file(o->study_file));
       return;
     }
-    // A scene file is taken as it is unless refinement is asked for: the paper defaults are for
-    // the embedded box.
-    if (!o->scene.file.empty()) {
-      const SceneOptions plain;
-      if (cmd->count("--faces") == 0) o->scene.face_target = plain.face_target;
-      if (cmd->count("--face-levels") == 0) o->scene.face_levels = plain.face_levels;
-      if (cmd->count("--patch-levels") == 0) o->scene.patch_levels = plain.patch_levels;
-    }
+    // A scene file is taken as it is unless refinement is asked for, and solved with run's form
+    // factor unless one is given: the paper defaults are for the embedded box (workload.h).
+    take_scene_as_given(o->scene, [&](const std::string& option) { return cmd->count(option) > 0; });
+    if (!o->scene.file.empty() && cmd->count("--form-factor") == 0) o->form_factor = to_string(kSceneFileFormFactor);
     exit_code = run(study_from_options(*o));
   });
 }

@@ -13,6 +13,8 @@
 #include <functional>
 #include <limits>
 #include <stdexcept>
+#include <map>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -180,6 +182,10 @@ DesignOptions given_options(const ordered_json& given) {
                                  "' (the options of `rc2000sim design`: " + names() + ")");
     opt->apply(o, item.value());
   }
+  // A scene file as it is, solved with run's form factor, unless told otherwise (the command's rule).
+  const std::map<std::string, const char*> keys = {{"--faces", "faces"}, {"--face-levels", "face_levels"}, {"--patch-levels", "patch_levels"}};
+  take_scene_as_given(o.workload.scene, [&](const std::string& option) { return given.contains(keys.at(option)); });
+  if (!o.workload.scene.file.empty() && !given.contains("form_factor")) o.workload.form_factor = kSceneFileFormFactor;
   resolve_design_options(o);
   return o;
 }

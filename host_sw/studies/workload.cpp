@@ -51,6 +51,14 @@ Workload default_design_workload() {
   return w;
 }
 
+void take_scene_as_given(SceneOptions& scene, const std::function<bool(const std::string& option)>& given) {
+  if (scene.file.empty()) return;
+  const SceneOptions plain;
+  if (!given("--faces")) scene.face_target = plain.face_target;
+  if (!given("--face-levels")) scene.face_levels = plain.face_levels;
+  if (!given("--patch-levels")) scene.patch_levels = plain.patch_levels;
+}
+
 std::string scene_source(const SceneOptions& scene) { return scene.file.empty() ? "embedded:cornell-box" : scene.file; }
 
 int table2_steps(const Workload& w, std::uint64_t faces, std::uint64_t patches) {

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #include "host_sw/radiosity/radiosity.h"
@@ -48,6 +49,17 @@ Workload paper_workload(const PaperRow& row);
 // `paper` build it (our box refined to 70 faces, each split into 4 faces and those into 16 patches),
 // Table 2's count (5,889 steps), every segment sent, the paper's point form factor.
 Workload default_design_workload();
+
+// One rule for a scene file in every command (issue 37; docs/scenes.md, "One workload"): it is taken
+// as it is (no refinement, SceneOptions{}'s patch levels, as `run` and `accuracy` take it) unless the
+// options given ask otherwise; `given(option)` says whether "--faces", "--face-levels" or
+// "--patch-levels" was given. The embedded box is left alone: each command's default construction of
+// it (the paper's, for sweep and design) stays. `sweep`, `design` and rc2000tlm.design() call it.
+void take_scene_as_given(SceneOptions& scene, const std::function<bool(const std::string& option)>& given);
+// The form factor a scene file is solved with unless --form-factor is given: `run`'s analytic rule,
+// which never creates energy (closed meshes and rooms need it: docs/radiosity.md); the paper's point
+// rule stays the default for the embedded box, whose workload sweep and design replicate.
+constexpr FormFactorKind kSceneFileFormFactor = FormFactorKind::Analytic;
 
 // Workload::source of a scene built from `scene`: its file, or "embedded:cornell-box".
 std::string scene_source(const SceneOptions& scene);

@@ -156,5 +156,28 @@ TEST(Workload, TheRecordNamesTheConstructionAndTheNoteOnlyWhenItDiffers) {
   EXPECT_FALSE(paper["scene"].contains("note"));
 }
 
+TEST(Workload, ASceneFileIsTakenAsItIsUnlessRefinementIsGiven) {
+  const auto none = [](const std::string&) { return false; };
+  SceneOptions file = default_design_workload().scene;  // the paper's construction, as design starts
+  file.file = "mesh.json";
+  take_scene_as_given(file, none);
+  const SceneOptions plain;
+  EXPECT_EQ(file.face_target, plain.face_target);
+  EXPECT_EQ(file.face_levels, plain.face_levels);
+  EXPECT_EQ(file.patch_levels, plain.patch_levels);  // run's and accuracy's
+  // What was given stays.
+  SceneOptions asked = default_design_workload().scene;
+  asked.file = "mesh.json";
+  asked.patch_levels = 0;
+  take_scene_as_given(asked, [](const std::string& option) { return option == "--patch-levels"; });
+  EXPECT_EQ(asked.patch_levels, 0);
+  EXPECT_EQ(asked.face_target, 0);
+  // The embedded box keeps the command's construction (the paper's, for design and sweep).
+  SceneOptions box = default_design_workload().scene;
+  take_scene_as_given(box, none);
+  EXPECT_EQ(box.face_target, 70);
+  EXPECT_EQ(kSceneFileFormFactor, run_workload(plain, SolverOptions{}).form_factor);  // run's form factor
+}
+
 }  // namespace
 }  // namespace rc

@@ -9,8 +9,11 @@ import json
 import math
 import os
 import subprocess
+import signal
 import sys
 import tempfile
+import threading
+import time
 
 from .results import DesignResult, PaperResult, RunResult, SweepResult
 
@@ -44,27 +47,82 @@ def _exception(name, message):
     return kind(message)
 
 
-def _call(function, kwargs, show_progress):
-    """One call in a fresh worker process; its JSON result, or the worker's exception raised here."""
-    fd, result_path = tempfile.mkstemp(prefix="rc2000tlm-", suffix=".json")
-    os.close(fd)
+class _Workers:
+    """The worker processes alive now, so that an interrupted or failed call ends them all: each runs
+    in a session (process group) of its own, and terminate_all() signals the whole group (the core's
+    own children included), then kills what is left after a grace period."""
+
+    def __init__(self):
+        self._lock = threading.Lock()
+        self._live = set()
+        self.stopping = False
+
+    def add(self, process):
+        with self._lock:
+            if self.stopping:  # a call started after the stop: end it at once
+                _signal_group(process, signal.SIGKILL)
+            self._live.add(process)
+
+    def remove(self, process):
+        with self._lock:
+            self._live.discard(process)
+
+    def terminate_all(self, grace=1.0):
+        with self._lock:
+            self.stopping = True
+            live = list(self._live)
+        for p in live:
+            _signal_group(p, signal.SIGTERM)
+        deadline = time.monotonic() + grace
+        for p in live:
+            try:
+                p.wait(max(0.0, deadline - time.monotonic()))
+            except subprocess.TimeoutExpired:
+                _signal_group(p, signal.SIGKILL)
+                p.wait()
+
+
+def _signal_group(process, sig):
     try:
-        done = subprocess.run([sys.executable, "-m", "rc2000tlm._worker", result_path],
-                              input=json.dumps({"function": function, "kwargs": kwargs}), text=True,
-                              env=_worker_env(), stdout=subprocess.DEVNULL,
-                              stderr=None if show_progress else subprocess.PIPE)
-        with open(result_path) as f:
-            text = f.read()
-        if not text:
-            tail = (done.stderr or "").strip().splitlines()[-5:]
-            raise RuntimeError("rc2000tlm: the worker process for %s ended without a result (exit status %d)%s"
-                               % (function, done.returncode, (": " + " | ".join(tail)) if tail else ""))
-        response = json.loads(text)
-        if "error" in response:
-            raise _exception(response["error"], response["message"])
-        return json.loads(response["result"])
-    finally:
-        os.remove(result_path)
+        os.killpg(process.pid, sig)
+    except (ProcessLookupError, PermissionError):
+        pass
+
+
+def _call(function, kwargs, show_progress, workers=None):
+    """One call in a fresh worker process; its JSON result, or the worker's exception raised here. The
+    result comes back through an unlinked temporary file whose descriptor the worker inherits, so
+    nothing is left on disk whatever happens to either process; the worker dies with its caller
+    (rc2000tlm._worker sets PR_SET_PDEATHSIG)."""
+    with tempfile.TemporaryFile(prefix="rc2000tlm-") as result:
+        fd = result.fileno()
+        process = subprocess.Popen([sys.executable, "-m", "rc2000tlm._worker", str(fd), str(os.getpid())],
+                                   stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
+                                   stderr=None if show_progress else subprocess.PIPE, text=True,
+                                   env=_worker_env(), pass_fds=(fd,), start_new_session=True)
+        if workers is not None:
+            workers.add(process)
+        try:
+            _, err = process.communicate(json.dumps({"function": function, "kwargs": kwargs}))
+        finally:
+            if workers is not None:
+                workers.remove(process)
+        if workers is not None and workers.stopping:
+            raise _Stopped()
+        result.seek(0)
+        text = result.read().decode("utf-8")
+    if not text:
+        tail = (err or "").strip().splitlines()[-5:]
+        raise RuntimeError("rc2000tlm: the worker process for %s ended without a result (exit status %d)%s"
+                           % (function, process.returncode, (": " + " | ".join(tail)) if tail else ""))
+    response = json.loads(text)
+    if "error" in response:
+        raise _exception(response["error"], response["message"])
+    return json.loads(response["result"])
+
+
+class _Stopped(Exception):
+    """A call ended because the others were stopped (an interrupt, or another call's error)."""
 
 
 def _jobs(jobs):
@@ -73,19 +131,57 @@ def _jobs(jobs):
     return _call("jobs", {"jobs": jobs}, False)
 
 
-def _submit_all(calls, progress, what, show_worker_progress=False, workers=1):
+def _submit_all(calls, progress, what, show_worker_progress=False, workers=1, labels=None):
     """Runs (function, kwargs) calls, each in its own worker process, at most `workers` at once;
-    their JSON results in order. progress: a count of finished calls on stderr."""
-    with concurrent.futures.ThreadPoolExecutor(max_workers=workers) as pool:
-        futures = [pool.submit(_call, f, kw, show_worker_progress) for f, kw in calls]
+    their JSON results in order. progress: a count of finished calls on stderr.
+
+    Nothing outlives the call: on KeyboardInterrupt (Ctrl-C) or the first call that fails, the calls not
+    started are cancelled and the running workers (and their children) are terminated within about a
+    second, then the exception is raised. With several calls, a failure names the call (labels[i], or
+    "call i of n") and carries every result that had finished as `.results` (None for the others)."""
+    live = _Workers()
+    results = [None] * len(calls)
+    pool = concurrent.futures.ThreadPoolExecutor(max_workers=workers)
+    futures = {}
+    try:
+        futures = {pool.submit(_call, f, kw, show_worker_progress, live): i for i, (f, kw) in enumerate(calls)}
         done = 0
-        for _ in concurrent.futures.as_completed(futures):
-            done += 1
-            if progress and len(futures) > 1:
-                print("\r%s: %d of %d done" % (what, done, len(futures)), end="", file=sys.stderr, flush=True)
-        if progress and len(futures) > 1:
+        pending = set(futures)
+        while pending:
+            # A timeout, so that the main thread wakes for Ctrl-C however long a worker takes.
+            finished, pending = concurrent.futures.wait(pending, timeout=0.2,
+                                                        return_when=concurrent.futures.FIRST_COMPLETED)
+            for future in finished:
+                i = futures[future]
+                error = future.exception()
+                if error is not None:
+                    raise _named(error, i, len(calls), labels, results)
+                results[i] = future.result()
+                done += 1
+                if progress and len(calls) > 1:
+                    print("\r%s: %d of %d done" % (what, done, len(calls)), end="", file=sys.stderr, flush=True)
+        if progress and len(calls) > 1:
             print(file=sys.stderr)
-        return [f.result() for f in futures]
+        return results
+    except BaseException:
+        for future in futures:
+            future.cancel()
+        live.terminate_all()
+        raise
+    finally:
+        pool.shutdown(wait=True)
+
+
+def _named(error, i, n, labels, results):
+    """The error of call i, naming it when there are several, with the finished results attached."""
+    if n > 1:
+        label = labels[i] if labels else "call %d of %d" % (i + 1, n)
+        named = type(error)("%s: %s" % (label, error)) if type(error) in (ValueError, RuntimeError, TypeError) \
+            else RuntimeError("%s: %s: %s" % (label, type(error).__name__, error))
+        named.__cause__ = error
+        error = named
+    error.results = list(results)
+    return error
 
 
 def _run_kwargs(scene=None, patch_levels=3, faces=0, steps=0, device="xc2v6000", lanes=1, bits=15, banks=0,
@@ -112,9 +208,16 @@ def run(**options):
 def run_many(option_sets, progress=True, jobs=None):
     """Several board runs at once: a list of run() option dicts; their RunResults in the same order.
     jobs: how many run at once (as --jobs, checked the same way; None: RC2000SIM_JOBS, else the cores
-    this process may use). progress: a count of finished runs on stderr."""
+    this process may use). progress: a count of finished runs on stderr. The first option set that fails
+    ends the call at once (the running runs are stopped) with its error, naming the set; the runs that
+    had finished are in the exception's `results` (a RunResult, or None, per set)."""
     calls = [("run_board", _run_kwargs(**o)) for o in option_sets]
-    return [RunResult(d) for d in _submit_all(calls, progress, "runs", workers=_jobs(jobs))]
+    labels = ["run_many: option set %d of %d %r" % (i + 1, len(option_sets), o) for i, o in enumerate(option_sets)]
+    try:
+        return [RunResult(d) for d in _submit_all(calls, progress, "runs", workers=_jobs(jobs), labels=labels)]
+    except Exception as e:  # the finished runs stay reachable: e.results, RunResult or None in order
+        e.results = [None if d is None else RunResult(d) for d in getattr(e, "results", [])]
+        raise
 
 
 def study(path, progress=False, jobs=None):

@@ -243,7 +243,8 @@ void print_summary(const RunOptions& o, const Scene& scene, const RunOutcome& ou
 }
 
 nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& prepared, const RunOutcome& out,
-                                   const std::vector<std::string>& solver_warnings, double wall) {
+                                   const std::vector<std::string>& solver_warnings, const std::string& image_warning,
+                                   double wall) {
   const Scene& scene = prepared.scene;
   nlohmann::ordered_json report;
   report["schema"] = "rc2000sim.run/1";
@@ -285,6 +286,7 @@ nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& pre
     report["board"] = to_json(*out.board);
     report["lanes_that_fit"] = lanes_that_fit_json(*out.lanes_that_fit);
   }
+  report["image_warning"] = image_warning.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(image_warning);
   report["wall_seconds"] = wall;
   return report;
 }
@@ -404,6 +406,8 @@ int run_simulation(const RunOptions& given) {
   progress.finish();
   // Point and disc: steps that created energy, said once (docs/radiosity.md, Form-factor sums).
   std::vector<std::string> solver_warnings;
+  const std::string dark = dark_picture_warning(image);
+  if (!dark.empty()) std::fprintf(stderr, "warning: %s\n", dark.c_str());
   if (!out.fidelity_warning.empty()) {
     std::fprintf(stderr, "warning: %s\n", out.fidelity_warning.c_str());
     solver_warnings.push_back(out.fidelity_warning);
@@ -418,7 +422,7 @@ int run_simulation(const RunOptions& given) {
   if (!o.trace_path.empty()) outputs.add(o.trace_path, out.trace_json);
   if (vcd) outputs.move_in(o.board.vcd_path, vcd->path());
   outputs.add_made(o.out_dir + "/report.json",
-                   [&] { return pretty_json(make_report(o, prepared, out, solver_warnings, progress.seconds())); });
+                   [&] { return pretty_json(make_report(o, prepared, out, solver_warnings, dark, progress.seconds())); });
   outputs.write();
   print_summary(o, scene, out, progress.seconds(), outputs.paths());
   return 0;

@@ -124,12 +124,23 @@ CompositionLight light(const Reader& r, const json& l) {
   return out;
 }
 
+CompositionCamera camera(const Reader& r, const json& c) {
+  r.only_keys(c, "camera", {"position", "look_at", "up", "fov_deg"});
+  if (!c.contains("position") || !c.contains("look_at")) r.fail("camera", "needs position and look_at");
+  CompositionCamera out;
+  out.position = r.triple(c["position"], "camera.position");
+  out.look_at = r.triple(c["look_at"], "camera.look_at");
+  if (c.contains("up")) out.up = r.triple(c["up"], "camera.up");
+  if (c.contains("fov_deg")) out.fov_deg = r.number(c["fov_deg"], "camera.fov_deg");
+  return out;
+}
+
 }  // namespace
 
 CompositionFile parse_composition(std::string_view text, const std::string& path) {
   const json j = io::parse_json_text(text, path);  // depth, duplicate keys, comments, UTF-8, syntax
   const Reader r(path);
-  r.only_keys(j, "(top level)", {"schema", "room", "meshes", "light"});
+  r.only_keys(j, "(top level)", {"schema", "room", "meshes", "light", "camera"});
   if (!schema_of(j)) r.fail("schema", std::string("must be \"") + kSchema + "\"");
   CompositionFile out;
   out.room_file = room(r, j);
@@ -137,6 +148,7 @@ CompositionFile parse_composition(std::string_view text, const std::string& path
   if (!meshes.is_array()) r.fail("meshes", "must be an array");
   for (std::size_t i = 0; i < meshes.size(); ++i) out.meshes.push_back(mesh(r, meshes[i], "meshes[" + std::to_string(i) + "]"));
   if (j.contains("light")) out.light = light(r, j["light"]);
+  if (j.contains("camera")) out.camera = camera(r, j["camera"]);
   return out;
 }
 

@@ -46,8 +46,16 @@ struct CompositionLight {
   Triple emission{};
 };
 
+// The picture's camera, in the room's units (docs/scenes.md, "Composing a scene").
+struct CompositionCamera {
+  Triple position{}, look_at{};
+  Triple up{0, 1, 0};
+  std::optional<double> fov_deg;  // none: the Cornell camera's 39.3 degrees
+};
+
 struct CompositionFile {
   std::optional<std::string> room_file;  // none: the embedded Cornell Box
+  std::optional<CompositionCamera> camera;  // none: the room's camera (the Cornell Box's), else the scene framed
   std::vector<CompositionMesh> meshes;
   std::optional<CompositionLight> light;
 };

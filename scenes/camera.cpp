@@ -1,5 +1,6 @@
 #include "scenes/camera.h"
 
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
@@ -44,6 +45,22 @@ void check_camera(const Camera& c) {
                                 text(c.look_at - c.position) + " (the picture would have no up); choose an up "
                                 "vector across the view");
   }
+}
+
+Camera frame_bounds(const Vec3& lo, const Vec3& hi) {
+  const Vec3 extent = hi - lo;
+  if (!(std::isfinite(extent.x) && std::isfinite(extent.y) && std::isfinite(extent.z)) ||
+      !(extent.x >= 0 && extent.y >= 0 && extent.z >= 0) || !(glm::length(extent) > 0)) {
+    throw std::invalid_argument("frame_bounds: the scene's bounds are empty or not finite");
+  }
+  Camera c;
+  const Vec3 centre = lo + 0.5 * extent;
+  const double radius = 0.5 * glm::length(extent);
+  const double half_fov = 0.5 * c.vertical_fov_deg * 3.14159265358979323846 / 180.0;
+  c.look_at = centre;
+  c.position = centre - Vec3(0, 0, radius / std::sin(half_fov));
+  c.up = Vec3(0, 1, 0);
+  return c;
 }
 
 }  // namespace rc

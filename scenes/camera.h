@@ -30,4 +30,10 @@ constexpr double kMinFieldOfViewDeg = 1e-3;
 // view outside [kMinFieldOfViewDeg, 180) degrees. Scale-free: a camera at 1e-300 or 1e200 is judged as at 1.
 void check_camera(const Camera& camera);
 
+// A camera that sees the whole of the box [lo, hi] (world units): it looks along +z at the box's
+// centre, y up, with the Cornell camera's field of view, from as far as puts the box's bounding sphere
+// inside the view (the Cornell Box's own view, from its open side, is of this kind). Throws
+// std::invalid_argument for an empty or non-finite box.
+Camera frame_bounds(const Vec3& lo, const Vec3& hi);
+
 }  // namespace rc

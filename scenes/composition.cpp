@@ -211,6 +211,20 @@ LoadedScene load_composition_text(const std::string& text, const std::string& pa
   out.scene.name = std::filesystem::path(path).filename().string();
   for (const CompositionMesh& m : c.meshes) add_mesh(out, path, m);
   if (c.light) add_light(out, path, *c.light);
+  if (c.camera) {
+    Camera cam;
+    cam.position = Vec3(c.camera->position[0], c.camera->position[1], c.camera->position[2]);
+    cam.look_at = Vec3(c.camera->look_at[0], c.camera->look_at[1], c.camera->look_at[2]);
+    cam.up = Vec3(c.camera->up[0], c.camera->up[1], c.camera->up[2]);
+    if (c.camera->fov_deg) cam.vertical_fov_deg = *c.camera->fov_deg;
+    try {
+      check_camera(cam);
+    } catch (const std::invalid_argument& e) {
+      fail(path, "camera", e.what());
+    }
+    out.scene.camera = cam;
+    out.scene.camera_given = true;
+  }
   if (out.scene.faces.empty()) fail(path, "(top level)", "the composed scene has no faces");
   if (!out.scene.emits_light()) fail(path, "light", "nothing in the composed scene emits light: add a light or an emissive material");
   return out;

@@ -102,6 +102,12 @@ PreparedScene prepare_scene(const SceneOptions& options, const std::function<voi
   }
   if (options.face_levels > 0) phase("splitting " + std::to_string(scene.faces.size()) + " faces");
   scene.faces = split_faces(scene.faces, options.face_levels);
+  if (!scene.camera_given && !scene.faces.empty()) {  // a mesh or a scene file without a camera: frame it
+    Vec3 lo = scene.faces.front().tri.v0, hi = lo;
+    for (const Face& f : scene.faces)
+      for (const Vec3& v : {f.tri.v0, f.tri.v1, f.tri.v2}) lo = glm::min(lo, v), hi = glm::max(hi, v);
+    scene.camera = frame_bounds(lo, hi);
+  }
   normalise(scene);
   // Two-sided surfaces (faces back to back) become sheets, their faces contiguous, before patches
   // name faces by index (scenes/sheet_finder.h).

@@ -54,6 +54,10 @@ struct Scene {
   std::vector<Face> faces;
   std::vector<Patch> patches;
   Camera camera;
+  // Whether the scene's source chose the camera (a scene file's `camera` line, the Cornell Box's, a
+  // composition's `camera` key or its room's). prepare_scene frames the scene's bounds otherwise
+  // (frame_bounds, scenes/camera.h): the Cornell camera looks at nothing in a scene of other units.
+  bool camera_given = false;
   Normalisation normalisation;  // identity until normalise() runs
   // Faces back to back that form one two-sided surface (scenes/sheets.h); set by find_sheets after
   // normalisation. Default: every face its own sheet.

@@ -41,7 +41,10 @@ class SceneBuilder {
   // are the front's with the winding turned. find_sheets makes each pair one sheet (scenes/sheets.h).
   void add_two_sided_surface(const std::string& name, int material, const std::vector<Vec3>& vertices,
                              const std::string& origin);
-  void set_camera(const Camera& camera) { scene_.camera = camera; }
+  void set_camera(const Camera& camera) {
+    scene_.camera = camera;
+    scene_.camera_given = true;
+  }
 
   const std::vector<std::string>& warnings() const { return warnings_; }
   std::size_t face_count() const { return scene_.faces.size(); }

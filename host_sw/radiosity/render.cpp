@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <stdexcept>
 #include <tuple>
@@ -249,6 +250,25 @@ RgbImage tone_map(const HdrImage& hdr, double key) {
     for (std::size_t b = 0; b < 3 && b < kBands; ++b) out.pixels[i * 3 + b] = to_srgb8(c[b] * compress);
   }
   return out;
+}
+
+std::string dark_picture_warning(const RgbImage& image) {
+  const std::size_t pixels = std::size_t(image.width) * std::size_t(image.height);
+  if (pixels == 0 || image.pixels.size() < 3 * pixels) return "";
+  std::size_t dark = 0;
+  for (std::size_t i = 0; i < pixels; ++i) {
+    const std::uint8_t* p = &image.pixels[3 * i];
+    if (std::max({p[0], p[1], p[2]}) <= kDarkPixelLevel) ++dark;
+  }
+  const double share = double(dark) / double(pixels);
+  if (share < kDarkPictureShare) return "";
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "the picture is dark: %.1f%% of its pixels are black (no channel above %d of 255); the camera may "
+                "look past the scene or from behind a wall (a scene file's `camera` line, a composition's `camera` "
+                "key; without one the scene's bounds are framed), or nothing it sees is lit",
+                100.0 * share, kDarkPixelLevel);
+  return text;
 }
 
 }  // namespace rc

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "host_sw/radiosity/png_writer.h"
@@ -30,5 +31,12 @@ struct HdrImage {
 HdrImage render_radiosity(const Scene& scene, const std::vector<Spectrum>& radiosity,
                           const RenderOptions& options);
 RgbImage tone_map(const HdrImage& hdr, double key);
+
+// A picture is dark when at least kDarkPictureShare of its pixels have no channel above
+// kDarkPixelLevel (of 255): the camera sees nothing lit (it looks past the scene, or from behind a
+// wall), or nothing was lit. dark_picture_warning says so, with the share; "" for any other picture.
+constexpr double kDarkPictureShare = 0.99;
+constexpr int kDarkPixelLevel = 8;
+std::string dark_picture_warning(const RgbImage& image);
 
 }  // namespace rc

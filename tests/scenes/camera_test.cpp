@@ -116,5 +116,24 @@ TEST(CameraCheck, NormaliseChecksTheCameraItMoves) {
   }
 }
 
+// frame_bounds sees every corner of the box inside its field of view, whatever the box's size and place.
+TEST(CameraFrame, EveryCornerOfTheBoxIsInView) {
+  const Vec3 boxes[][2] = {{Vec3(0, 0, 0), Vec3(1, 1, 1)}, {Vec3(-5e3, 2, 7), Vec3(5e3, 3, 9)}, {Vec3(1e-9, 0, 0), Vec3(2e-9, 1e-9, 3e-9)}};
+  for (const auto& b : boxes) {
+    const Camera c = frame_bounds(b[0], b[1]);
+    check_camera(c);
+    const Vec3 view = glm::normalize(c.look_at - c.position);
+    const double half = 0.5 * c.vertical_fov_deg * 3.14159265358979323846 / 180.0;
+    for (int k = 0; k < 8; ++k) {
+      const Vec3 corner((k & 1) ? b[1].x : b[0].x, (k & 2) ? b[1].y : b[0].y, (k & 4) ? b[1].z : b[0].z);
+      const Vec3 to = corner - c.position;
+      const double angle = std::acos(std::min(1.0, glm::dot(glm::normalize(to), view)));
+      EXPECT_LE(angle, half * (1 + 1e-9)) << "corner " << k;
+      EXPECT_GT(glm::dot(to, view), 0) << "corner " << k << " behind the camera";
+    }
+  }
+  EXPECT_THROW(frame_bounds(Vec3(0), Vec3(0)), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace rc

@@ -130,6 +130,40 @@ TEST_F(CompositionTest, AnAddedLightLightsAMeshRoom) {
   EXPECT_LT(p.scene.faces.back().tri.normal().y, 0);
 }
 
+// A room of its own units with no camera is framed (prepare_scene: frame_bounds), so the picture sees
+// it; a composition's `camera` key sets the camera, and a bad one is refused naming the key.
+TEST_F(CompositionTest, AMeshRoomIsFramedUnlessACameraIsGiven) {
+  std::ofstream(dir_ / "room.obj") << "v 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nv 0 1 0\nv 1 1 0\nv 1 1 1\nv 0 1 1\n"
+                                      "f 4 3 2 1\nf 6 7 8 5\nf 2 6 5 1\nf 3 7 6 2\nf 4 8 7 3\nf 1 5 8 4\n";
+  const std::string light = R"("light": {"corners": [[0.4, 0.99, 0.4], [0.6, 0.99, 0.4], [0.6, 0.99, 0.6], [0.4, 0.99, 0.6]],
+              "emission": [5, 5, 5]})";
+  SceneOptions options;
+  options.patch_levels = 0;
+  options.file = write("framed.json", R"({"schema": "rc2000sim.composition/1", "room": {"file": "room.obj"}, )" + light + "}");
+  const Scene framed = prepare_scene(options).scene;
+  EXPECT_FALSE(framed.camera_given);
+  // The normalised room fills [0, 1)^3 about; the framing camera looks at its centre along +z.
+  EXPECT_NEAR(framed.camera.look_at.x, 0.5, 0.01);
+  EXPECT_NEAR(framed.camera.look_at.y, 0.5, 0.01);
+  EXPECT_LT(framed.camera.position.z, 0);
+  options.file = write("given.json", R"({"schema": "rc2000sim.composition/1", "room": {"file": "room.obj"}, )" + light +
+                                         R"(, "camera": {"position": [0.5, 0.5, 0.1], "look_at": [0.5, 0.5, 1], "fov_deg": 70}})");
+  const Scene given = prepare_scene(options).scene;
+  EXPECT_TRUE(given.camera_given);
+  EXPECT_EQ(given.camera.vertical_fov_deg, 70);
+  EXPECT_NEAR(given.camera.position.z, 0.1, 0.01);  // normalised with the room (same units as its corners)
+  // The Cornell room keeps the Cornell camera.
+  options.file = write("cornell.json", R"({"schema": "rc2000sim.composition/1", "room": "cornell-box"})");
+  EXPECT_TRUE(prepare_scene(options).scene.camera_given);
+  const std::string bad = (dir_ / "bad.json").string();
+  EXPECT_EQ(error_of(R"({"schema": "rc2000sim.composition/1", "camera": {"position": [0, 0, 0]}})"),
+            bad + ": camera: needs position and look_at");
+  EXPECT_EQ(error_of(R"({"schema": "rc2000sim.composition/1", "camera": {"position": [0, 0, 0], "look_at": [1, 1, 1], "zoom": 2}})"),
+            bad + ": camera.zoom: unknown key (allowed: position, look_at, up, fov_deg)");
+  EXPECT_NE(error_of(R"({"schema": "rc2000sim.composition/1", "camera": {"position": [1, 1, 1], "look_at": [1, 1, 1]}})")
+                .find(bad + ": camera: "), std::string::npos);
+}
+
 TEST_F(CompositionTest, ErrorsNameTheFileAndTheKey) {
   const std::string bad = (dir_ / "bad.json").string();
   EXPECT_EQ(error_of(R"({"schema": "rc2000sim.composition/1", "meshes": [{"file": "tetra.obj", "sclae": 2}]})"),

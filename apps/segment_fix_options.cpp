@@ -9,7 +9,7 @@ namespace rc {
 
 void add_segment_fix_options(CLI::App& cmd, SegmentFixOptions& fixes) {
   cmd.add_option("--offset-lsb", fixes.offset_lsb,
-                 "Move every segment end K LSBs of --bits along its face's normal, off the surface, before the pipeline "
+                 "Move every segment end K LSBs of --bits (of --coordinate-bits when given) along its face's normal, off the surface, before the pipeline "
                  "rounds it (host side, no hardware change; docs/radiosity.md, Fixed-point acne and its fixes)")
       ->check(CLI::Range(1, 1 << 20));
   cmd.add_option("--neighbour-rings", fixes.neighbour_rings,
@@ -56,6 +56,7 @@ std::string fix_name(const SegmentFixOptions& f) {
 
 std::string segment_fix_summary(const SegmentFixOptions& fixes, const SolverResult& r) {
   if (!fixes.any()) return "";
+  if (fixes.neighbour_rings == 0) return fix_name(fixes) + ": host side, no extra tests";
   char text[256];
   std::snprintf(text, sizeof text, "%s: %llu host re-tests (%.3g per segment), %llu segments cleared", fix_name(fixes).c_str(),
                 static_cast<unsigned long long>(r.fix_tests), r.segments ? double(r.fix_tests) / double(r.segments) : 0.0,

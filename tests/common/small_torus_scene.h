@@ -9,13 +9,17 @@
 #include <fstream>
 #include <string>
 
+#include <unistd.h>
+
 #include "scenes/prepare.h"
 
 namespace rc::test {
 
 inline Scene small_torus_scene(int nu = 12, int nv = 6, int patch_levels = 0) {
-  const std::string dir = ::testing::TempDir();
-  const std::string obj = dir + "/small_torus_" + std::to_string(nu) + "x" + std::to_string(nv) + ".obj";
+  // Named by the process: tests run in parallel processes, each writing its own files.
+  const std::string stem = ::testing::TempDir() + "/small_torus_" + std::to_string(nu) + "x" + std::to_string(nv) + "_" +
+                           std::to_string(static_cast<long>(::getpid()));
+  const std::string obj = stem + ".obj";
   {
     std::ofstream out(obj);
     const double pi = std::acos(-1.0);
@@ -33,7 +37,7 @@ inline Scene small_torus_scene(int nu = 12, int nv = 6, int patch_levels = 0) {
       }
     }
   }
-  const std::string json = dir + "/small_torus_" + std::to_string(nu) + "x" + std::to_string(nv) + ".json";
+  const std::string json = stem + ".json";
   {
     std::ofstream out(json);
     out << R"({"schema": "rc2000sim.composition/1", "room": "cornell-box", "meshes": [{"file": ")" << obj

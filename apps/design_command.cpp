@@ -14,6 +14,7 @@
 #include "apps/plot.h"
 #include "apps/progress.h"
 #include "apps/report.h"
+#include "host_sw/studies/workload.h"
 #include "host_sw/studies/paper_workload.h"
 #include "profiles/profile_json.h"
 

@@ -22,6 +22,7 @@
 #include "host_sw/visibility/fixed_visibility.h"
 #include "host_sw/visibility/visibility_factory.h"
 #include "host_sw/outputs/fidelity_json.h"
+#include "apps/segment_fix_options.h"
 #include "host_sw/outputs/run_report_json.h"
 #include "host_sw/outputs/trace_json.h"
 
@@ -232,6 +233,7 @@ void print_summary(const RunOptions& o, const Scene& scene, const RunOutcome& ou
               static_cast<unsigned long long>(r.segments), static_cast<unsigned long long>(r.blocked_segments),
               static_cast<unsigned long long>(out.visibility_tests));
   if (out.fidelity) std::printf("  fidelity     %s\n", fidelity_line(*out.fidelity).c_str());
+  if (const std::string fixes = segment_fix_summary(o.solver.fixes, r); !fixes.empty()) std::printf("  fixes        %s\n", fixes.c_str());
   std::printf("  energy       emitted %.6g = absorbed %.6g + escaping %.6g + unshot %.6g\n", r.energy.emitted,
               r.energy.absorbed, r.energy.escaping, r.energy.unshot);
   if (out.board) {
@@ -282,6 +284,7 @@ nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& pre
   }
   report["visibility_tests"] = out.visibility_tests;
   if (out.fidelity) report["fidelity"] = fidelity_json(*out.fidelity, o.fidelity_warn, out.fidelity_warning);
+  if (o.solver.fixes.any()) report["segment_fixes"] = segment_fix_json(o.solver.fixes, out.solver);
   if (out.board) {
     report["board"] = to_json(*out.board);
     report["lanes_that_fit"] = lanes_that_fit_json(*out.lanes_that_fit);
@@ -367,6 +370,8 @@ void check_run_options(const CLI::App& cmd, const RunOptions& o) {
   } else if (o.fidelity_sample == 0) {
     refuse_given(cmd, {"--fidelity-warn"}, "does not apply with --fidelity-sample 0 (no fidelity is measured)");
   }
+  check_segment_fix_options(cmd, o.arith.is_float(), o.arith.name(), o.impl != Impl::board && o.visibility == SoftwareVisibility::float_double,
+                            o.bits, o.solver.fixes.coordinate_bits);
   if (o.trace_path.empty()) {
     refuse_given(cmd, {"--trace-steps"}, "applies only with --trace (the steps it records)");
   } else {
@@ -432,6 +437,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<RunOptions>();
   auto solver = std::make_shared<SolverCli>();
   auto paper_faithful = std::make_shared<bool>(false);
+  auto fixes = std::make_shared<SegmentFixOptions>();
   CLI::App* cmd = app.add_subcommand("run", "Solve radiosity for one scene; write report.json, patches.csv, image.png");
   add_scene_options(*cmd, options->scene);
   add_solver_options(*cmd, *solver);
@@ -499,10 +505,12 @@ void add_run_command(CLI::App& app, int& exit_code) {
       ->check(CLI::Range(0.0, 1.0))->capture_default_str();
   cmd->add_flag("--quiet", options->quiet, "No progress output");
   add_jobs_option(*cmd, "the fast backend's threads (--visibility fast, or the board's answers)");
-  cmd->callback([options, solver, arith, paper_faithful, cmd, &exit_code] {
+  add_segment_fix_options(*cmd, *fixes);
+  cmd->callback([options, solver, arith, paper_faithful, fixes, cmd, &exit_code] {
     options->solver = solver->resolved(*cmd);
     options->solver.cull_receivers = !*paper_faithful;
     options->arith = parse_arith_option(*arith);
+    options->solver.fixes = resolve_segment_fixes(*fixes, uses_fixed_width(*options), options->bits);
     options->render.height = options->render.width;
     check_run_options(*cmd, *options);
     std::vector<std::string> where = {options->out_dir + "/"};

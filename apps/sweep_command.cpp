@@ -17,6 +17,7 @@
 #include "apps/sweep_merge.h"
 #include "apps/sweep_summary.h"
 #include "apps/sweep_writer.h"
+#include "host_sw/studies/workload.h"
 #include "host_sw/studies/shard_json.h"
 #include "host_sw/studies/study_file.h"
 #include "host_sw/visibility/visibility_factory.h"

@@ -133,7 +133,12 @@ SolverResult ProgressiveRadiosity::run() {
   // u = epsilon / 2); the limit allows twice that.
   rounding_ = 2.0 * (n + 2) * std::numeric_limits<double>::epsilon();
   energy_limit_ = result.energy.emitted * (1.0 + rounding_);
-  visibility_.load_faces(scene_.face_triangles(), scene_.sheets);
+  if (options_.fixes.any()) {  // the fixes' faces: rounded to their coordinate grid when they set one
+    fixer_ = std::make_unique<SegmentFixer>(scene_.face_triangles(), scene_.sheets, options_.fixes);
+    visibility_.load_faces(fixer_->faces(), scene_.sheets);
+  } else {
+    visibility_.load_faces(scene_.face_triangles(), scene_.sheets);
+  }
   every_receiver_shooter_ = -1;
 
   UnshotScan scan = scan_unshot();
@@ -248,7 +253,13 @@ void ProgressiveRadiosity::shoot(int shooter, SolverResult& result) {
   charge(HostWork::SegmentSetup, receivers_.size());
   result.segments += receivers_.size();
   const std::uint64_t tests_before = visibility_.tests_performed();
-  visibility_.submit(batch_);
+  if (fixer_) {
+    fixed_batch_ = batch_;
+    fixer_->adjust(fixed_batch_);
+    visibility_.submit(fixed_batch_);
+  } else {
+    visibility_.submit(batch_);
+  }
 
   // Form factors while visibility is being answered (overlaps on the board in concurrent mode): the
   // point and disc rules' came with the sweep; the analytic rule integrates over the shooter.
@@ -266,6 +277,13 @@ void ProgressiveRadiosity::shoot(int shooter, SolverResult& result) {
   visibility_.collect(blocked_);
   if (answers_) answers_(batch_, blocked_);
   if (visibility_.runs_on_host()) charge(HostWork::IntersectionTest, visibility_.tests_performed() - tests_before);
+  if (fixer_ && options_.fixes.neighbour_rings != 0) {  // the neighbour rule's re-tests run on the host
+    const std::uint64_t fix_tests_before = fixer_->tests_performed(), cleared_before = fixer_->segments_cleared();
+    fixer_->recheck(fixed_batch_, blocked_);
+    charge(HostWork::IntersectionTest, fixer_->tests_performed() - fix_tests_before);
+    result.fix_tests += fixer_->tests_performed() - fix_tests_before;
+    result.fix_cleared += fixer_->segments_cleared() - cleared_before;
+  }
 
   // The share of the shot power the step delivers; above 1 the step creates energy. The analytic
   // rule scales the deliveries back to what was shot (docs/radiosity.md, Form-factor sums).

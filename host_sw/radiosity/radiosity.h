@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -22,6 +23,7 @@
 #include "host_sw/radiosity/form_factor.h"
 #include "host_sw/radiosity/host_cost.h"
 #include "host_sw/radiosity/receiver_sweep.h"
+#include "host_sw/radiosity/segment_fixes.h"
 #include "host_sw/radiosity/visibility.h"
 #include "scenes/scene.h"
 
@@ -48,6 +50,8 @@ struct SolverOptions {
   // every other patch gets a segment, as the paper's hardware and software tested (they exchange
   // nothing, form factor 0, but their segments are uploaded, tested and paid for).
   bool cull_receivers = true;
+  // Host-side fixes for fixed-point self-shadowing (segment_fixes.h; none by default).
+  SegmentFixOptions fixes;
 };
 
 // Power (radiosity x area), summed over bands. emitted = absorbed + escaping + unshot holds exactly
@@ -81,6 +85,9 @@ struct SolverResult {
   std::uint64_t segments = 0;       // visibility segments asked for
   std::uint64_t blocked_segments = 0;   // of the segments whose receiver exchanges energy
   std::uint64_t receivers_skipped = 0;  // behind the shooter or facing away: no segment (when culling)
+  // SolverOptions::fixes: the host's re-tests (neighbour rule) and the segments they cleared.
+  std::uint64_t fix_tests = 0;
+  std::uint64_t fix_cleared = 0;
   FormFactorSums form_factor_sums;
   // Emission was scaled by 2^emission_exponent for the solve (0: not scaled) so that no power is
   // subnormal; radiosity and energies are reported unscaled (kSmallestUnscaledEmission).
@@ -195,6 +202,8 @@ class ProgressiveRadiosity {
   int every_receiver_shooter_ = -1;
   std::vector<double> form_factors_;
   std::vector<std::uint8_t> blocked_;
+  std::unique_ptr<SegmentFixer> fixer_;  // SolverOptions::fixes, when any
+  SegmentBatch fixed_batch_;             // batch_ as the fixes move it
 };
 
 }  // namespace rc

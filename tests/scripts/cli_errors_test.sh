@@ -101,6 +101,12 @@ refused "$work/o" "--fidelity-sample does not apply with --visibility float: dou
 refused "$work/o" "--fidelity-warn does not apply with --fidelity-sample 0" run "${tiny[@]}" --visibility fast --fidelity-sample 0 --fidelity-warn 0.1 --out "$work/o"
 refused "$work/o" "--fidelity-warn: Value 2 not in range" run "${tiny[@]}" --visibility fast --fidelity-warn 2 --out "$work/o"
 refused "$work/o" "--bits does not apply with --arith float:5,10" run "${tiny[@]}" --arith float:5,10 --bits 12 --out "$work/o"
+# The segment fixes (docs/radiosity.md, "Fixed-point acne and its fixes") need the fixed-point grid.
+refused "$work/o" "--offset-lsb needs the fixed-point width (--bits); --visibility float" run "${tiny[@]}" --offset-lsb 2 --out "$work/o"
+refused "$work/o" "--coordinate-bits needs the fixed-point width (--bits)" run "${tiny[@]}" --coordinate-bits 11 --out "$work/o"
+refused "$work/o" "--neighbour-rings does not apply with --arith float:5,10" run "${tiny[@]}" --arith float:5,10 --neighbour-rings 1 --out "$work/o"
+refused "$work/o" "--coordinate-bits must be below --bits (15)" run "${tiny[@]}" --visibility fast --coordinate-bits 15 --out "$work/o"
+refused "$work/o" "--neighbour-rings: Value 3 not in range" run "${tiny[@]}" --visibility fast --neighbour-rings 3 --out "$work/o"
 refused "$work/o" "--steps must be at least 1; omit it to run to convergence" run --steps 0 --quiet --out "$work/o"
 refused "$work/o" "--steps must be at least 1; omit it to run to convergence" accuracy --steps 0 --quiet --out "$work/o"
 refused "$work/o" "--convergence does not apply with --steps" run --steps 5 --convergence 0.9 --quiet --out "$work/o"

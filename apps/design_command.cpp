@@ -129,6 +129,10 @@ void add_design_command(CLI::App& app, int& exit_code) {
                   "visibility on the workload (as `accuracy` measures it), e.g. 0.01");
   cmd->add_option("--max-error-max", o->constraints.max_error_max,
                   "Largest relative max error of patch radiosity a design may have (as `accuracy` measures it)");
+  cmd->add_option("--fidelity", o->fidelity,
+                  "on: measure each width's picture against one double-precision solve of the workload (its error, "
+                  "an objective of the front); off: skip that solve (every design's error not measured)")
+      ->capture_default_str();
   cmd->add_flag("--exhaustive", o->exhaustive, "Simulate every feasible design (no pruning of spare banks)");
   cmd->add_option("--out", cli->out_dir, "Output folder")->check(output_path())->capture_default_str();
   cmd->add_flag("--quiet", cli->quiet, "No progress output");

@@ -65,8 +65,12 @@ std::string point_line(const DesignPoint& p, const DesignSearchResult& r) {
 
 std::string width_table(const DesignSearchResult& r) {
   std::ostringstream md;
-  md << "Each width's own solve against one double-precision solve of the workload (" << r.reference_steps
-     << " steps; `rc2000sim accuracy`'s definitions):\n\n| bits | steps | software alone, s | relative RMSE | relative max | decisions that differ |\n"
+  if (r.reference_steps > 0)
+    md << "Each width's own solve against one double-precision solve of the workload (" << r.reference_steps
+       << " steps; `rc2000sim accuracy`'s definitions):";
+  else
+    md << "Each width's own solve (its error not measured: `--fidelity off`):";
+  md << "\n\n| bits | steps | software alone, s | relative RMSE | relative max | decisions that differ |\n"
         "|---:|---:|---:|---:|---:|---:|\n";
   for (const WidthFidelity& f : r.widths) {
     md << "| " << f.bits << " | " << f.steps << " | " << fmt("%.3f", f.software_seconds) << " | ";
@@ -121,7 +125,10 @@ void print_design(const DesignDocument& doc) {
               r.workload.paper_faithful ? "paper-faithful" : "culled");
   std::printf("  %zu designs within %u banks: %zu cannot exist, %zu pruned (spare banks), %zu simulated\n", r.designs,
               r.max_banks, r.infeasible, r.pruned, r.points.size());
-  std::printf("  widths against one double-precision solve (%d steps):\n", r.reference_steps);
+  if (r.reference_steps > 0)
+    std::printf("  widths against one double-precision solve (%d steps):\n", r.reference_steps);
+  else
+    std::printf("  widths (their error not measured: --fidelity off):\n");
   for (const WidthFidelity& f : r.widths)
     std::printf("    %2d bits: %d steps, software %.3f s, %s\n", f.bits, f.steps, f.software_seconds, fidelity_text(f).c_str());
   if (std::isfinite(doc.constraints.max_error) || std::isfinite(doc.constraints.max_error_max))

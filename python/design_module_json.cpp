@@ -152,6 +152,9 @@ const std::vector<Option>& options() {
       {"max_error_max", [](DesignOptions& o, const ordered_json& v) {
          check_design_cap("--max-error-max", o.constraints.max_error_max = real("max_error_max", v));
        }, [](const DesignOptions& o) { return positive_or_null(o.constraints.max_error_max); }},
+      {"fidelity", [](DesignOptions& o, const ordered_json& v) {
+         o.fidelity = v.is_boolean() ? (v.get<bool>() ? "on" : "off") : text("fidelity", v);
+       }, [](const DesignOptions& o) { return ordered_json(o.fidelity); }},
       {"exhaustive", [](DesignOptions& o, const ordered_json& v) { o.exhaustive = yes_no("exhaustive", v); },
        [](const DesignOptions& o) { return ordered_json(o.exhaustive); }},
       // The process's job count, not a search option (host_sw/radiosity/jobs.h: the command line's --jobs,

@@ -132,7 +132,7 @@ Json design_json(const DesignDocument& doc) {
   j["software_seconds"] = r.software_seconds;
   // Every width solved: its steps, its software-only time and its error against one double-precision
   // solve of the workload (reference_steps long).
-  j["reference_steps"] = r.reference_steps;
+  j["reference_steps"] = r.reference_steps > 0 ? Json(r.reference_steps) : Json(nullptr);  // null: --fidelity off
   Json widths = Json::array();
   for (const WidthFidelity& f : r.widths) widths.push_back(fidelity_json(f));
   j["widths"] = widths;

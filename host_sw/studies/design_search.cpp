@@ -253,15 +253,22 @@ struct Width {
 };
 
 // Every width's own solve, and its fidelity against one double-precision solve (fidelity.h).
+// Without `measure`, the widths' own solves only (their error not measured).
 std::map<int, Width> solve_widths(const Workload& w, BitExactVisibility visibility, const Scene& scene, const std::set<int>& bits,
-                                  int steps, DesignSearchResult& r, const Progress& progress) {
+                                  int steps, bool measure, DesignSearchResult& r, const Progress& progress) {
   const SolverOptions solver = solver_options(w, steps);
   std::vector<Arithmetic> arithmetics;
   for (int b : bits) arithmetics.push_back({choice_name(visibility), b});
   FidelityOptions options;
   options.progress = progress;
-  FidelityResult measured = measure_fidelity(scene, solver, arithmetics, options);
-  r.reference_steps = measured.reference.steps;
+  FidelityResult measured;
+  if (measure) {
+    measured = measure_fidelity(scene, solver, arithmetics, options);
+    r.reference_steps = measured.reference.steps;
+  } else {
+    std::vector<RecordedRun> runs = solve_arithmetics(scene, solver, arithmetics, options);
+    for (std::size_t i = 0; i < runs.size(); ++i) measured.rows.push_back({arithmetics[i], std::move(runs[i]), {}, {}});
+  }
   std::map<int, Width> out;
   for (ArithmeticFidelity& f : measured.rows) {
     Width& width = out[f.arithmetic.bits];
@@ -274,6 +281,7 @@ std::map<int, Width> solve_widths(const Workload& w, BitExactVisibility visibili
     WidthFidelity& fid = width.fidelity;
     fid.bits = f.arithmetic.bits;
     fid.steps = width.functional.result.steps;
+    if (!measure) continue;
     fid.relative_rmse = f.error.relative_rmse();
     fid.relative_max = f.error.relative_max();
     fid.decisions_compared = f.decisions.compared;
@@ -316,8 +324,8 @@ DesignSearchResult search_designs(const Workload& workload, BitExactVisibility v
   for (const DesignCandidate& c : candidates)
     if (c.check.validity == Validity::ok) bits_solved.insert(c.design.config.bits);
   progress("solving at " + std::to_string(bits_solved.size()) + (bits_solved.size() == 1 ? " width" : " widths") +
-           " and in double precision");
-  std::map<int, Width> widths = solve_widths(workload, visibility, scene, bits_solved, steps, r, progress);
+           (space.measure_fidelity ? " and in double precision" : ""));
+  std::map<int, Width> widths = solve_widths(workload, visibility, scene, bits_solved, steps, space.measure_fidelity, r, progress);
   r.steps = widths.at(15).solver.fixed_steps;
   std::vector<TimingCase> cases;
   std::vector<std::size_t> index(candidates.size(), ~std::size_t{0});

@@ -198,12 +198,10 @@ ReferenceDecisions solve_reference(const Scene& scene, const SolverOptions& solv
   return out;
 }
 
-FidelityResult measure_fidelity(const Scene& scene, const SolverOptions& solver, const std::vector<Arithmetic>& arithmetics,
-                                const FidelityOptions& options) {
-  ReferenceDecisions ref = solve_reference(scene, solver, arithmetics, options);
-  FidelityResult out;
-  out.reference = std::move(ref.reference);
-  out.rows.resize(arithmetics.size());
+std::vector<RecordedRun> solve_arithmetics(const Scene& scene, const SolverOptions& solver, const std::vector<Arithmetic>& arithmetics,
+                                           const FidelityOptions& options) {
+  check_arithmetics(arithmetics);
+  std::vector<RecordedRun> out(arithmetics.size());
   const unsigned jobs = resolved_jobs(options);
   const std::size_t n = arithmetics.size();
   const unsigned workers = static_cast<unsigned>(std::min<std::size_t>(jobs, n));
@@ -217,11 +215,7 @@ FidelityResult measure_fidelity(const Scene& scene, const SolverOptions& solver,
     for (std::size_t i; (i = next.fetch_add(1)) < n;) {
       try {
         const Arithmetic& a = arithmetics[i];
-        ArithmeticFidelity& row = out.rows[i];
-        row.arithmetic = a;
-        row.run = record_functional_run(scene, solver, a.backend, a.bits, threads);
-        row.error = compare_solutions(row.run.result.radiosity, out.reference.radiosity);
-        row.decisions = ref.decisions[i];
+        out[i] = record_functional_run(scene, solver, a.backend, a.bits, threads);
         progress("solved " + a.label() + " (" + std::to_string(done.fetch_add(1) + 1) + " of " + std::to_string(n) + ")");
       } catch (...) {
         std::lock_guard<std::mutex> lock(error_mutex);
@@ -234,6 +228,23 @@ FidelityResult measure_fidelity(const Scene& scene, const SolverOptions& solver,
   work();
   for (std::thread& t : helpers) t.join();
   if (error) std::rethrow_exception(error);
+  return out;
+}
+
+FidelityResult measure_fidelity(const Scene& scene, const SolverOptions& solver, const std::vector<Arithmetic>& arithmetics,
+                                const FidelityOptions& options) {
+  ReferenceDecisions ref = solve_reference(scene, solver, arithmetics, options);
+  std::vector<RecordedRun> runs = solve_arithmetics(scene, solver, arithmetics, options);
+  FidelityResult out;
+  out.reference = std::move(ref.reference);
+  for (std::size_t i = 0; i < arithmetics.size(); ++i) {
+    ArithmeticFidelity row;
+    row.arithmetic = arithmetics[i];
+    row.run = std::move(runs[i]);
+    row.error = compare_solutions(row.run.result.radiosity, out.reference.radiosity);
+    row.decisions = ref.decisions[i];
+    out.rows.push_back(std::move(row));
+  }
   return out;
 }
 

@@ -73,6 +73,10 @@ struct FidelityOptions {
 FidelityResult measure_fidelity(const Scene& scene, const SolverOptions& solver, const std::vector<Arithmetic>& arithmetics,
                                 const FidelityOptions& options = {});
 
+// The second part alone: each arithmetic's own solve, `jobs` at a time, in order asked.
+std::vector<RecordedRun> solve_arithmetics(const Scene& scene, const SolverOptions& solver, const std::vector<Arithmetic>& arithmetics,
+                                           const FidelityOptions& options = {});
+
 // The first part alone: the double-precision solve and, along it, the decisions of every arithmetic.
 struct ReferenceDecisions {
   SolverResult reference;

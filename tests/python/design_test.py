@@ -133,7 +133,8 @@ bad = [({"max_banks": 65}, ["--max-banks", "65"]), ({"max_banks": 4}, ["--max-ba
        ({"min_bits": 23, "bits": 15}, ["--min-bits", "23", "--bits", "15"]),
        ({"jobs": 0}, ["--jobs", "0"]), ({"jobs": 513}, ["--jobs", "513"]),
        ({"resources": "yosys"}, ["--resources", "yosys"]), ({"max_error": 0}, ["--max-error", "0"]),
-       ({"max_error_max": float("inf")}, ["--max-error-max", "inf"])]
+       ({"max_error_max": float("inf")}, ["--max-error-max", "inf"]), ({"fidelity": "maybe"}, ["--fidelity", "maybe"]),
+       ({"max_error": 0.01, "fidelity": False}, ["--max-error", "0.01", "--fidelity", "off"])]
 for options, flags in bad:
     given = dict(base, **dict(zip(flags[::2], flags[1::2])))  # the bad values in place of the space's
     done = command(*[x for pair in given.items() for x in pair], "--quiet", "--out", os.path.join(work, "bad"))

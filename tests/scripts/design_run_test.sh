@@ -52,7 +52,8 @@ for bad in "--results nowhere" "--multipliers dsp" "--bank-clocks 0" "--max-bank
 done
 echo "design: errors name their options"
 # Caps and widths that cannot apply, refused before any work.
-for bad in "--max-energy nan" "--max-power inf" "--min-bits 31" "--max-error 0" "--max-error-max nan"; do
+for bad in "--max-energy nan" "--max-power inf" "--min-bits 31" "--max-error 0" "--max-error-max nan" "--fidelity maybe" \
+           "--max-error 0.01 --fidelity off"; do
   # shellcheck disable=SC2086
   if "$sim" design "${space[@]}" $bad --out "$work/bad" 2>"$work/err.txt"; then echo "accepted $bad"; exit 1; fi
   grep -q -- "${bad%% *}" "$work/err.txt" || { echo "error for $bad does not name it:"; cat "$work/err.txt"; exit 1; }
@@ -79,4 +80,15 @@ assert all(p["steps"] == widths[p["bits"]]["steps"] and p["meets_constraints"] =
            for p in d["points"])
 assert d["front"] and all(p["fidelity"]["measured"] for p in d["front"])
 print("design: --max-error 0.01 on a mesh chooses", d["best"]["design"], "at relative RMSE", d["best"]["fidelity"]["relative_rmse"])
+PY
+# --fidelity off: no double-precision solve; every design's error "not measured", the widths' own steps kept.
+"$sim" design "${space[@]}" --fidelity off --out "$work/nofid" > "$work/nofid.txt"
+grep -q "fidelity not measured" "$work/nofid.txt"
+python3 - "$work/nofid/design.json" "$work/search/design.json" <<'PY'
+import json, sys
+off, on = (json.load(open(p)) for p in sys.argv[1:3])
+assert off["reference_steps"] is None and all(not p["fidelity"]["measured"] for p in off["points"])
+assert [p["simulated_seconds"] for p in off["points"]] == [p["simulated_seconds"] for p in on["points"]]
+assert off["best"]["design"] == on["best"]["design"]
+print("design: --fidelity off measures no error and changes no time")
 PY

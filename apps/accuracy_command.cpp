@@ -14,10 +14,7 @@
 #include "apps/plot.h"
 #include "apps/progress.h"
 #include "pipeline/float_format.h"
-#include "host_sw/visibility/comparing_visibility.h"
-#include "host_sw/radiosity/float_visibility.h"
-#include "host_sw/studies/solution_error.h"
-#include "host_sw/visibility/visibility_factory.h"
+#include "host_sw/studies/fidelity.h"
 
 namespace rc {
 
@@ -43,31 +40,23 @@ struct WidthResult {
   std::uint64_t segments_compared = 0, fixed_only_blocks = 0, float_only_blocks = 0;
 };
 
-// `backend` is a visibility backend name (visibility_factory.h): "fast" at `bits`, or "float:E,M".
-WidthResult measure(const Scene& scene, const SolverOptions& solver, const SolverResult& reference,
-                    const std::string& backend, int bits) {
+// One row of the table from the fidelity study's (host_sw/studies/fidelity.h).
+WidthResult width_result(const ArithmeticFidelity& f) {
   WidthResult r;
-  const bool is_float = pipeline::names_float_format(backend);
-  r.arithmetic = is_float ? backend : "fixed:" + std::to_string(bits);
-  r.bits = is_float ? 0 : bits;
-  r.coordinate_bits = is_float ? pipeline::parse_float_format(backend).bits_per_value() : bits;
+  const bool is_float = f.arithmetic.is_float();
+  r.arithmetic = f.arithmetic.label();
+  r.bits = is_float ? 0 : f.arithmetic.bits;
+  r.coordinate_bits = is_float ? pipeline::parse_float_format(f.arithmetic.backend).bits_per_value() : f.arithmetic.bits;
   // As the banks store them: floor(32 / b) coordinates to a 32-bit word, so each takes 32 / floor(32 / b)
   // bits (for fixed point exactly the bank layout's field, board/bank_layout.h); sec 5.6(a)'s count:
   // three coordinates read, one result bit written.
   const int packed_bits = 32 / (32 / r.coordinate_bits);
   r.bytes_per_intersection = 3.0 * packed_bits / 8.0 + 1.0 / 8.0;
-  auto pipeline_answer = make_software_visibility(backend, bits);
-  const SolverResult solved = ProgressiveRadiosity(scene, *pipeline_answer, solver).run();
-  r.steps = solved.steps;
-  r.error = compare_solutions(solved.radiosity, reference.radiosity);
-
-  FloatVisibility float_answer;
-  auto fixed_shadow = make_software_visibility(backend, bits);
-  ComparingVisibility compare(float_answer, *fixed_shadow);
-  ProgressiveRadiosity(scene, compare, solver).run();
-  r.segments_compared = compare.segments_compared();
-  r.fixed_only_blocks = compare.shadow_blocks_answer_clear();
-  r.float_only_blocks = compare.answer_blocks_shadow_clear();
+  r.steps = f.run.result.steps;
+  r.error = f.error;
+  r.segments_compared = f.decisions.compared;
+  r.fixed_only_blocks = f.decisions.arithmetic_only;
+  r.float_only_blocks = f.decisions.double_only;
   return r;
 }
 
@@ -92,17 +81,15 @@ int run_accuracy(const AccuracyOptions& o) {
   outputs.expect(png);
   ProgressLine progress(!o.quiet);
   const Scene scene = prepare_scene(o.scene, [&](const std::string& what) { progress.update("%-60s", what.c_str()); }).scene;
-  FloatVisibility float_visibility;
-  const SolverResult reference = ProgressiveRadiosity(scene, float_visibility, o.solver).run();
+  std::vector<Arithmetic> arithmetics;
+  for (int bits : o.widths) arithmetics.push_back(Arithmetic::fixed(bits));
+  for (const std::string& format : o.formats) arithmetics.push_back(Arithmetic::floating(format));
+  FidelityOptions fidelity;
+  fidelity.progress = [&](const std::string& what) { progress.update("%-60s", what.c_str()); };
+  const FidelityResult measured = measure_fidelity(scene, o.solver, arithmetics, fidelity);
+  const SolverResult& reference = measured.reference;
   std::vector<WidthResult> rows;
-  for (int bits : o.widths) {
-    progress.update("width %d bits", bits);
-    rows.push_back(measure(scene, o.solver, reference, "fast", bits));
-  }
-  for (const std::string& format : o.formats) {
-    progress.update("%-30s", format.c_str());
-    rows.push_back(measure(scene, o.solver, reference, format, 0));
-  }
+  for (const ArithmeticFidelity& f : measured.rows) rows.push_back(width_result(f));
   progress.finish();
   outputs.add(csv, width_rows_csv(rows, reference.steps));
   outputs.write();
@@ -140,7 +127,7 @@ void add_accuracy_command(CLI::App& app, int& exit_code) {
       ->delimiter(';')->capture_default_str();
   cmd->add_option("--out", options->out_dir, "Output folder")->check(output_path())->capture_default_str();
   cmd->add_flag("--quiet", options->quiet, "No progress output");
-  add_jobs_option(*cmd, "the fast backend's threads");
+  add_jobs_option(*cmd, "threads of the reference's answers and solves run at once");
   cmd->callback([options, solver, cmd, &exit_code] {
     options->solver = solver->resolved(*cmd);
     if (options->formats == std::vector<std::string>{"none"}) options->formats.clear();

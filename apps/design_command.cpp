@@ -1,5 +1,5 @@
 // `rc2000sim design` (issue 25, docs/design.md): the fastest feasible design of one device for one
-// workload, and the Pareto front of time, energy and banks, every figure simulated
+// workload, and the Pareto front of time, energy, banks and error, every figure simulated
 // (host_sw/studies/design_search.h). Writes design.json, design.csv, design.md, roofline.csv,
 // best-device.json (the best design's profile, for `rc2000sim run --device`) and two plots.
 #include <cstdio>
@@ -56,6 +56,8 @@ void check_and_resolve(const CLI::App& cmd, DesignCli& cli) {
     if (given(cmd, "--min-bits")) check_design_min_bits(o.constraints.min_bits);
     if (given(cmd, "--max-energy")) check_design_cap("--max-energy", o.constraints.max_energy_joules);
     if (given(cmd, "--max-power")) check_design_cap("--max-power", o.constraints.max_watts);
+    if (given(cmd, "--max-error")) check_design_cap("--max-error", o.constraints.max_error);
+    if (given(cmd, "--max-error-max")) check_design_cap("--max-error-max", o.constraints.max_error_max);
     for (const auto& [option, text] : {std::pair<const char*, const std::string&>{"--lanes", o.lanes}, {"--banks", o.banks},
                                        {"--bank-clocks", o.bank_clocks}})
       if (given(cmd, option)) check_design_axis(option, text);
@@ -101,7 +103,7 @@ void add_design_command(CLI::App& app, int& exit_code) {
   DesignOptions* o = &cli->options;
   CLI::App* cmd = app.add_subcommand(
       "design", "Search one device's designs for a workload: the fastest feasible one and the Pareto front of time, "
-                "energy and banks, every figure simulated (docs/design.md)");
+                "energy, banks and error, every figure simulated (docs/design.md)");
   add_scene_options(*cmd, o->workload.scene);
   cmd->add_option("--steps", cli->steps,
                   "Steps every design replays (default: Table 2's for a paper scene, else to convergence; at most " +
@@ -126,6 +128,15 @@ void add_design_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("--max-energy", o->constraints.max_energy_joules, "Most energy a design's run may take, joules");
   cmd->add_option("--max-power", o->constraints.max_watts, "Most average power a design's run may draw, watts");
+  cmd->add_option("--max-error", o->constraints.max_error,
+                  "Largest error of the picture a design may have: relative RMSE of patch radiosity against double-precision "
+                  "visibility on the workload (as `accuracy` measures it), e.g. 0.01");
+  cmd->add_option("--max-error-max", o->constraints.max_error_max,
+                  "Largest relative max error of patch radiosity a design may have (as `accuracy` measures it)");
+  cmd->add_option("--fidelity", o->fidelity,
+                  "on: measure each width's picture against one double-precision solve of the workload (its error, "
+                  "an objective of the front); off: skip that solve (every design's error not measured)")
+      ->capture_default_str();
   cmd->add_flag("--exhaustive", o->exhaustive, "Simulate every feasible design (no pruning of spare banks)");
   cmd->add_option("--out", cli->out_dir, "Output folder")->check(output_path())->capture_default_str();
   cmd->add_flag("--quiet", cli->quiet, "No progress output");

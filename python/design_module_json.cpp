@@ -149,6 +149,14 @@ const std::vector<Option>& options() {
        [](const DesignOptions& o) { return positive_or_null(o.constraints.max_energy_joules); }},
       {"max_power", [](DesignOptions& o, const ordered_json& v) { check_design_cap("--max-power", o.constraints.max_watts = real("max_power", v)); },
        [](const DesignOptions& o) { return positive_or_null(o.constraints.max_watts); }},
+      {"max_error", [](DesignOptions& o, const ordered_json& v) { check_design_cap("--max-error", o.constraints.max_error = real("max_error", v)); },
+       [](const DesignOptions& o) { return positive_or_null(o.constraints.max_error); }},
+      {"max_error_max", [](DesignOptions& o, const ordered_json& v) {
+         check_design_cap("--max-error-max", o.constraints.max_error_max = real("max_error_max", v));
+       }, [](const DesignOptions& o) { return positive_or_null(o.constraints.max_error_max); }},
+      {"fidelity", [](DesignOptions& o, const ordered_json& v) {
+         o.fidelity = v.is_boolean() ? (v.get<bool>() ? "on" : "off") : text("fidelity", v);
+       }, [](const DesignOptions& o) { return ordered_json(o.fidelity); }},
       {"exhaustive", [](DesignOptions& o, const ordered_json& v) { o.exhaustive = yes_no("exhaustive", v); },
        [](const DesignOptions& o) { return ordered_json(o.exhaustive); }},
       // The process's job count, not a search option (host_sw/radiosity/jobs.h: the command line's --jobs,

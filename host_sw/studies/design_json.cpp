@@ -29,6 +29,21 @@ std::string scene_arguments(const SceneOptions& s) {
   return a;
 }
 
+// One width's own solve and its error against double precision; null figures: not measured.
+Json fidelity_json(const WidthFidelity& f) {
+  Json j;
+  j["bits"] = f.bits;
+  j["steps"] = f.steps;
+  j["software_seconds"] = finite_or_null(f.software_seconds);
+  j["measured"] = f.measured();
+  j["relative_rmse"] = finite_or_null(f.relative_rmse);
+  j["relative_max_error"] = finite_or_null(f.relative_max);
+  j["decisions_compared"] = f.decisions_compared;
+  j["decisions_differ"] = f.decisions_differ;
+  j["decisions_differ_share"] = finite_or_null(f.decisions_differ_share());
+  return j;
+}
+
 Json point_json(const DesignPoint& p, const DesignSearchResult& r) {
   const SweepConfig& c = p.design.config;
   Json j;
@@ -45,7 +60,10 @@ Json point_json(const DesignPoint& p, const DesignSearchResult& r) {
   j["clock_mhz"] = finite_or_null(p.row.clock_mhz);
   j["simulated_seconds"] = p.row.simulated_seconds;
   j["speedup_vs_reference"] = r.reference ? finite_or_null(r.reference->row.simulated_seconds / p.row.simulated_seconds) : Json(nullptr);
-  j["speedup_vs_software"] = finite_or_null(r.software_seconds / p.row.simulated_seconds);
+  // Over the software-only run of the design's own width's solve (fidelity.software_seconds).
+  j["speedup_vs_software"] = finite_or_null(speedup_over_software(p));
+  j["steps"] = p.row.steps;
+  j["fidelity"] = fidelity_json(p.fidelity);
   j["energy_joules"] = finite_or_null(p.row.energy_joules);
   j["average_watts"] = finite_or_null(p.row.average_watts);
   j["tests"] = p.tests;
@@ -87,7 +105,7 @@ std::string run_command(const DesignDocument& doc, const DesignPoint& p, const s
   if (c.concurrent) cmd += " --concurrent";
   // The source of resources decides whether the lanes fit: the run must use the search's.
   if (doc.space.resources != pipeline::ResourceSource::paper_fit) cmd += " --resources " + choice_name(doc.space.resources);
-  cmd += scene_arguments(w.scene) + " --steps " + std::to_string(doc.result.steps) + " --form-factor " + to_string(w.form_factor);
+  cmd += scene_arguments(w.scene) + " --steps " + std::to_string(p.row.steps) + " --form-factor " + to_string(w.form_factor);
   if (w.paper_faithful) cmd += " --paper-faithful";
   return cmd + " --out " + doc.out_dir + "/best-run";
 }
@@ -102,7 +120,9 @@ Json design_json(const DesignDocument& doc) {
   j["constraints"] = {{"max_banks", r.max_banks},
                       {"min_bits", doc.constraints.min_bits},
                       {"max_energy_joules", finite_or_null(doc.constraints.max_energy_joules)},
-                      {"max_watts", finite_or_null(doc.constraints.max_watts)}};
+                      {"max_watts", finite_or_null(doc.constraints.max_watts)},
+                      {"max_error", finite_or_null(doc.constraints.max_error)},
+                      {"max_error_max", finite_or_null(doc.constraints.max_error_max)}};
   j["resources"] = choice_name(doc.space.resources);  // where the lanes' slices and block multipliers came from
   j["designs"] = r.designs;
   j["infeasible"] = r.infeasible;
@@ -110,6 +130,12 @@ Json design_json(const DesignDocument& doc) {
   j["simulated"] = r.points.size();
   j["infeasible_examples"] = r.infeasible_reasons;
   j["software_seconds"] = r.software_seconds;
+  // Every width solved: its steps, its software-only time and its error against one double-precision
+  // solve of the workload (reference_steps long).
+  j["reference_steps"] = r.reference_steps > 0 ? Json(r.reference_steps) : Json(nullptr);  // null: --fidelity off
+  Json widths = Json::array();
+  for (const WidthFidelity& f : r.widths) widths.push_back(fidelity_json(f));
+  j["widths"] = widths;
   if (r.best) {
     j["best"] = point_json(r.points[*r.best], r);
     j["best"]["run_command"] = run_command(doc, r.points[*r.best], "best-device.json");

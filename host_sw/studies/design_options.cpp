@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include "board/lane_count.h"
 #include "host_sw/platform/card_options.h"
@@ -153,6 +154,14 @@ void resolve_design_options(DesignOptions& o) {
   s.concurrent = parse_concurrency(o.concurrent);
   o.workload.source = scene_source(o.workload.scene);
   o.workload.paper_faithful = !o.culled;
+  if (o.fidelity != "on" && o.fidelity != "off")
+    throw std::invalid_argument("--fidelity: '" + o.fidelity + "' is not one of on, off");
+  s.measure_fidelity = o.fidelity == "on";
+  for (const auto& [option, bound] : {std::pair<const char*, double>{"--max-error", o.constraints.max_error},
+                                      {"--max-error-max", o.constraints.max_error_max}})
+    if (!s.measure_fidelity && std::isfinite(bound))
+      throw std::invalid_argument(std::string(option) + ": an error bound needs the picture's error measured; it does not "
+                                  "apply with --fidelity off");
   if (o.constraints.max_banks > kMaxRunBanks)
     throw std::invalid_argument("--max-banks: " + std::to_string(o.constraints.max_banks) + " is above " +
                                 std::to_string(kMaxRunBanks) + ", the most `rc2000sim run --banks` takes");

@@ -26,6 +26,7 @@ struct DesignOptions {
   DesignConstraints constraints;
   std::string lanes, banks, bank_clocks;  // empty: the space's rule (1 .. what fits, 5 .. max banks, the profile's)
   std::string results, bits, multipliers, cards, concurrent;
+  std::string fidelity = "on";  // --fidelity on|off: space.measure_fidelity
   bool culled = false;  // cull receivers behind the shooter (workload.paper_faithful = !culled)
   bool exhaustive = false;
   DesignOptions();  // the defaults: default_design_workload(), DesignSpace{}, DesignConstraints{}, the axes' text of DesignSpace{}
@@ -51,8 +52,8 @@ FormFactorKind design_form_factor(const std::string& name);  // checked, then it
 
 // The axes' text parsed into options.space, the workload's source and segments set (from --scene
 // and --culled), and the combinations checked
-// (--min-bits against --bits, --max-banks against kMaxRunBanks). Throws std::invalid_argument naming
-// the option.
+// (--min-bits against --bits, --max-banks against kMaxRunBanks, an error bound against --fidelity off).
+// Throws std::invalid_argument naming the option.
 void resolve_design_options(DesignOptions& options);
 
 }  // namespace rc

@@ -11,6 +11,7 @@
 #include "board/design_fit.h"
 #include "board/throughput_estimates.h"
 #include "host_sw/platform/run_bounds.h"
+#include "host_sw/studies/fidelity.h"
 #include "host_sw/studies/workload.h"
 #include "host_sw/studies/study.h"
 
@@ -25,6 +26,10 @@ unsigned total_banks(const DesignPoint& p) { return p.design.config.banks * p.de
 
 double energy_or_worst(const SweepRow& r) {
   return std::isfinite(r.energy_joules) ? r.energy_joules : std::numeric_limits<double>::infinity();
+}
+
+double error_or_worst(const DesignPoint& p) {
+  return p.fidelity.measured() ? p.fidelity.relative_rmse : std::numeric_limits<double>::infinity();
 }
 
 ProfileSetting setting(const std::string& path, const profiles::FieldValue& value, const DesignSpace& space) {
@@ -149,14 +154,14 @@ void mark_front(std::vector<DesignPoint>& points) {
   for (DesignPoint& p : points) {
     p.on_front = false;
     if (!p.meets_constraints) continue;
-    const double t = p.row.simulated_seconds, e = energy_or_worst(p.row);
+    const double t = p.row.simulated_seconds, e = energy_or_worst(p.row), err = error_or_worst(p);
     const unsigned b = total_banks(p);
     bool dominated = false;
     for (const DesignPoint& q : points) {
       if (&q == &p || !q.meets_constraints) continue;
-      const double qt = q.row.simulated_seconds, qe = energy_or_worst(q.row);
+      const double qt = q.row.simulated_seconds, qe = energy_or_worst(q.row), qerr = error_or_worst(q);
       const unsigned qb = total_banks(q);
-      if (qt <= t && qe <= e && qb <= b && (qt < t || qe < e || qb < b)) {
+      if (qt <= t && qe <= e && qb <= b && qerr <= err && (qt < t || qe < e || qb < b || qerr < err)) {
         dominated = true;
         break;
       }
@@ -169,7 +174,10 @@ void apply_caps(std::vector<DesignPoint>& points, const DesignConstraints& c) {
   for (DesignPoint& p : points) {
     const bool energy_ok = std::isinf(c.max_energy_joules) || p.row.energy_joules <= c.max_energy_joules;
     const bool power_ok = std::isinf(c.max_watts) || p.row.average_watts <= c.max_watts;
-    p.meets_constraints = energy_ok && power_ok;  // a NaN energy or power fails a cap that is set
+    // Not measured (NaN) fails an error cap that is set, as NaN fails any comparison.
+    const bool rmse_ok = std::isinf(c.max_error) || p.fidelity.relative_rmse <= c.max_error;
+    const bool max_ok = std::isinf(c.max_error_max) || p.fidelity.relative_max <= c.max_error_max;
+    p.meets_constraints = energy_ok && power_ok && rmse_ok && max_ok;  // a NaN energy or power fails a cap that is set
   }
 }
 
@@ -231,21 +239,54 @@ DesignPoint design_point(const DesignConfig& design, const TimingOutcome& outcom
   return p;
 }
 
+double speedup_over_software(const DesignPoint& p) {
+  return p.fidelity.software_seconds / p.row.simulated_seconds;
+}
+
 namespace {
 
 struct Width {
   RecordedRun functional;
   SolverOptions solver;
   std::uint64_t max_segments = 0;
+  WidthFidelity fidelity;
 };
 
-Width solve_width(const Workload& w, BitExactVisibility visibility, const Scene& scene, int bits, int steps) {
-  Width out;
-  out.solver = solver_options(w, steps);
-  out.functional = record_functional_run(scene, out.solver, choice_name(visibility), bits);
-  out.solver.fixed_steps = out.functional.result.steps;  // to convergence: replay what was solved
-  for (int i = 0; i < out.functional.result.steps; ++i)
-    out.max_segments = std::max<std::uint64_t>(out.max_segments, out.functional.recording.segments(static_cast<std::size_t>(i)));
+// Every width's own solve, and its fidelity against one double-precision solve (fidelity.h).
+// Without `measure`, the widths' own solves only (their error not measured).
+std::map<int, Width> solve_widths(const Workload& w, BitExactVisibility visibility, const Scene& scene, const std::set<int>& bits,
+                                  int steps, bool measure, DesignSearchResult& r, const Progress& progress) {
+  const SolverOptions solver = solver_options(w, steps);
+  std::vector<Arithmetic> arithmetics;
+  for (int b : bits) arithmetics.push_back({choice_name(visibility), b});
+  FidelityOptions options;
+  options.progress = progress;
+  FidelityResult measured;
+  if (measure) {
+    measured = measure_fidelity(scene, solver, arithmetics, options);
+    r.reference_steps = measured.reference.steps;
+  } else {
+    std::vector<RecordedRun> runs = solve_arithmetics(scene, solver, arithmetics, options);
+    for (std::size_t i = 0; i < runs.size(); ++i) measured.rows.push_back({arithmetics[i], std::move(runs[i]), {}, {}});
+  }
+  std::map<int, Width> out;
+  for (ArithmeticFidelity& f : measured.rows) {
+    Width& width = out[f.arithmetic.bits];
+    width.functional = std::move(f.run);
+    width.solver = solver;
+    width.solver.fixed_steps = width.functional.result.steps;  // to convergence: replay what was solved
+    for (int i = 0; i < width.functional.result.steps; ++i)
+      width.max_segments =
+          std::max<std::uint64_t>(width.max_segments, width.functional.recording.segments(static_cast<std::size_t>(i)));
+    WidthFidelity& fid = width.fidelity;
+    fid.bits = f.arithmetic.bits;
+    fid.steps = width.functional.result.steps;
+    if (!measure) continue;
+    fid.relative_rmse = f.error.relative_rmse();
+    fid.relative_max = f.error.relative_max();
+    fid.decisions_compared = f.decisions.compared;
+    fid.decisions_differ = f.decisions.differ();
+  }
   return out;
 }
 
@@ -279,14 +320,12 @@ DesignSearchResult search_designs(const Workload& workload, BitExactVisibility v
   r.faces = scene.faces.size();
   r.patches = scene.patches.size();
   const int steps = steps_to_solve(workload, r.faces, r.patches);
-  std::map<int, Width> widths;
+  std::set<int> bits_solved = {15};  // the reference's
   for (const DesignCandidate& c : candidates)
-    if (c.check.validity == Validity::ok) widths.emplace(c.design.config.bits, Width{});
-  widths.emplace(15, Width{});  // the reference's
-  for (auto& [bits, w] : widths) {
-    progress("solving at " + std::to_string(bits) + " bits");
-    w = solve_width(workload, visibility, scene, bits, steps);
-  }
+    if (c.check.validity == Validity::ok) bits_solved.insert(c.design.config.bits);
+  progress("solving at " + std::to_string(bits_solved.size()) + (bits_solved.size() == 1 ? " width" : " widths") +
+           (space.measure_fidelity ? " and in double precision" : ""));
+  std::map<int, Width> widths = solve_widths(workload, visibility, scene, bits_solved, steps, space.measure_fidelity, r, progress);
   r.steps = widths.at(15).solver.fixed_steps;
   std::vector<TimingCase> cases;
   std::vector<std::size_t> index(candidates.size(), ~std::size_t{0});
@@ -306,23 +345,37 @@ DesignSearchResult search_designs(const Workload& workload, BitExactVisibility v
   DesignCases ref = design_cases({reference}, scene, w15.solver, w15.functional.recording, w15.max_segments, true);
   const std::size_t ref_case = cases.size();
   cases.push_back(ref.cases.at(0));
-  TimingCase software = ref.cases.at(0);
-  software.label = "software";
-  software.software = true;
-  software.host = space.host;
-  software.host_profile = checker.host(reference.design.config);
-  const std::size_t software_case = cases.size();
-  cases.push_back(software);
+  // Software alone at every width: the host testing every segment of that width's own solve.
+  std::map<int, std::size_t> software_case;
+  for (const auto& [bits, w] : widths) {
+    TimingCase software;
+    software.label = "software-" + std::to_string(bits);
+    software.scene = &scene;
+    software.solver = w.solver;
+    software.recording = &w.functional.recording;
+    software.software = true;
+    software.host = space.host;
+    software.host_profile = checker.host(reference.design.config);
+    software_case[bits] = cases.size();
+    cases.push_back(std::move(software));
+  }
   progress("simulating " + std::to_string(cases.size()) + " systems");
   const std::vector<TimingOutcome> outcomes = run_timing_study(cases);
+  for (auto& [bits, w] : widths) {
+    w.fidelity.software_seconds = outcomes[software_case.at(bits)].simulated_seconds;
+    r.widths.push_back(w.fidelity);
+  }
   for (std::size_t i = 0; i < candidates.size(); ++i)
     if (index[i] != ~std::size_t{0}) {
-      r.points.push_back(design_point(candidates[i].design, outcomes[index[i]], r.steps));
+      const Width& w = widths.at(candidates[i].design.config.bits);
+      r.points.push_back(design_point(candidates[i].design, outcomes[index[i]], w.fidelity.steps));
       r.points.back().profile = *candidates[i].check.options.device_profile;
+      r.points.back().fidelity = w.fidelity;
     }
   r.reference = design_point(reference.design, outcomes[ref_case], r.steps);
   r.reference->profile = *reference.check.options.device_profile;
-  r.software_seconds = outcomes[software_case].simulated_seconds;
+  r.reference->fidelity = w15.fidelity;
+  r.software_seconds = w15.fidelity.software_seconds;
   apply_caps(r.points, constraints);
   mark_front(r.points);
   r.best = fastest(r.points);

@@ -19,6 +19,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <optional>
@@ -59,6 +60,10 @@ struct DesignSpace {
   std::vector<bool> concurrent = {true};
   // Not an axis: where the lanes' slices and block multipliers come from (which lane counts fit).
   pipeline::ResourceSource resources = pipeline::ResourceSource::paper_fit;
+  // Not an axis: whether each width's picture is measured against one double-precision solve of the
+  // workload (WidthFidelity; `--fidelity off` skips that solve, the costliest part of a search on the
+  // default workload, and leaves every design's error "not measured").
+  bool measure_fidelity = true;
 };
 
 struct DesignConstraints {
@@ -66,6 +71,29 @@ struct DesignConstraints {
   int min_bits = 7;
   double max_energy_joules = std::numeric_limits<double>::infinity();
   double max_watts = std::numeric_limits<double>::infinity();
+  // The picture's error against double-precision visibility on the workload (WidthFidelity, the
+  // `accuracy` command's definitions): relative RMSE and relative max of patch radiosity. A design
+  // whose fidelity was not measured does not meet a bound that is set.
+  double max_error = std::numeric_limits<double>::infinity();
+  double max_error_max = std::numeric_limits<double>::infinity();
+};
+
+// One width's own solve of the workload and what its arithmetic does to the picture
+// (host_sw/studies/fidelity.h): the steps it took, the software-only time of that solve (the host
+// testing every segment, simulated), and its patch radiosity's error against ONE double-precision
+// solve of the same workload, with the share of visibility decisions that differ along that solve.
+struct WidthFidelity {
+  int bits = 0;
+  int steps = 0;                      // of this width's own solve (what its designs replay)
+  double software_seconds = std::numeric_limits<double>::quiet_NaN();
+  // NaN: not measured.
+  double relative_rmse = std::numeric_limits<double>::quiet_NaN();
+  double relative_max = std::numeric_limits<double>::quiet_NaN();
+  std::uint64_t decisions_compared = 0, decisions_differ = 0;
+  bool measured() const { return relative_rmse == relative_rmse; }
+  double decisions_differ_share() const {
+    return decisions_compared ? double(decisions_differ) / double(decisions_compared) : std::numeric_limits<double>::quiet_NaN();
+  }
 };
 
 // What bounds a design, from the one bound model of a board run (host_sw/platform/run_bounds.h, whose
@@ -110,7 +138,8 @@ struct DesignPoint {
   double bank_bytes_per_test = 0;  // every bank's bytes read and written / ray-face tests
   double pci_bytes_per_test = 0;   // both directions
   double tests_per_second = 0;     // over the whole run
-  bool meets_constraints = false;  // energy and power caps
+  WidthFidelity fidelity;           // of the design's width: steps, software time, error
+  bool meets_constraints = false;  // energy, power and error caps
   bool on_front = false;
   board::DeviceProfile profile;     // the design's device profile (its settings applied): `run --device` takes it
 };
@@ -120,22 +149,26 @@ struct DesignPoint {
 // fewer cards, then the label), or none.
 std::optional<std::size_t> fastest(const std::vector<DesignPoint>& points);
 // Marks on_front: a point meeting the constraints that no other such point equals or beats in time,
-// energy and banks while beating it in one. A missing energy (NaN) counts as the worst.
+// energy, banks and error (relative RMSE) while beating it in one. A missing energy or error (NaN)
+// counts as the worst.
 void mark_front(std::vector<DesignPoint>& points);
-// Sets meets_constraints from the caps (energy and average power).
+// Sets meets_constraints from the caps (energy, average power, error: a point whose error was not
+// measured fails an error cap).
 void apply_caps(std::vector<DesignPoint>& points, const DesignConstraints& constraints);
 
 struct DesignSearchResult {
   std::string device;
   Workload workload;
   std::size_t faces = 0, patches = 0;
-  int steps = 0;
+  int steps = 0;            // the paper's two-lane design's (its 15-bit solve's); each point has its own width's
+  int reference_steps = 0;  // of the double-precision solve the widths' errors are measured against
+  std::vector<WidthFidelity> widths;  // every width solved, ascending
   std::size_t designs = 0, infeasible = 0, pruned = 0;  // of the space within the constraints
   std::vector<std::string> infeasible_reasons;          // one per reason kind, an example each
   std::vector<DesignPoint> points;                      // simulated, in enumeration order
   std::optional<std::size_t> best;
   std::optional<DesignPoint> reference;                 // the paper's two-lane design on this workload
-  double software_seconds = 0;
+  double software_seconds = 0;  // of the 15-bit solve (the paper's software column); each width's: WidthFidelity
   unsigned max_banks = 0;
 };
 
@@ -152,12 +185,15 @@ struct DesignCases {
 DesignCases design_cases(const std::vector<DesignCandidate>& candidates, const Scene& scene, const SolverOptions& solver,
                          const VisibilityRecording& recording, std::uint64_t max_segments, bool exhaustive);
 DesignPoint design_point(const DesignConfig& design, const TimingOutcome& outcome, int steps);
+// A point's speed-up over the software-only run of its own width's solve (NaN when unknown).
+double speedup_over_software(const DesignPoint& p);
 
 // The whole search (runs a timing study: once per process) on `workload` (default_design_workload(),
 // workload.h: the paper's 280/4480 box, Table 2's steps, every segment, point), its visibility
 // answered by `visibility` at every width searched. Every design replays the steps of the
-// workload's policy (steps_to_solve); to convergence, those its width's solve took (the result's
-// `steps`: the 15-bit solve's). `progress` gets one line per phase.
+// workload's policy (steps_to_solve); to convergence, those its own width's solve took. Each width
+// is also measured against one double-precision solve of the workload (fidelity.h) and priced as
+// software alone (a software timing case per width). `progress` gets one line per phase.
 DesignSearchResult search_designs(const Workload& workload, BitExactVisibility visibility, const DesignSpace& space,
                                   const DesignConstraints& constraints, bool exhaustive,
                                   const std::function<void(const std::string&)>& progress);

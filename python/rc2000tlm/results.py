@@ -121,8 +121,10 @@ class DesignPoint:
     """One simulated design (a point record of design.json, docs/outputs.md): design (its description),
     device, lanes, banks, bank_clock_mhz, results, bits, multipliers, cards, concurrent, clock_mhz,
     simulated_seconds, speedup_vs_reference, speedup_vs_software, energy_joules, average_watts, tests,
-    tests_per_second, tests_per_second_while_fpga_busy, bank_bytes_per_test, pci_bytes_per_test,
-    bound (a DesignBound), meets_constraints, on_front."""
+    tests_per_second, tests_per_second_while_fpga_busy, bank_bytes_per_test, pci_bytes_per_test, steps
+    (its width's own solve's), fidelity (a dict: bits, steps, software_seconds, measured, relative_rmse,
+    relative_max_error, decisions_compared, decisions_differ, decisions_differ_share; None figures when
+    not measured), bound (a DesignBound), meets_constraints, on_front."""
 
     def __init__(self, record):
         self._record = record
@@ -138,10 +140,11 @@ class DesignPoint:
 
 class DesignResult:
     """A design search (`rc2000sim design`, docs/design.md): best (the fastest design meeting the
-    constraints, a DesignPoint, or None when none does), front (the Pareto front of time, energy and
-    banks), points (every simulated design, in the search's order), reference (the paper's two-lane
+    constraints, a DesignPoint, or None when none does), front (the Pareto front of time, energy,
+    banks and error), points (every simulated design, in the search's order), reference (the paper's two-lane
     design on the same workload), the workload, constraints, counts (designs, infeasible,
-    pruned_spare_banks, simulated), software_seconds, roofline, and best_device (the best design's
+    pruned_spare_banks, simulated), software_seconds (15 bits'), widths (every width solved: its steps,
+    software time and error against one double-precision solve of reference_steps), roofline, and best_device (the best design's
     device profile, best-device.json, for run(device=...) once written to a file). run_command: the
     `rc2000sim run` line of a loaded output folder (it names that folder's files; None for a call)."""
 
@@ -155,7 +158,7 @@ class DesignResult:
         self.workload = document.get("workload")
         self.constraints = document.get("constraints")
         for key in ("designs", "infeasible", "pruned_spare_banks", "simulated", "infeasible_examples",
-                    "software_seconds", "roofline"):
+                    "software_seconds", "reference_steps", "widths", "roofline"):
             setattr(self, key, document.get(key))
         self.best = DesignPoint(best) if best else None
         self.reference = DesignPoint(document["reference"]) if document.get("reference") else None
@@ -168,13 +171,15 @@ class DesignResult:
 
     def to_dataframe(self):
         """One row per simulated design: the point records' columns with the bound spread into bound_run,
-        bound_fpga_stream, bound_fpga_share, bound_fpga_next and bound_text; on_front, and best (the
-        fastest design meeting the constraints)."""
+        bound_fpga_stream, bound_fpga_share, bound_fpga_next and bound_text, the fidelity spread into
+        fidelity_relative_rmse, fidelity_software_seconds, ...; on_front, and best (the fastest design
+        meeting the constraints)."""
         best = self.best.design if self.best else None
         rows = []
         for p in self._document.get("points", []):
-            row = {k: v for k, v in p.items() if k != "bound"}
+            row = {k: v for k, v in p.items() if k not in ("bound", "fidelity")}
             row.update({"bound_" + k: v for k, v in p.get("bound", {}).items()})
+            row.update({"fidelity_" + k: v for k, v in (p.get("fidelity") or {}).items()})
             row["best"] = p.get("design") == best
             rows.append(row)
         return _dataframe(rows)

@@ -296,11 +296,11 @@ def _design_value(v):
 
 def design(progress=False, **options):
     """A design search as `rc2000sim design` runs it (docs/design.md): the fastest feasible design of one
-    device for one workload and the Pareto front of time, energy and banks, every figure simulated.
+    device for one workload and the Pareto front of time, energy, banks and error, every figure simulated.
     The options are the command's, by the same names in snake_case (scene, faces, face_levels,
     patch_levels, patch_size, steps, culled, form_factor, device, host, lanes, banks, bank_clocks,
     results, bits, multipliers, resources, cards, concurrent, max_banks, min_bits, max_energy, max_power,
-    exhaustive, jobs), with the command's defaults (design_defaults() lists them); an axis takes the
+    max_error, max_error_max, fidelity ('on', 'off' or a bool), exhaustive, jobs), with the command's defaults (design_defaults() lists them); an axis takes the
     command's text ("1-4"), a list ([1, 2, 4]) or one value. An option the command does not have is a
     TypeError; a value it refuses is a ValueError with its message. progress: the search's phases on
     stderr. Returns a DesignResult."""
@@ -314,5 +314,5 @@ def design_defaults():
     """The design search's defaults by option name, from the C++ options (the command line's); None
     where the command's rule applies (lanes: 1 .. the most that fit; banks: 5 .. max_banks; bank
     clocks: the profile's; steps: Table 2's for a paper scene, else to convergence; max_banks: the
-    profile's count; no energy or power cap)."""
+    profile's count; no energy, power or error cap)."""
     return _submit_all([("design_defaults", {})], False, "design")[0]

@@ -10,7 +10,9 @@ build tree's package:
   4. values the command refuses raise ValueError with the command's message (naming the option and
      the limit); an option the command does not have is a TypeError;
   5. jobs= of run_many, paper, run and sweep: checked as `--jobs` is, with its message;
-  6. resources= of run() and sweep() (`--resources`): the source the report names and the lanes it lets fit.
+  6. resources= of run() and sweep() (`--resources`): the source the report names and the lanes it lets fit;
+  7. max_error= (`--max-error`) on a mesh composition: the same design.json as the command's, the best the
+     fastest design whose relative RMSE meets the bound, every width with its own steps and software time.
 Prints "SKIP: <reason>" and exits 77 without pandas or the module.
 usage: design_test.py RC2000SIM BUILD_DIR"""
 import glob
@@ -77,9 +79,10 @@ print("1. design() equals design.json: %d designs (%d infeasible, %d pruned), %d
                            got.best.simulated_seconds, len(got.front)))
 
 df = got.to_dataframe()
-point_keys = [k for k in cli["points"][0] if k != "bound"]
+point_keys = [k for k in cli["points"][0] if k not in ("bound", "fidelity")]
 bound_keys = ["bound_" + k for k in cli["points"][0]["bound"]]
-assert list(df.columns) == point_keys + bound_keys + ["best"], list(df.columns)
+fidelity_keys = ["fidelity_" + k for k in cli["points"][0]["fidelity"]]
+assert list(df.columns) == point_keys + bound_keys + fidelity_keys + ["best"], list(df.columns)
 assert len(df) == got.simulated and df.best.sum() == 1 and df[df.best].design.iloc[0] == got.best.design
 assert sorted(df[df.on_front].design) == sorted(p["design"] for p in cli["front"])
 csv = pandas.read_csv(os.path.join(cli_dir, "design.csv"))  # the command's other writer (design_csv)
@@ -129,7 +132,9 @@ bad = [({"max_banks": 65}, ["--max-banks", "65"]), ({"max_banks": 4}, ["--max-ba
        ({"patch_size": 0.1}, ["--patch-levels", "1", "--patch-size", "0.1"]),
        ({"min_bits": 23, "bits": 15}, ["--min-bits", "23", "--bits", "15"]),
        ({"jobs": 0}, ["--jobs", "0"]), ({"jobs": 513}, ["--jobs", "513"]),
-       ({"resources": "yosys"}, ["--resources", "yosys"])]
+       ({"resources": "yosys"}, ["--resources", "yosys"]), ({"max_error": 0}, ["--max-error", "0"]),
+       ({"max_error_max": float("inf")}, ["--max-error-max", "inf"]), ({"fidelity": "maybe"}, ["--fidelity", "maybe"]),
+       ({"max_error": 0.01, "fidelity": False}, ["--max-error", "0.01", "--fidelity", "off"])]
 for options, flags in bad:
     given = dict(base, **dict(zip(flags[::2], flags[1::2])))  # the bad values in place of the space's
     done = command(*[x for pair in given.items() for x in pair], "--quiet", "--out", os.path.join(work, "bad"))
@@ -201,5 +206,41 @@ for source in ("paper", "synthesis"):
 assert fits == {"paper": [True, True], "synthesis": [True, False]}, fits
 assert 'resources = "synthesis"' in rc2000tlm.workers.study_text(resources="synthesis")
 print("6. resources=: the report names the source; a design that does not fit under it, and an unknown source, refused; sweep(resources=) decides which lanes fit")
+
+# 7. An error bound on a mesh composition (Assimp's concave 66-gon in the Cornell Box, 102 faces, one patch
+# each): the command and the call agree, the best design is the fastest whose picture meets 1% relative
+# RMSE, and every width has its own solve's steps and software time.
+mesh = os.path.join(work, "mesh.json")
+with open(mesh, "w") as f:
+    f.write('{"schema": "rc2000sim.composition/1", "room": "cornell-box", "meshes": [{"file": '
+            '"/usr/share/assimp/models/OBJ/concave_polygon.obj", "rotate": {"axis": [1, 0.3, 0.2], "degrees": 50}, '
+            '"fit_into": {"min": [120, 180, 250], "max": [420, 420, 450]}, "material": {"reflectance": [0.3, 0.4, 0.7]}}]}')
+mesh_dir = os.path.join(work, "mesh")
+# --faces 102 --face-levels 0: the composition as it is (the search's default refinement is the paper's).
+done = command("--scene", mesh, "--faces", "102", "--face-levels", "0", "--patch-levels", "0", "--bits", "11,15,23,31",
+               "--lanes", "1,2", "--max-banks", "6", "--max-error", "0.01", "--quiet", "--out", mesh_dir)
+assert done.returncode == 0, done.stderr
+cli = json.load(open(os.path.join(mesh_dir, "design.json")))
+cli["best"].pop("run_command")
+got = rc2000tlm.design(scene=mesh, faces=102, face_levels=0, patch_levels=0, bits="11,15,23,31", lanes="1,2",
+                       max_banks=6, max_error=0.01)
+diff = differences(got.to_dict(), cli)
+assert not diff, "design(max_error=) differs from the command's design.json:\n  " + "\n  ".join(diff[:20])
+assert got.constraints["max_error"] == 0.01
+widths = {w["bits"]: w for w in got.widths}
+assert sorted(widths) == [11, 15, 23, 31] and all(w["measured"] and w["software_seconds"] > 0 for w in widths.values())
+meeting = [p for p in got.points if p.fidelity["relative_rmse"] <= 0.01]
+assert meeting and got.best is not None and got.best.fidelity["relative_rmse"] <= 0.01
+assert got.best.simulated_seconds == min(p.simulated_seconds for p in meeting)
+for p in got.points:
+    w = widths[p.bits]
+    assert p.steps == w["steps"] and p.fidelity == w, (p.design, p.steps, w)
+    assert p.meets_constraints == (w["relative_rmse"] <= 0.01)
+    assert abs(p.speedup_vs_software - w["software_seconds"] / p.simulated_seconds) <= 1e-12 * p.speedup_vs_software
+assert got.front and all(p.fidelity["relative_rmse"] <= 0.01 for p in got.front)
+print("7. max_error=0.01 on a mesh: best %s (relative RMSE %.3g); widths %s" % (
+    got.best.design, got.best.fidelity["relative_rmse"],
+    ", ".join("%d bits: %d steps, %.3g RMSE, %.3f s software" % (b, w["steps"], w["relative_rmse"], w["software_seconds"])
+              for b, w in sorted(widths.items()))))
 subprocess.run(["rm", "-rf", work])
 print("PASS: rc2000tlm.design() is rc2000sim design")

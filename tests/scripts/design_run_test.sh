@@ -52,10 +52,43 @@ for bad in "--results nowhere" "--multipliers dsp" "--bank-clocks 0" "--max-bank
 done
 echo "design: errors name their options"
 # Caps and widths that cannot apply, refused before any work.
-for bad in "--max-energy nan" "--max-power inf" "--min-bits 31"; do
+for bad in "--max-energy nan" "--max-power inf" "--min-bits 31" "--max-error 0" "--max-error-max nan" "--fidelity maybe" \
+           "--max-error 0.01 --fidelity off"; do
   # shellcheck disable=SC2086
   if "$sim" design "${space[@]}" $bad --out "$work/bad" 2>"$work/err.txt"; then echo "accepted $bad"; exit 1; fi
   grep -q -- "${bad%% *}" "$work/err.txt" || { echo "error for $bad does not name it:"; cat "$work/err.txt"; exit 1; }
   [ ! -e "$work/bad" ] || { echo "$bad wrote $work/bad"; exit 1; }
 done
 echo "design: caps and widths that cannot apply are refused"
+# An error bound on a mesh composition (Assimp's concave 66-gon in the Cornell Box, 102 faces, as it is):
+# the best design is the fastest whose relative RMSE against double precision meets it, each width has its
+# own solve's steps and software time, and the front carries the error.
+printf '{"schema": "rc2000sim.composition/1", "room": "cornell-box", "meshes": [{"file": "/usr/share/assimp/models/OBJ/concave_polygon.obj", "rotate": {"axis": [1, 0.3, 0.2], "degrees": 50}, "fit_into": {"min": [120, 180, 250], "max": [420, 420, 450]}}]}' \
+  > "$work/mesh.json"
+"$sim" design --scene "$work/mesh.json" --faces 102 --face-levels 0 --patch-levels 0 --bits 11,15,23,31 --lanes 1,2 \
+  --max-banks 6 --max-error 0.01 --quiet --out "$work/mesh" > "$work/mesh.txt"
+grep -q "error bound: relative RMSE <= 0.01" "$work/mesh.txt"
+python3 - "$work/mesh/design.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+widths = {w["bits"]: w for w in d["widths"]}
+assert sorted(widths) == [11, 15, 23, 31] and all(w["measured"] and w["software_seconds"] > 0 for w in widths.values()), widths
+meeting = [p for p in d["points"] if p["fidelity"]["relative_rmse"] <= 0.01]
+assert d["best"] and d["best"]["fidelity"]["relative_rmse"] <= 0.01, d["best"]
+assert d["best"]["simulated_seconds"] == min(p["simulated_seconds"] for p in meeting)
+assert all(p["steps"] == widths[p["bits"]]["steps"] and p["meets_constraints"] == (p["fidelity"]["relative_rmse"] <= 0.01)
+           for p in d["points"])
+assert d["front"] and all(p["fidelity"]["measured"] for p in d["front"])
+print("design: --max-error 0.01 on a mesh chooses", d["best"]["design"], "at relative RMSE", d["best"]["fidelity"]["relative_rmse"])
+PY
+# --fidelity off: no double-precision solve; every design's error "not measured", the widths' own steps kept.
+"$sim" design "${space[@]}" --fidelity off --out "$work/nofid" > "$work/nofid.txt"
+grep -q "fidelity not measured" "$work/nofid.txt"
+python3 - "$work/nofid/design.json" "$work/search/design.json" <<'PY'
+import json, sys
+off, on = (json.load(open(p)) for p in sys.argv[1:3])
+assert off["reference_steps"] is None and all(not p["fidelity"]["measured"] for p in off["points"])
+assert [p["simulated_seconds"] for p in off["points"]] == [p["simulated_seconds"] for p in on["points"]]
+assert off["best"]["design"] == on["best"]["design"]
+print("design: --fidelity off measures no error and changes no time")
+PY

@@ -102,6 +102,46 @@ TEST(DesignSearch, CapsRemoveDesignsFromBestAndFront) {
   EXPECT_FALSE(points[0].on_front || points[1].on_front);
 }
 
+DesignPoint with_error(DesignPoint p, double rmse, double max) {
+  p.fidelity.relative_rmse = rmse;
+  p.fidelity.relative_max = max;
+  return p;
+}
+
+// Error is the front's fourth objective: a faster design with a worse picture does not push a slower,
+// more faithful one off the front; an unmeasured error counts as the worst.
+TEST(DesignSearch, ErrorIsAnObjectiveOfTheFront) {
+  std::vector<DesignPoint> points = {with_error(point(2, 6, 10, 100), 0.5, 2), with_error(point(2, 6, 12, 100), 0.001, 0.1),
+                                     with_error(point(2, 6, 13, 100), 0.001, 0.1), point(2, 6, 14, 100)};
+  mark_front(points);
+  EXPECT_TRUE(points[0].on_front);
+  EXPECT_TRUE(points[1].on_front);   // slower, but its picture is better
+  EXPECT_FALSE(points[2].on_front);  // slower than [1] at the same error
+  EXPECT_FALSE(points[3].on_front);  // not measured: the worst error
+  EXPECT_EQ(*fastest(points), 0u);
+}
+
+// --max-error (relative RMSE) and --max-error-max: the fastest design whose picture meets them; a
+// design whose fidelity was not measured meets no error bound.
+TEST(DesignSearch, ErrorBoundChoosesTheFastestFaithfulDesign) {
+  std::vector<DesignPoint> points = {with_error(point(2, 6, 10, 100), 0.5, 2), with_error(point(2, 6, 12, 100), 0.009, 0.9),
+                                     with_error(point(2, 6, 13, 100), 0.001, 0.1), point(1, 5, 5, 50)};
+  DesignConstraints c;
+  c.max_error = 0.01;
+  apply_caps(points, c);
+  EXPECT_FALSE(points[0].meets_constraints);
+  EXPECT_FALSE(points[3].meets_constraints);  // not measured
+  EXPECT_EQ(*fastest(points), 1u);
+  c.max_error_max = 0.5;
+  apply_caps(points, c);
+  EXPECT_EQ(*fastest(points), 2u);
+  mark_front(points);
+  EXPECT_TRUE(points[2].on_front);
+  EXPECT_FALSE(points[0].on_front || points[1].on_front || points[3].on_front);
+  apply_caps(points, DesignConstraints{});
+  EXPECT_EQ(*fastest(points), 3u);  // no bound: the unmeasured design competes on time
+}
+
 TEST(DesignSearch, SpaceKeepsToTheConstraintsAndNamesWhatCannotExist) {
   const ConfigChecker checker({"xc2v6000"}, "athlon-mp-2600-calibrated");
   DesignSpace space;
@@ -226,7 +266,21 @@ TEST(DesignSearch, SearchSolvesTheWorkloadGivenToConvergence) {
   EXPECT_EQ(r.points[0].tests, segments * r.faces);
   ASSERT_TRUE(r.reference.has_value());
   EXPECT_EQ(r.reference->tests, segments * r.faces);
-  EXPECT_EQ(phases, (std::vector<std::string>{"preparing the scene", "solving at 15 bits", "simulating 3 systems"}));
+  ASSERT_GE(phases.size(), 4u);
+  EXPECT_EQ(phases.front(), "preparing the scene");
+  EXPECT_EQ(phases[1], "solving at 1 width and in double precision");
+  EXPECT_EQ(phases.back(), "simulating 3 systems");  // the design, the paper's, software at 15 bits
+  EXPECT_EQ(phases[phases.size() - 2], "solved fixed:15 (1 of 1)");
+  // The width's own solve and its fidelity against one double-precision solve of the same workload.
+  ASSERT_EQ(r.widths.size(), 1u);
+  EXPECT_EQ(r.widths[0].bits, 15);
+  EXPECT_EQ(r.widths[0].steps, solved.result.steps);
+  EXPECT_TRUE(r.widths[0].measured());
+  EXPECT_GT(r.widths[0].software_seconds, 0);
+  EXPECT_GT(r.reference_steps, 0);
+  EXPECT_EQ(r.points[0].fidelity.relative_rmse, r.widths[0].relative_rmse);
+  EXPECT_EQ(r.points[0].row.steps, solved.result.steps);
+  EXPECT_EQ(r.software_seconds, r.widths[0].software_seconds);
 }
 
 }  // namespace

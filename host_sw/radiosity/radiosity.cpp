@@ -275,7 +275,6 @@ void ProgressiveRadiosity::shoot(int shooter, SolverResult& result) {
   charge(HostWork::FormFactor, receivers_.size());
 
   visibility_.collect(blocked_);
-  if (answers_) answers_(batch_, blocked_);
   if (visibility_.runs_on_host()) charge(HostWork::IntersectionTest, visibility_.tests_performed() - tests_before);
   if (fixer_ && options_.fixes.neighbour_rings != 0) {  // the neighbour rule's re-tests run on the host
     const std::uint64_t fix_tests_before = fixer_->tests_performed(), cleared_before = fixer_->segments_cleared();
@@ -284,6 +283,9 @@ void ProgressiveRadiosity::shoot(int shooter, SolverResult& result) {
     result.fix_tests += fixer_->tests_performed() - fix_tests_before;
     result.fix_cleared += fixer_->segments_cleared() - cleared_before;
   }
+  // The answers the solver uses (after the neighbour rule), for the segments it asked (before any
+  // offset): a fidelity sample checks those against double precision.
+  if (answers_) answers_(batch_, blocked_);
 
   // The share of the shot power the step delivers; above 1 the step creates energy. The analytic
   // rule scales the deliveries back to what was shot (docs/radiosity.md, Form-factor sums).

@@ -122,8 +122,9 @@ struct StepProgress {
   double convergence_reached = 0;
 };
 
-// What a step asked and what the backend answered (blocked: one flag per segment of batch), seen
-// after collect() and before the solver uses the answers: a fidelity sample (host_sw/visibility/
+// What a step asked and the answers the solver uses (blocked: one flag per segment of batch), seen
+// after collect() and after SolverOptions::fixes (the batch as the solver made it, before any offset;
+// the answers after the neighbour rule), before the solver uses them: a fidelity sample (host_sw/visibility/
 // decision_sample.h) watches the run's own decisions through it, whoever gives them.
 using AnswersObserver = std::function<void(const SegmentBatch& batch, const std::vector<std::uint8_t>& blocked)>;
 

@@ -6,10 +6,12 @@
 #include <gtest/gtest.h>
 
 #include "host_sw/radiosity/float_visibility.h"
+#include "host_sw/radiosity/segment_fixes.h"
 #include "host_sw/visibility/comparing_visibility.h"
 #include "host_sw/visibility/decision_sample.h"
 #include "host_sw/visibility/visibility_factory.h"
 #include "scenes/prepare.h"
+#include "tests/common/small_torus_scene.h"
 
 namespace rc {
 namespace {
@@ -165,6 +167,38 @@ TEST(DecisionSample, SampledShareFallsInsideItsIntervalAroundTheExactOne) {
   EXPECT_LE(part.fidelity.share_low, all.fidelity.share);
   EXPECT_GE(part.fidelity.share_high, all.fidelity.share);
   EXPECT_EQ(fidelity_warning(part.fidelity, 0.99, 15), "");  // within a 99% threshold: no warning
+}
+
+// With segment fixes in force (an offset and the neighbour rule, segment_fixes.h), the sample sees
+// the answers the solver uses (after the rule's re-checks) for the segments it asked (before the
+// offset): equal to a full count of the same fixed answers (FixedSegmentsVisibility, which gives the
+// solver's answers) against double precision on the unmoved segments.
+TEST(DecisionSample, TheSampleSeesTheAnswersTheSolverUsesWithFixes) {
+  const Scene scene = test::small_torus_scene();
+  constexpr int kBits = 11;
+  SolverOptions solver;
+  solver.fixed_steps = 6;
+  solver.fixes.bits = kBits;
+  solver.fixes.offset_lsb = 2;
+  solver.fixes.neighbour_rings = 1;
+  auto answer = make_software_visibility("fast", kBits, 1);
+  DecisionSampler sampler(1'000'000);
+  ProgressiveRadiosity run(scene, *answer, solver);
+  run.on_answers(sampler.observer());
+  const SolverResult solved = run.run();
+  ASSERT_GT(solved.fix_cleared, 0u) << "the neighbour rule must change some answers for the test to mean anything";
+  const Fidelity f = estimate_fidelity(scene, sampler.sample(), sampler.population(), pipeline::Arithmetic(), kBits, 2);
+
+  SolverOptions plain = solver;
+  plain.fixes = {};
+  auto inner = make_software_visibility("fast", kBits, 1);
+  FixedSegmentsVisibility fixed(*inner, solver.fixes);
+  FloatVisibility reference;
+  ComparingVisibility compare(fixed, reference);
+  ProgressiveRadiosity(scene, compare, plain).run();
+  EXPECT_EQ(f.sampled, compare.segments_compared());
+  EXPECT_EQ(f.false_shadows, compare.answer_blocks_shadow_clear());
+  EXPECT_EQ(f.missing_shadows, compare.shadow_blocks_answer_clear());
 }
 
 }  // namespace

@@ -5,7 +5,6 @@
 #include <exception>
 #include <memory>
 #include <mutex>
-#include <thread>
 
 #include "host_sw/radiosity/jobs.h"
 #include "host_sw/radiosity/worker_pool.h"
@@ -211,7 +210,7 @@ std::vector<RecordedRun> solve_arithmetics(const Scene& scene, const SolverOptio
   std::atomic<std::size_t> next{0}, done{0};
   std::mutex error_mutex;
   std::exception_ptr error;
-  auto work = [&] {
+  auto work = [&](int) {
     for (std::size_t i; (i = next.fetch_add(1)) < n;) {
       try {
         const Arithmetic& a = arithmetics[i];
@@ -223,10 +222,9 @@ std::vector<RecordedRun> solve_arithmetics(const Scene& scene, const SolverOptio
       }
     }
   };
-  std::vector<std::thread> helpers;
-  for (unsigned w = 1; w < workers; ++w) helpers.emplace_back(work);
-  work();
-  for (std::thread& t : helpers) t.join();
+  WorkerPool pool(static_cast<int>(std::max(1u, workers)));  // work() catches every error itself
+  pool.start(work);
+  pool.finish();
   if (error) std::rethrow_exception(error);
   return out;
 }

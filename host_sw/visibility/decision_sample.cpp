@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
+#include <mutex>
 #include <stdexcept>
-#include <thread>
 
 #include "host_sw/radiosity/jobs.h"
+#include "host_sw/radiosity/worker_pool.h"
 #include "pipeline/fixed_mt.h"
 #include "pipeline/float_mt.h"
 #include "pipeline/reference_mt.h"
@@ -209,13 +211,19 @@ Fidelity estimate_fidelity(const Scene& scene, const std::vector<SampledSegment>
   std::vector<SegmentVerdict> verdicts(sample.size());
   const unsigned n = std::max(1u, std::min<unsigned>(threads ? threads : static_cast<unsigned>(jobs()),
                                                       static_cast<unsigned>(std::max<std::size_t>(1, sample.size() / 64))));
-  std::vector<std::thread> pool;
-  for (unsigned t = 0; t < n; ++t) {
-    pool.emplace_back([&, t] {
-      for (std::size_t i = t; i < sample.size(); i += n) verdicts[i] = check_segment(scene, sample[i], pipe);
-    });
-  }
-  for (std::thread& th : pool) th.join();
+  WorkerPool pool(static_cast<int>(n));
+  std::mutex error_mutex;
+  std::exception_ptr error;  // a point outside the unit cube (quantize_point): rethrown here, as WorkerPool's jobs must not throw
+  pool.start([&](int t) {
+    try {
+      for (std::size_t i = static_cast<std::size_t>(t); i < sample.size(); i += n) verdicts[i] = check_segment(scene, sample[i], pipe);
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(error_mutex);
+      if (!error) error = std::current_exception();
+    }
+  });
+  pool.finish();
+  if (error) std::rethrow_exception(error);
   for (std::size_t i = 0; i < sample.size(); ++i) {
     if (!verdicts[i].differs) continue;
     if (sample[i].answer_blocked) {

@@ -77,6 +77,17 @@ CLI::Validator positive_finite() {
       "> 0", "positive finite number");
 }
 
+CLI::Validator finite_in_range(double low, double high) {
+  return CLI::Validator(
+      [low, high](std::string& text) -> std::string {
+        const std::optional<double> x = io::parse_finite(text);
+        if (!x) return "'" + text + "' is not a finite number";
+        if (*x < low || *x > high) return "Value " + readable(*x) + " not in range " + readable(low) + " to " + readable(high);
+        return "";
+      },
+      "in [" + readable(low) + ", " + readable(high) + "]", "number in range");
+}
+
 CLI::Validator count_at_least_one(const std::string& meaning) {
   return CLI::Validator(
       [meaning](std::string& text) -> std::string {

@@ -64,6 +64,9 @@ CLI::Validator convergence_target();
 std::string readable(double x);
 // A finite number above 0 (--patch-size).
 CLI::Validator positive_finite();
+// A finite number in [low, high], said with readable bounds ("Value 2 not in range 0 to 1"; CLI11's
+// Range printed 0.000000 and let "nan" through).
+CLI::Validator finite_in_range(double low, double high);
 // A whole number of at least 1 where 0 would mean "not given" (--faces 0 was taken as no --faces):
 // "must be at least 1 (<meaning>); omit it ...".
 CLI::Validator count_at_least_one(const std::string& meaning);

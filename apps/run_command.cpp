@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include <systemc>
+
 #include "apps/cli_options.h"
 #include "apps/outputs.h"
 #include "apps/progress.h"
@@ -75,13 +77,14 @@ void measure_fidelity(const RunOptions& o, const Scene& scene, const DecisionSam
   out.fidelity_warning = fidelity_warning(*out.fidelity, o.fidelity_warn, o.bits);
 }
 
-RunOutcome run_software(const RunOptions& o, const Scene& scene, ProgressLine& progress) {
+RunOutcome run_software(const RunOptions& o, const Scene& scene, ProgressLine& progress, const RunHooks& hooks) {
   // A float pipeline (--arith float:E,M) answers as the backend of that name (pipeline/float_mt.h).
   auto visibility = make_software_visibility(float_arith(o) ? o.arith.name() : choice_name(o.visibility), o.bits);
   HostWorkCounter work;
   ProgressiveRadiosity solver(scene, *visibility, o.solver, &work);
   solver.on_progress([&](const StepProgress& p) {
     progress.update("step %d, %.2f%% converged", p.step, 100.0 * p.convergence_reached);
+    if (hooks.on_step) hooks.on_step(p, 0.0);
   });
   DecisionSampler sampler(in_pipeline_arithmetic(o) ? o.fidelity_sample : 0);
   solver.on_answers(sampler.observer());
@@ -125,7 +128,8 @@ BoardRunOptions board_options(const RunOptions& o) {
   return board;
 }
 
-RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& progress, const std::string& vcd) {
+RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& progress, const std::string& vcd,
+                     const RunHooks& hooks) {
   BoardRunOptions board = board_options(o);
   board.vcd_path = vcd;
   // The lanes copy the culled kernel's answer, proven bit-identical (tests BoardOracle.*, FastVisibility.*);
@@ -138,6 +142,7 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   if (board.trace) parse_trace_steps(o.trace_steps, board);
   board.on_progress = [&](const StepProgress& p) {
     progress.update("step %d, %.2f%% converged", p.step, 100.0 * p.convergence_reached);
+    if (hooks.on_step) hooks.on_step(p, sc_core::sc_time_stamp().to_seconds());  // when the step ended
   };
   // Sec 5.6 on the run's device, from the profiles the run uses (loaded once, by run_simulation).
   // Estimated before the simulation: a profile that cannot give the estimate is said so by an
@@ -241,7 +246,7 @@ void print_summary(const RunOptions& o, const Scene& scene, const RunOutcome& ou
     std::printf("  sec 5.6      lanes that fit on %s\n", lanes_that_fit_line(*out.lanes_that_fit).c_str());
   }
   std::printf("  wall time    %.2f s\n", wall);
-  std::printf("  wrote        %s\n", listed(written).c_str());
+  if (!written.empty()) std::printf("  wrote        %s\n", listed(written).c_str());
 }
 
 nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& prepared, const RunOutcome& out,
@@ -380,9 +385,11 @@ void check_run_options(const CLI::App& cmd, const RunOptions& o) {
   }
 }
 
-int run_simulation(const RunOptions& given) {
+int run_simulation(const RunOptions& given, const RunHooks& hooks) {
   Outputs outputs;
-  for (const std::string& path : output_paths(given)) outputs.expect(path);  // before any work
+  if (hooks.write_outputs) {
+    for (const std::string& path : output_paths(given)) outputs.expect(path);  // before any work
+  }
   // The profiles, each read once, here, and handed down; the board they make (lanes, banks,
   // layout) checked before the scene is prepared.
   RunOptions o = given;
@@ -405,8 +412,8 @@ int run_simulation(const RunOptions& given) {
 
   std::optional<TemporaryFile> vcd;  // SystemC writes it while simulating; moved into place at the end
   if (!o.board.vcd_path.empty()) vcd.emplace(".vcd");
-  const RunOutcome out =
-      o.impl == Impl::board ? run_board(o, scene, progress, vcd ? vcd->path() : std::string()) : run_software(o, scene, progress);
+  const RunOutcome out = o.impl == Impl::board ? run_board(o, scene, progress, vcd ? vcd->path() : std::string(), hooks)
+                                               : run_software(o, scene, progress, hooks);
   const RgbImage image = tone_map(render_radiosity(scene, out.solver.radiosity, o.render), o.render.key);
   progress.finish();
   // Point and disc: steps that created energy, said once (docs/radiosity.md, Form-factor sums).
@@ -422,23 +429,44 @@ int run_simulation(const RunOptions& given) {
     solver_warnings.push_back(std::move(w));
   }
 
+  if (!hooks.write_outputs) {
+    if (hooks.on_report) hooks.on_report(make_report(o, prepared, out, solver_warnings, dark, progress.seconds()));
+    if (hooks.print_summary) print_summary(o, scene, out, progress.seconds(), {});
+    return 0;
+  }
   outputs.add(o.out_dir + "/patches.csv", patches_csv(scene, out.solver.radiosity));
   outputs.add(o.out_dir + "/image.png", encode_png(image));
   if (!o.trace_path.empty()) outputs.add(o.trace_path, out.trace_json);
   if (vcd) outputs.move_in(o.board.vcd_path, vcd->path());
-  outputs.add_made(o.out_dir + "/report.json",
-                   [&] { return pretty_json(make_report(o, prepared, out, solver_warnings, dark, progress.seconds())); });
+  std::optional<nlohmann::ordered_json> report;  // made once: written, and handed to on_report
+  outputs.add_made(o.out_dir + "/report.json", [&] {
+    report = make_report(o, prepared, out, solver_warnings, dark, progress.seconds());
+    return pretty_json(*report);
+  });
   outputs.write();
-  print_summary(o, scene, out, progress.seconds(), outputs.paths());
+  if (hooks.on_report && report) hooks.on_report(*report);
+  if (hooks.print_summary) print_summary(o, scene, out, progress.seconds(), outputs.paths());
   return 0;
 }
 
 void add_run_command(CLI::App& app, int& exit_code) {
+  CLI::App* cmd = app.add_subcommand("run", "Solve radiosity for one scene; write report.json, patches.csv, image.png");
+  const RunOptionsResolver resolve = add_run_options(*cmd);
+  cmd->callback([resolve, &exit_code] {
+    const RunOptions options = resolve();
+    std::vector<std::string> where = {options.out_dir + "/"};
+    if (!options.trace_path.empty()) where.push_back(options.trace_path);
+    if (!options.board.vcd_path.empty()) where.push_back(options.board.vcd_path);
+    exit_code = run_guarded("run", listed(where), [&] { return run_simulation(options); });
+  });
+}
+
+RunOptionsResolver add_run_options(CLI::App& command) {
   auto options = std::make_shared<RunOptions>();
   auto solver = std::make_shared<SolverCli>();
   auto paper_faithful = std::make_shared<bool>(false);
   auto fixes = std::make_shared<SegmentFixOptions>();
-  CLI::App* cmd = app.add_subcommand("run", "Solve radiosity for one scene; write report.json, patches.csv, image.png");
+  CLI::App* cmd = &command;
   add_scene_options(*cmd, options->scene);
   add_solver_options(*cmd, *solver);
   cmd->add_flag("--paper-faithful", *paper_faithful,
@@ -502,22 +530,19 @@ void add_run_command(CLI::App& app, int& exit_code) {
       ->check(CLI::Range(std::size_t{0}, static_cast<std::size_t>(kMaxFidelitySample)))->capture_default_str();
   cmd->add_option("--fidelity-warn", options->fidelity_warn,
                   "Warn when more than this share 0..1 of the sampled decisions differ from double precision")
-      ->check(CLI::Range(0.0, 1.0))->capture_default_str();
+      ->check(finite_in_range(0.0, 1.0))->capture_default_str();
   cmd->add_flag("--quiet", options->quiet, "No progress output");
   add_jobs_option(*cmd, "the fast backend's threads (--visibility fast, or the board's answers)");
   add_segment_fix_options(*cmd, *fixes);
-  cmd->callback([options, solver, arith, paper_faithful, fixes, cmd, &exit_code] {
+  return [options, solver, arith, paper_faithful, fixes, cmd] {
     options->solver = solver->resolved(*cmd);
     options->solver.cull_receivers = !*paper_faithful;
     options->arith = parse_arith_option(*arith);
     options->solver.fixes = resolve_segment_fixes(*fixes, uses_fixed_width(*options), options->bits);
     options->render.height = options->render.width;
     check_run_options(*cmd, *options);
-    std::vector<std::string> where = {options->out_dir + "/"};
-    if (!options->trace_path.empty()) where.push_back(options->trace_path);
-    if (!options->board.vcd_path.empty()) where.push_back(options->board.vcd_path);
-    exit_code = run_guarded("run", listed(where), [&] { return run_simulation(*options); });
-  });
+    return *options;
+  };
 }
 
 }  // namespace rc

@@ -2,9 +2,11 @@
 // visibility answered in software (float or CPU fixed point) or by the simulated RC2000 board.
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include "host_sw/platform/board_run.h"
 #include "host_sw/radiosity/radiosity.h"
@@ -71,7 +73,24 @@ pipeline::Arithmetic parse_arith_option(const std::string& text);
 // (CLI::ValidationError naming the option and why; docs/outputs.md, "Which options apply where").
 void check_run_options(const CLI::App& cmd, const RunOptions& options);
 
+// The run command's options registered on `cmd` (its one table of names, defaults, help and checks:
+// the command line's and rc2000tlm.run()'s, python/core_module_json.cpp). The function returned, called
+// after `cmd` has parsed, resolves them into RunOptions and applies check_run_options (throwing
+// CLI::ValidationError naming the option, as the command line reports it).
+using RunOptionsResolver = std::function<RunOptions()>;
+RunOptionsResolver add_run_options(CLI::App& cmd);
+
+// What a caller other than the command line wants from run_simulation (the Python module): whether
+// the outputs are written (with the before-work checks of their paths) and the summary printed, the
+// solver's steps as they end, and report.json's document (also when nothing is written).
+struct RunHooks {
+  bool write_outputs = true;
+  bool print_summary = true;
+  std::function<void(const StepProgress&, double simulated_seconds)> on_step;  // simulated: 0 for software runs
+  std::function<void(const nlohmann::ordered_json&)> on_report;
+};
+
 // Computes the run, then writes its outputs (apps/outputs.h); returns the process exit code.
-int run_simulation(const RunOptions& options);
+int run_simulation(const RunOptions& options, const RunHooks& hooks = {});
 
 }  // namespace rc

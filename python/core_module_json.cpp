@@ -8,14 +8,18 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 #include <systemc>
 
+#include "apps/cli_options.h"
+#include "apps/run_command.h"
 #include "design_module_json.h"
 #include "host_sw/platform/board_run.h"
 #include "host_sw/platform/run_report.h"
@@ -47,59 +51,56 @@ unsigned use_jobs(const std::optional<long long>& jobs) {
   return rc::jobs();
 }
 
-// One board run: the scene prepared from its options, the solver to convergence (or `steps` exactly
-// when > 0), the board as BoardRunOptions says; the report, the solver's figures and one record per
-// step (its convergence and the simulated time when it ended).
-std::string run_board(const std::string& scene_file, int patch_levels, int face_target, int steps,
-                      const std::string& device, unsigned lanes, int bits, unsigned banks, bool concurrent,
-                      const std::string& host, unsigned cards, const std::string& resources,
-                      const std::optional<long long>& jobs, long long fidelity_sample, double fidelity_warn) {
-  use_jobs(jobs);  // the fast backend's threads (the board's answers)
-  rc::check_fidelity_options(fidelity_sample, fidelity_warn);  // --fidelity-sample's and --fidelity-warn's limits
-  const auto source = rc::parse_choice_option<rc::pipeline::ResourceSource>("--resources", resources);  // its words too
-  rc::SceneOptions scene_options;
-  scene_options.file = scene_file;
-  scene_options.patch_levels = patch_levels;
-  scene_options.face_target = face_target;
-  const rc::PreparedScene prepared = rc::prepare_scene(scene_options);
-  rc::SolverOptions solver;
-  solver.fixed_steps = steps;
-  rc::BoardRunOptions o;
-  o.device = device;
-  o.lanes = lanes;
-  o.bits = bits;
-  o.banks = banks;
-  o.concurrent = concurrent;
-  o.host = host;
-  o.cards = cards;
-  o.resources = source;
+// `rc2000sim run`'s option table (apps/run_command.h, add_run_options): by snake_case name, the
+// default CLI11 shows (null where it shows none) and whether it is a flag. rc2000tlm.run() takes
+// exactly these names, so the module and the command line cannot drift apart.
+std::string run_options() {
+  CLI::App app{"rc2000tlm.run"};
+  (void)rc::add_run_options(app);
+  rc::add_configs_option(app);  // as apps/main.cpp adds it to every command
+  ordered_json out;
+  for (const CLI::Option* opt : app.get_options()) {
+    if (opt->get_lnames().empty() || opt->get_lnames().front() == "help") continue;
+    std::string name = opt->get_lnames().front();
+    std::replace(name.begin(), name.end(), '-', '_');
+    const std::string shown = opt->get_default_str();
+    out[name] = {{"flag", opt->get_expected_max() == 0},  // a flag expects no value
+                 {"default", shown.empty() ? ordered_json() : ordered_json(shown)}};
+  }
+  return out.dump();
+}
+
+// One run as `rc2000sim run ARGS` computes it: ARGS parsed by the command's own option table, checked
+// by its own checks (the same messages: a refusal is a ValueError), then run_simulation. Nothing is
+// written unless `write_outputs` (the module's out=); the result is report.json's document with the
+// solver's steps as they ended (step, convergence_reached, simulated_seconds: null in software runs).
+std::string run_cli(const std::vector<std::string>& args, bool write_outputs, bool summary) {
+  CLI::App app{"rc2000tlm.run"};
+  const rc::RunOptionsResolver resolve = rc::add_run_options(app);
+  rc::add_configs_option(app);
+  rc::RunOptions options;
+  try {
+    std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes its arguments last first
+    app.parse(reversed);
+    options = resolve();
+  } catch (const CLI::Error& e) {  // the command line's words, without its usage text
+    throw std::invalid_argument(e.what());
+  }
   ordered_json per_step = ordered_json::array();
-  o.on_progress = [&](const rc::StepProgress& p) {
+  ordered_json report;
+  const bool board = options.impl == rc::Impl::board;  // software runs simulate no time
+  rc::RunHooks hooks;
+  hooks.write_outputs = write_outputs;
+  hooks.print_summary = summary;
+  hooks.on_step = [&](const rc::StepProgress& p, double simulated_seconds) {
     per_step.push_back({{"step", p.step},
                         {"convergence_reached", p.convergence_reached},
-                        {"simulated_seconds", sc_core::sc_time_stamp().to_seconds()}});
+                        {"simulated_seconds", board ? ordered_json(simulated_seconds) : ordered_json()}});
   };
-  rc::DecisionSampler sampler(static_cast<std::size_t>(fidelity_sample));
-  o.on_answers = sampler.observer();
-  const rc::BoardRunResult r = rc::run_radiosity_on_board(prepared.scene, solver, o);
-  ordered_json out;
-  out["steps"] = r.solver.steps;
-  out["converged"] = r.solver.converged;
-  out["convergence_reached"] = r.solver.convergence_reached;
-  out["segments"] = r.solver.segments;
-  out["patches"] = prepared.scene.patches.size();
-  out["simulated_seconds"] = r.report.simulated_seconds;
-  out["per_step"] = per_step;
-  out["board"] = rc::to_json(r.report);
-  std::vector<std::string> warnings = prepared.warnings;
-  if (fidelity_sample > 0) {  // as `rc2000sim run` says it (report.json's "fidelity")
-    const rc::Fidelity f = rc::estimate_fidelity(prepared.scene, sampler.sample(), sampler.population(), rc::pipeline::Arithmetic(), bits);
-    const std::string warning = rc::fidelity_warning(f, fidelity_warn, bits);
-    if (!warning.empty()) warnings.push_back(warning);
-    out["fidelity"] = rc::fidelity_json(f, fidelity_warn, warning);
-  }
-  out["warnings"] = warnings;
-  return out.dump();
+  hooks.on_report = [&](const ordered_json& r) { report = r; };
+  rc::run_simulation(options, hooks);
+  report["per_step"] = per_step;
+  return report.dump();
 }
 
 // A study run on this machine (run_study, which deals its timing work to worker processes of its
@@ -163,12 +164,10 @@ std::string paper_table(const std::string& host_name, bool progress, const std::
 // SystemC allows when the kernel is started by sc_start from any code).
 PYBIND11_MODULE(_core, m) {
   m.doc() = "rc2000tlm's C++ core: one board run or one study per call, once per process";
-  m.def("run_board", &run_board, py::arg("scene_file"), py::arg("patch_levels"), py::arg("face_target"),
-        py::arg("steps"), py::arg("device"), py::arg("lanes"), py::arg("bits"), py::arg("banks"),
-        py::arg("concurrent"), py::arg("host"), py::arg("cards"), py::arg("resources") = "paper", py::arg("jobs") = py::none(),
-        py::arg("fidelity_sample") = static_cast<long long>(rc::kDefaultFidelitySample),
-        py::arg("fidelity_warn") = rc::kDefaultFidelityWarnShare,
-        "One board run (host_sw/platform/board_run.h); the report as JSON text");
+  m.def("run", &run_cli, py::arg("args"), py::arg("write_outputs") = false, py::arg("summary") = false,
+        "One run as `rc2000sim run ARGS` (the command's option table and checks); report.json's document "
+        "with per-step records, as JSON text");
+  m.def("run_options", &run_options, "`rc2000sim run`'s options by snake_case name: default and whether a flag, as JSON text");
   m.def("study_file", [](const std::string& path, bool progress, const std::optional<long long>& jobs) {
           use_jobs(jobs);
           return study_rows(rc::load_study_file(path), progress);

@@ -26,19 +26,26 @@ def _find(tree, key):
 
 
 class RunResult:
-    """One board run: steps, simulated_seconds, the board report (`board`: report.json's "board"),
-    and per-step records (step, convergence_reached, simulated_seconds) when the run recorded them."""
+    """One run: report.json's document (docs/outputs.md; to_dict()) with per-step records (step,
+    convergence_reached, simulated_seconds: the simulated time when the step ended, None in software runs).
+    steps, simulated_seconds (board runs; None in software runs), board (report.json's "board"), fidelity (its "fidelity": the
+    sampled share of decisions that differ from double precision, its interval and causes; None when
+    not measured) and warnings (the scene's, the solver's and the picture's, as the command prints them)."""
 
     def __init__(self, data):
         self._data = data
         self.steps = data.get("steps")
-        self.simulated_seconds = data.get("simulated_seconds", _find(data, "simulated_seconds"))
         self.board = data.get("board", {})
+        self.simulated_seconds = data.get("simulated_seconds", _find(self.board, "simulated_seconds"))
         self.per_step = data.get("per_step", [])
-        # report.json's "fidelity" (docs/outputs.md): the sampled share of decisions that differ from
-        # double precision, its interval and causes; None with fidelity_sample=0.
         self.fidelity = data.get("fidelity")
-        self.warnings = data.get("warnings", [])
+        if "warnings" in data:  # a document of the core's own (older results)
+            self.warnings = data["warnings"]
+        else:
+            scene = data.get("scene") or {}
+            solver = data.get("solver") or {}
+            image = data.get("image_warning")
+            self.warnings = list(scene.get("warnings", [])) + list(solver.get("warnings", [])) + ([image] if image else [])
 
     def to_dict(self):
         return self._data

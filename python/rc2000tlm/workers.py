@@ -184,25 +184,70 @@ def _named(error, i, n, labels, results):
     return error
 
 
-def _run_kwargs(scene=None, patch_levels=3, faces=0, steps=0, device="xc2v6000", lanes=1, bits=15, banks=0,
-                concurrent=False, host="athlon-mp-2600-calibrated", cards=1, resources="paper", jobs=None,
-                fidelity_sample=None, fidelity_warn=None):
-    # None: the core's defaults, which are the command line's (decision_sample.h).
-    fidelity = {k: v for k, v in (("fidelity_sample", fidelity_sample), ("fidelity_warn", fidelity_warn)) if v is not None}
-    return {**fidelity, "scene_file": "" if scene is None else os.path.abspath(scene), "patch_levels": patch_levels,
-            "face_target": faces, "steps": steps, "device": device, "lanes": lanes, "bits": bits, "banks": banks,
-            "concurrent": concurrent, "host": host, "cards": cards, "resources": resources, "jobs": jobs}
+_RUN_OPTIONS = []  # `rc2000sim run`'s option table, read once per process (run_options())
+
+
+def run_options():
+    """`rc2000sim run`'s options by snake_case name, from the command line's own table
+    (apps/run_command.h): {"default": the default it shows as text, or None; "flag": whether it takes
+    no value}. run() takes exactly these, plus progress."""
+    if not _RUN_OPTIONS:
+        _RUN_OPTIONS.append(_submit_all([("run_options", {})], False, "runs")[0])
+    return _RUN_OPTIONS[0]
+
+
+def _cli_text(name, v):
+    """A value as the command line spells it: a list or tuple joined with commas, a float in its
+    shortest exact form (repr), a numpy or pandas scalar as its Python value."""
+    if isinstance(v, (list, tuple)):
+        return ",".join(_cli_text(name, x) for x in v)
+    if hasattr(v, "item") and not isinstance(v, (str, bytes)):
+        v = v.item()
+    if isinstance(v, bool):
+        raise ValueError("--%s: expected a value, got %r" % (name.replace("_", "-"), v))
+    if isinstance(v, float):
+        return repr(v)
+    return str(v)
+
+
+def _run_call(options):
+    """run()'s options as `rc2000sim run` arguments: every name one of the command's (else a TypeError
+    naming it, as Python does), flags given as True (False: not given), the rest as text that the
+    command's own table parses and checks. Two defaults are the module's: --impl board (run() is a
+    board run unless impl= says otherwise) and no output files unless out= is given."""
+    options = dict(options)
+    progress = bool(options.pop("progress", False))
+    known = run_options()
+    for name in options:
+        if name not in known:
+            raise TypeError("rc2000tlm.run() got an unexpected keyword argument '%s' (the options of "
+                            "`rc2000sim run`: %s, and progress)" % (name, ", ".join(known)))
+    args = [] if options.get("impl") is not None else ["--impl", "board"]
+    if not progress and not options.get("quiet"):
+        args.append("--quiet")
+    for name, v in options.items():
+        if v is None:
+            continue
+        flag = "--" + name.replace("_", "-")
+        if known[name]["flag"]:
+            if not isinstance(v, bool):
+                raise ValueError("%s: expected True or False, got %r" % (flag, v))
+            if v:
+                args.append(flag)
+        else:
+            args += [flag, _cli_text(name, v)]
+    return {"args": args, "write_outputs": options.get("out") is not None, "summary": False}
 
 
 def run(**options):
-    """One board run (`rc2000sim run --impl board`; the defaults are its defaults): scene (a scene file;
-    None: the embedded Cornell Box), patch_levels, faces (refine to this many faces first; 0: as is),
-    steps (0: to convergence), device, lanes, bits, banks (0: the profile's), concurrent, host, cards,
-    resources ("paper" or "synthesis", as --resources: where the lanes' slices and block multipliers come
-    from), jobs (the fast backend's threads, as --jobs; None: the rule's), fidelity_sample and fidelity_warn
-    (as --fidelity-sample and --fidelity-warn: segments checked against double precision, 0 for none, and
-    the share of differing decisions that warns; RunResult.fidelity). Returns a RunResult."""
-    return RunResult(_submit_all([("run_board", _run_kwargs(**options))], False, "runs")[0])
+    """One run as `rc2000sim run` does it, with its options by the same names in snake_case (run_options()
+    lists them with their defaults: scene, patch_levels, patch_size, faces, face_levels, steps,
+    form_factor, paper_faithful, device, lanes, bits, arith, banks, concurrent, host, cards, jobs,
+    fidelity_sample, ...), the same checks and messages (a refused value is a ValueError with the
+    command's words, an unknown name a TypeError). impl defaults to "board" (the command's default is
+    software); out= writes the command's files there (none without it); progress=True shows the run's
+    progress line on stderr. Returns a RunResult: report.json's document with per-step records."""
+    return RunResult(_submit_all([("run", _run_call(options))], False, "runs")[0])
 
 
 def run_many(option_sets, progress=True, jobs=None):
@@ -211,7 +256,7 @@ def run_many(option_sets, progress=True, jobs=None):
     this process may use). progress: a count of finished runs on stderr. The first option set that fails
     ends the call at once (the running runs are stopped) with its error, naming the set; the runs that
     had finished are in the exception's `results` (a RunResult, or None, per set)."""
-    calls = [("run_board", _run_kwargs(**o)) for o in option_sets]
+    calls = [("run", _run_call(o)) for o in option_sets]
     labels = ["run_many: option set %d of %d %r" % (i + 1, len(option_sets), o) for i, o in enumerate(option_sets)]
     try:
         return [RunResult(d) for d in _submit_all(calls, progress, "runs", workers=_jobs(jobs), labels=labels)]

@@ -6,6 +6,8 @@
 #     installed rc2000sim's sweep.csv for the same study file (another process, another writer);
 #  2. run() gives `rc2000sim run --impl board`'s report (and its fidelity) for the same options, with per-step and
 #     per-bank DataFrames; run_many() gives the same answers in parallel; an unknown option is refused;
+#     run() has exactly `rc2000sim run --help`'s options, its checks and words, and a software run with
+#     the options printed commands carry (--patch-size, --form-factor, --paper-faithful) equals the command's;
 #  3. a study over two scenes has a scene column, and load() of rc2000sim's outputs of the same study
 #     (its study.csv) gives the same rows;
 #  4. a bad study arrives as an exception (ValueError, RuntimeError) carrying the command line's message;
@@ -83,7 +85,7 @@ print('  ', len(df), 'rows;', ', '.join('%d lanes %.6f s' % (r.lanes, r.simulate
 
 step "2. run() is rc2000sim run --impl board"
 "$prefix/bin/rc2000sim" run --impl board --steps 3 --patch-levels 1 --lanes 2 --quiet --out "$work/cli-run" > /dev/null
-"$python" - "$work/cli-run/report.json" <<'PY'
+"$python" - "$work/cli-run/report.json" "$prefix/bin/rc2000sim" <<'PY'
 import json, sys, rc2000tlm
 def no_wall(j):
     if isinstance(j, dict):
@@ -122,6 +124,32 @@ except TypeError:
     pass
 else:
     sys.exit("run() accepted an option that does not exist")
+# One option table (issue 39): run() takes every option of `rc2000sim run --help` by its snake_case name,
+# with the command's checks and words, and a run the printed commands describe (patch_size, face_levels,
+# form_factor, paper_faithful, software backends) equals the command's report.
+import re, subprocess
+helped = set(n.replace("-", "_") for n in re.findall(r"^\s+(?:-\w,\s?)?--([a-z][a-z-]*)", subprocess.run(
+    [sys.argv[2], "run", "--help"], capture_output=True, text=True).stdout, re.M)) - {"help"}
+assert helped == set(rc2000tlm.run_options()), ("run() and `rc2000sim run --help` differ", helped ^ set(rc2000tlm.run_options()))
+for bad, words in ((dict(banks=65), "--banks: Value 65 not in range 1 to 64"),
+                   (dict(lanes=-1), "--lanes: Value -1 not in range 1 to 255"),
+                   (dict(steps=10**9), "--steps 1000000000 is above the solver's cap"),
+                   (dict(patch_levels=1, patch_size=0.2), "--patch-levels excludes --patch-size"),
+                   (dict(impl="software", lanes=2), "--lanes applies to --impl board only")):
+    try:
+        rc2000tlm.run(**bad)
+    except ValueError as e:
+        assert words in str(e), (bad, str(e))
+    else:
+        sys.exit("run() accepted %r" % bad)
+opts = ["--impl", "software", "--visibility", "fast", "--steps", "2", "--patch-size", "0.2", "--form-factor", "point",
+        "--paper-faithful", "--face-levels", "1"]
+subprocess.run([sys.argv[2], "run"] + opts + ["--quiet", "--out", "cli-soft"], check=True, stdout=subprocess.DEVNULL)
+cmd = json.load(open("cli-soft/report.json"))
+soft = rc2000tlm.run(impl="software", visibility="fast", steps=2, patch_size=0.2, form_factor="point", paper_faithful=True,
+                     face_levels=1)
+assert no_wall(soft.to_dict()) == dict(no_wall(cmd), per_step=soft.per_step), "run() differs from rc2000sim run " + " ".join(opts)
+assert soft.simulated_seconds is None and [s["step"] for s in soft.per_step] == [1, 2]
 print("   %d steps, %.9f s, %d banks; per step: %s" % (r.steps, r.simulated_seconds, len(banks),
       ", ".join("%.6f" % t for t in steps.simulated_seconds)))
 PY

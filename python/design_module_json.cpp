@@ -19,6 +19,8 @@
 #include <nlohmann/json.hpp>
 
 #include "host_sw/radiosity/jobs.h"
+#include "io/config_dir.h"
+#include "io/input_file.h"
 #include "host_sw/studies/design_json.h"
 #include "host_sw/studies/design_options.h"
 #include "host_sw/studies/paper_workload.h"
@@ -159,6 +161,14 @@ const std::vector<Option>& options() {
        }, [](const DesignOptions& o) { return ordered_json(o.fidelity); }},
       {"exhaustive", [](DesignOptions& o, const ordered_json& v) { o.exhaustive = yes_no("exhaustive", v); },
        [](const DesignOptions& o) { return ordered_json(o.exhaustive); }},
+      // The folder of config files (io/config_dir.h), as every command's --configs; the process's own.
+      {"configs", [](DesignOptions&, const ordered_json& v) {
+         try {
+           io::use_config_dir(text("configs", v));
+         } catch (const io::InputFileError& e) {
+           throw std::invalid_argument(std::string("--configs ") + e.what());  // the command line's words
+         }
+       }, [](const DesignOptions&) { return ordered_json(); }},
       // The process's job count, not a search option (host_sw/radiosity/jobs.h: the command line's --jobs,
       // its check and message); each call is a process of its own. Default: the rule's (null).
       {"jobs", [](DesignOptions&, const ordered_json& v) { set_jobs(whole("jobs", v), "--jobs"); },

@@ -116,6 +116,12 @@ assert len(shown) >= 9, shown
 for name, text in shown.items():
     assert str(defaults[name]) == text, (name, defaults[name], text)
 assert all(defaults[k] is None for k in ("lanes", "banks", "bank_clocks", "steps", "max_banks", "max_energy"))
+# Every option of the command is one of design()'s, by its snake_case name (issue 39, Python parity), except
+# the two that are about the command's files and terminal: out (design() returns the result) and quiet
+# (progress= says whether to show the search's phases).
+options = set(n.replace("-", "_") for n in re.findall(r"(?m)^\s+(?:-\w,\s?)?--([a-z][a-z-]*)", help_text))
+assert options - {"help", "out", "quiet"} == set(defaults), ("design() and `rc2000sim design --help` differ",
+                                                          options - {"help", "out", "quiet"} ^ set(defaults))
 print("3. design_defaults() shows the command's %d shown defaults: %s" % (len(shown), ", ".join(sorted(shown))))
 
 # 4. Refusals: the command's message, naming the option and the limit.

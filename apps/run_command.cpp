@@ -335,11 +335,14 @@ void check_run_options(const CLI::App& cmd, const RunOptions& o) {
   if (o.cpu_share.empty()) refuse_given(cmd, {"--cpu-cores"}, "applies only with --cpu-share (the CPU/FPGA split)");
   if (!o.cpu_share.empty()) {
     if (o.board.cards > 1) refuse_option("--cpu-share", "a CPU/FPGA split drives one card (--cards " + std::to_string(o.board.cards.value()) + ")");
+    CpuSplit split;
     try {
-      (void)parse_cpu_split(o.cpu_share, o.cpu_cores);
+      split = parse_cpu_split(o.cpu_share, o.cpu_cores);
     } catch (const std::invalid_argument& e) {
       throw CLI::ValidationError(e.what());  // names --cpu-share or --cpu-cores and the limits
     }
+    if (!split.on() || (split.mode == CpuSplit::Mode::fixed && split.share == 0))  // a share of 0 is no split: the host tests nothing, on any number of processors
+      refuse_given(cmd, {"--cpu-cores"}, "does not apply with --cpu-share " + o.cpu_share + " (no CPU/FPGA split: the host tests no segments)");
   }
   if (o.arith.is_float()) {
     refuse_given(cmd, {"--resources"}, "applies to fixed-point lanes only: the float lanes (--arith " + o.arith.name() +

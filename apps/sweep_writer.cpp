@@ -6,6 +6,7 @@
 
 #include "apps/outputs.h"
 #include "apps/plot.h"
+#include "host_sw/studies/inert_axes.h"
 #include "apps/sweep_json.h"
 #include "apps/sweep_summary.h"
 #include "host_sw/studies/study_table.h"
@@ -48,6 +49,10 @@ void write_study(const StudyResult& r, const std::string& out, const ProgressLin
   }
   outputs.add(out + "/study.json", study_record(r));
   outputs.write();
+  for (std::size_t i = 0; i < r.scenes.size(); ++i) {
+    for (const std::string& w : inert_axis_warnings(r.scenes[i].rows))  // axes that changed no figure
+      std::fprintf(stderr, "warning: %s%s\n", r.scenes.size() > 1 ? (r.study.scenes[i].name + ": ").c_str() : "", w.c_str());
+  }
   for (std::size_t i = 0; i < r.scenes.size(); ++i) {
     const std::string dir = scene_dir(r.study, i, out);
     if (i > 0) std::printf("\n");

@@ -29,6 +29,7 @@
 #include "host_sw/driver/host_cpu_model.h"
 #include "host_sw/radiosity/jobs.h"
 #include "host_sw/studies/calibration_variants.h"
+#include "host_sw/studies/inert_axes.h"
 #include "host_sw/studies/sweep_columns.h"
 #include "host_sw/studies/sweep_row_json.h"
 #include "host_sw/studies/paper_prediction.h"
@@ -121,6 +122,7 @@ std::string study_rows(const rc::Study& study, bool progress) {
     scene["patches"] = r.scenes[i].scene.patches;
     scene["rows"] = ordered_json::array();
     for (const rc::SweepRow& row : r.scenes[i].rows) scene["rows"].push_back(rc::sweep_row_json(row, extra));
+    scene["warnings"] = rc::inert_axis_warnings(r.scenes[i].rows);  // as `rc2000sim sweep` prints them
     out["scenes"].push_back(scene);
   }
   return out.dump();

@@ -69,15 +69,20 @@ class SweepResult:
     def __init__(self, rows, study=""):
         self.rows = rows
         self.study = study
+        self.warnings = []
 
     @classmethod
     def from_core(cls, data):
         several = len(data["scenes"]) > 1
         rows = []
+        warnings = []
         for scene in data["scenes"]:
             for row in scene["rows"]:
                 rows.append(dict({"scene": scene["name"]}, **row) if several else row)
-        return cls(rows, data.get("study", ""))
+            warnings += [(scene["name"] + ": " if several else "") + w for w in scene.get("warnings", [])]
+        result = cls(rows, data.get("study", ""))
+        result.warnings = warnings  # what `rc2000sim sweep` prints as warnings (a profile axis that changed nothing)
+        return result
 
     def to_dict(self):
         return {"study": self.study, "rows": self.rows}

@@ -117,6 +117,7 @@ refused "$work/o" "--trace-steps expects FIRST:LAST, e.g. 1:3, got '1x:3'" \
 refused "$work/o" "--card-split applies only with more than one card" "${board[@]}" --card-split faces --out "$work/o"
 refused "$work/o" "--cpu-share applies to --impl board only" run "${tiny[@]}" --cpu-share 0.5 --out "$work/o"
 refused "$work/o" "--cpu-cores applies only with --cpu-share" "${board[@]}" --cpu-cores 2 --out "$work/o"
+refused "$work/o" "--cpu-cores does not apply with --cpu-share 0 (no CPU/FPGA split" "${board[@]}" --cpu-share 0 --cpu-cores 2 --out "$work/o"
 refused "$work/o" "--cpu-share: expected a fraction 0..1 or 'balanced', got '1.5'" "${board[@]}" --cpu-share 1.5 --out "$work/o"
 refused "$work/o" "--cpu-share: expected a fraction 0..1 or 'balanced', got 'half'" "${board[@]}" --cpu-share half --out "$work/o"
 refused "$work/o" "--cpu-cores: expected 1 or 2" "${board[@]}" --cpu-share balanced --cpu-cores 3 --out "$work/o"

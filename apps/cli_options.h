@@ -3,6 +3,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <functional>
 #include <initializer_list>
 #include <memory>
 #include <string>
@@ -10,6 +11,7 @@
 
 #include "board/checked_count.h"
 #include "host_sw/radiosity/radiosity.h"
+#include "host_sw/studies/study.h"
 #include "io/choice.h"
 #include "pipeline/resource_source.h"
 #include "scenes/prepare.h"
@@ -102,6 +104,10 @@ void add_accuracy_command(CLI::App& app, int& exit_code);
 void add_calibrate_command(CLI::App& app, int& exit_code);
 void add_paper_command(CLI::App& app, int& exit_code);
 void add_sweep_command(CLI::App& app, int& exit_code);
+// The sweep command's study options on `cmd` (scene, solver, axes, backend: everything a study file
+// can say), the one table of `rc2000sim sweep` and rc2000tlm.sweep(); the function returned, called
+// after parsing, makes the study they describe (checked as the command checks it).
+std::function<Study()> add_sweep_study_options(CLI::App& cmd);
 void add_bench_command(CLI::App& app, int& exit_code);
 void add_adaptive_command(CLI::App& app, int& exit_code);
 void add_design_command(CLI::App& app, int& exit_code);

@@ -118,14 +118,9 @@ int run_sweep(const SweepOptions& o, const Study& study) {
 
 }  // namespace
 
-void add_sweep_command(CLI::App& app, int& exit_code) {
-  auto o = std::make_shared<SweepOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "sweep", "Design-space study: lanes x banks x width x device x driver x host x any profile field, for one or "
-               "more scenes (default: the paper's 280 faces, 1120 patches), one CSV row per configuration");
-  cmd->add_option("--study", o->study_file, "Study file (TOML, docs/studies.md); replaces the scene, solver and axis options");
-  cmd->add_option("--shard", o->shard, "Run shard I of N (I/N, from 0) of the study: writes OUT/shard-I-of-N.json for "
-                                       "`sweep merge`");
+std::function<Study()> add_sweep_study_options(CLI::App& command) {
+  auto o = std::make_shared<SweepOptions>();  // its study fields; the command's own are add_sweep_command's
+  CLI::App* cmd = &command;
   add_scene_options(*cmd, o->scene);
   cmd->add_option("--steps", o->steps,
                   "paper (Table 2's count for a paper scene, else converge), converge (steps to --convergence, per "
@@ -152,12 +147,30 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--visibility", o->visibility, "Bit-exact backend that answers visibility once per width: fixed or fast")
       ->check(CLI::IsMember(choice_names<BitExactVisibility>()))->capture_default_str();
   add_form_factor_option(*cmd, o->form_factor, "Every solve (default: the paper's point rule): ");
-  cmd->add_option("--out", o->out_dir, "Output folder for sweep.csv, sweep.json, study.json and the plots (with "
-                                       "--shard: for the shard file)")->check(output_path())
-      ->capture_default_str();
   cmd->add_flag("--full-banks", o->full_banks,
                 "Model the profile's bank capacity even when smaller banks change nothing (more memory)");
   add_resources_option(*cmd, o->resources);
+  return [o, cmd] {
+    // A scene file is taken as it is unless refinement is asked for, and solved with run's form
+    // factor unless one is given: the paper defaults are for the embedded box (workload.h).
+    take_scene_as_given(o->scene, [&](const std::string& option) { return cmd->count(option) > 0; });
+    if (!o->scene.file.empty() && cmd->count("--form-factor") == 0) o->form_factor = to_string(kSceneFileFormFactor);
+    return study_from_options(*o);
+  };
+}
+
+void add_sweep_command(CLI::App& app, int& exit_code) {
+  auto o = std::make_shared<SweepOptions>();  // the command's own options: study file, shard, folder, terminal
+  CLI::App* cmd = app.add_subcommand(
+      "sweep", "Design-space study: lanes x banks x width x device x driver x host x any profile field, for one or "
+               "more scenes (default: the paper's 280 faces, 1120 patches), one CSV row per configuration");
+  cmd->add_option("--study", o->study_file, "Study file (TOML, docs/studies.md); replaces the scene, solver and axis options");
+  cmd->add_option("--shard", o->shard, "Run shard I of N (I/N, from 0) of the study: writes OUT/shard-I-of-N.json for "
+                                       "`sweep merge`");
+  const std::function<Study()> study_of_options = add_sweep_study_options(*cmd);
+  cmd->add_option("--out", o->out_dir, "Output folder for sweep.csv, sweep.json, study.json and the plots (with "
+                                       "--shard: for the shard file)")->check(output_path())
+      ->capture_default_str();
   cmd->add_flag("--quiet", o->quiet, "No progress output");
   add_jobs_option(*cmd, "the timing study's processes and the fast backend's threads");
   cmd->add_flag("--list-fields", o->list_fields,
@@ -165,7 +178,7 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
                 "the study's), and exit");
   add_merge_command(*cmd, exit_code);
   cmd->require_subcommand(0, 1);
-  cmd->callback([o, cmd, &exit_code] {
+  cmd->callback([o, cmd, study_of_options, &exit_code] {
     if (cmd->got_subcommand("merge")) return;  // merge ran its own callback
     // Empty, they would mean "no study" and "no shard": the whole default sweep, silently.
     if (given(*cmd, "--study") && o->study_file.empty()) refuse_option("--study", "is empty: name a study file (docs/studies.md)");
@@ -186,11 +199,7 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
       exit_code = run(load_study_file(o->study_file));
       return;
     }
-    // A scene file is taken as it is unless refinement is asked for, and solved with run's form
-    // factor unless one is given: the paper defaults are for the embedded box (workload.h).
-    take_scene_as_given(o->scene, [&](const std::string& option) { return cmd->count(option) > 0; });
-    if (!o->scene.file.empty() && cmd->count("--form-factor") == 0) o->form_factor = to_string(kSceneFileFormFactor);
-    exit_code = run(study_from_options(*o));
+    exit_code = run(study_of_options());
   });
 }
 

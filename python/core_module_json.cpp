@@ -52,23 +52,44 @@ unsigned use_jobs(const std::optional<long long>& jobs) {
   return rc::jobs();
 }
 
-// `rc2000sim run`'s option table (apps/run_command.h, add_run_options): by snake_case name, the
-// default CLI11 shows (null where it shows none) and whether it is a flag. rc2000tlm.run() takes
-// exactly these names, so the module and the command line cannot drift apart.
-std::string run_options() {
-  CLI::App app{"rc2000tlm.run"};
-  (void)rc::add_run_options(app);
-  rc::add_configs_option(app);  // as apps/main.cpp adds it to every command
+// A command's option table as the module shows it: by snake_case name, the default CLI11 shows (null
+// where it shows none), whether it is a flag and, for a flag with one, the name that turns it off
+// (--cull-receivers). The module takes exactly these names, so it and the command line cannot drift.
+std::string option_table(const CLI::App& app) {
   ordered_json out;
   for (const CLI::Option* opt : app.get_options()) {
     if (opt->get_lnames().empty() || opt->get_lnames().front() == "help") continue;
     std::string name = opt->get_lnames().front();
     std::replace(name.begin(), name.end(), '-', '_');
     const std::string shown = opt->get_default_str();
-    out[name] = {{"flag", opt->get_expected_max() == 0},  // a flag expects no value
+    const bool flag = opt->get_expected_max() == 0;  // a flag expects no value
+    out[name] = {{"flag", flag},
+                 {"negation", flag && !opt->get_fnames().empty() ? ordered_json(opt->get_fnames().front()) : ordered_json()},
                  {"default", shown.empty() ? ordered_json() : ordered_json(shown)}};
   }
   return out.dump();
+}
+
+// `rc2000sim run`'s option table (apps/run_command.h, add_run_options) and every command's --configs.
+std::string run_options() {
+  CLI::App app{"rc2000tlm.run"};
+  (void)rc::add_run_options(app);
+  rc::add_configs_option(app);  // as apps/main.cpp adds it to every command
+  return option_table(app);
+}
+
+// `rc2000sim sweep`'s study options (add_sweep_study_options) and --configs.
+std::string sweep_options() {
+  CLI::App app{"rc2000tlm.sweep"};
+  (void)rc::add_sweep_study_options(app);
+  rc::add_configs_option(app);
+  return option_table(app);
+}
+
+// Parses `args` with `app`'s table, the command line's words for a refusal (a ValueError).
+void parse_args(CLI::App& app, const std::vector<std::string>& args) {
+  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes its arguments last first
+  app.parse(reversed);
 }
 
 // One run as `rc2000sim run ARGS` computes it: ARGS parsed by the command's own option table, checked
@@ -81,8 +102,7 @@ std::string run_cli(const std::vector<std::string>& args, bool write_outputs, bo
   rc::add_configs_option(app);
   rc::RunOptions options;
   try {
-    std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes its arguments last first
-    app.parse(reversed);
+    parse_args(app, args);
     options = resolve();
   } catch (const CLI::Error& e) {  // the command line's words, without its usage text
     throw std::invalid_argument(e.what());
@@ -128,6 +148,23 @@ std::string study_rows(const rc::Study& study, bool progress) {
   return out.dump();
 }
 
+// A sweep as `rc2000sim sweep ARGS` makes its study (the command's study options, checks and words),
+// run on this machine; its rows as study_rows gives them.
+std::string sweep_cli(const std::vector<std::string>& args, bool progress, const std::optional<long long>& jobs) {
+  use_jobs(jobs);
+  CLI::App app{"rc2000tlm.sweep"};
+  const std::function<rc::Study()> study_of_options = rc::add_sweep_study_options(app);
+  rc::add_configs_option(app);
+  rc::Study study;
+  try {
+    parse_args(app, args);
+    study = study_of_options();
+  } catch (const CLI::Error& e) {
+    throw std::invalid_argument(e.what());
+  }
+  return study_rows(study, progress);
+}
+
 // Table 2 as `rc2000sim paper` predicts it with its defaults (the paper's table, the calibrated host
 // and its variants, 15-bit bit-exact visibility): one record per scene and implementation, the
 // fields of paper.json's scene records.
@@ -169,6 +206,9 @@ PYBIND11_MODULE(_core, m) {
   m.def("run", &run_cli, py::arg("args"), py::arg("write_outputs") = false, py::arg("summary") = false,
         "One run as `rc2000sim run ARGS` (the command's option table and checks); report.json's document "
         "with per-step records, as JSON text");
+  m.def("sweep", &sweep_cli, py::arg("args"), py::arg("progress") = false, py::arg("jobs") = py::none(),
+        "A sweep as `rc2000sim sweep ARGS` makes it (the command's study options); its rows as JSON text");
+  m.def("sweep_options", &sweep_options, "`rc2000sim sweep`'s study options by snake_case name, as JSON text");
   m.def("run_options", &run_options, "`rc2000sim run`'s options by snake_case name: default and whether a flag, as JSON text");
   m.def("study_file", [](const std::string& path, bool progress, const std::optional<long long>& jobs) {
           use_jobs(jobs);

@@ -18,7 +18,7 @@ SystemC elaborates once per process, so every simulation runs in a worker proces
 command line's message. README, "Use it from Python".
 """
 from .results import DesignBound, DesignPoint, DesignResult, PaperResult, RunResult, SweepResult, load
-from .workers import design, design_defaults, paper, run, run_many, run_options, study, sweep
+from .workers import design, design_defaults, paper, run, run_many, run_options, study, sweep, sweep_options
 
 __all__ = ["DesignBound", "DesignPoint", "DesignResult", "PaperResult", "RunResult", "SweepResult", "design",
-           "design_defaults", "load", "paper", "run", "run_many", "run_options", "study", "sweep"]
+           "design_defaults", "load", "paper", "run", "run_many", "run_options", "study", "sweep", "sweep_options"]

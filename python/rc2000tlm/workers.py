@@ -184,47 +184,51 @@ def _named(error, i, n, labels, results):
     return error
 
 
-_RUN_OPTIONS = []  # `rc2000sim run`'s option table, read once per process (run_options())
+_OPTION_TABLES = {}  # a command's option table, read once per process (run_options(), sweep_options())
+
+
+def _option_table(function):
+    if function not in _OPTION_TABLES:
+        _OPTION_TABLES[function] = _submit_all([(function, {})], False, "options")[0]
+    return _OPTION_TABLES[function]
 
 
 def run_options():
     """`rc2000sim run`'s options by snake_case name, from the command line's own table
     (apps/run_command.h): {"default": the default it shows as text, or None; "flag": whether it takes
-    no value}. run() takes exactly these, plus progress."""
-    if not _RUN_OPTIONS:
-        _RUN_OPTIONS.append(_submit_all([("run_options", {})], False, "runs")[0])
-    return _RUN_OPTIONS[0]
+    no value; "negation": a flag's name that turns it off, or None}. run() takes exactly these, plus progress."""
+    return _option_table("run_options")
+
+
+def sweep_options():
+    """`rc2000sim sweep`'s study options (scene, solver, axes, backend) by snake_case name, as run_options()
+    shows run's; sweep() takes them by these names."""
+    return _option_table("sweep_options")
 
 
 def _cli_text(name, v):
-    """A value as the command line spells it: a list or tuple joined with commas, a float in its
-    shortest exact form (repr), a numpy or pandas scalar as its Python value."""
+    """A value as the command line spells it: a list or tuple joined with commas, True and False as on
+    and off, a float in its shortest exact form (repr), a numpy or pandas scalar as its Python value."""
     if isinstance(v, (list, tuple)):
         return ",".join(_cli_text(name, x) for x in v)
     if hasattr(v, "item") and not isinstance(v, (str, bytes)):
         v = v.item()
     if isinstance(v, bool):
-        raise ValueError("--%s: expected a value, got %r" % (name.replace("_", "-"), v))
+        return "on" if v else "off"
     if isinstance(v, float):
         return repr(v)
     return str(v)
 
 
-def _run_call(options):
-    """run()'s options as `rc2000sim run` arguments: every name one of the command's (else a TypeError
-    naming it, as Python does), flags given as True (False: not given), the rest as text that the
-    command's own table parses and checks. Two defaults are the module's: --impl board (run() is a
-    board run unless impl= says otherwise) and no output files unless out= is given."""
-    options = dict(options)
-    progress = bool(options.pop("progress", False))
-    known = run_options()
+def _command_args(command, known, options):
+    """Keyword options as `rc2000sim COMMAND` arguments: every name one of the command's (else a TypeError
+    naming it, as Python does), a flag given as True (False: its negation when it has one, else not
+    given), the rest as text that the command's own table parses and checks."""
     for name in options:
         if name not in known:
-            raise TypeError("rc2000tlm.run() got an unexpected keyword argument '%s' (the options of "
-                            "`rc2000sim run`: %s, and progress)" % (name, ", ".join(known)))
-    args = [] if options.get("impl") is not None else ["--impl", "board"]
-    if not progress and not options.get("quiet"):
-        args.append("--quiet")
+            raise TypeError("rc2000tlm.%s() got an unexpected keyword argument '%s' (the options of "
+                            "`rc2000sim %s`: %s, and progress)" % (command, name, command, ", ".join(known)))
+    args = []
     for name, v in options.items():
         if v is None:
             continue
@@ -234,8 +238,23 @@ def _run_call(options):
                 raise ValueError("%s: expected True or False, got %r" % (flag, v))
             if v:
                 args.append(flag)
+            elif known[name].get("negation"):
+                args.append("--" + known[name]["negation"])
         else:
             args += [flag, _cli_text(name, v)]
+    return args
+
+
+def _run_call(options):
+    """run()'s options as `rc2000sim run` arguments (_command_args). Two defaults are the module's:
+    --impl board (run() is a board run unless impl= says otherwise) and no output files unless out=."""
+    options = dict(options)
+    progress = bool(options.pop("progress", False))
+    args = _command_args("run", run_options(), options)
+    if options.get("impl") is None:
+        args = ["--impl", "board"] + args
+    if not progress and not options.get("quiet"):
+        args.append("--quiet")
     return {"args": args, "write_outputs": options.get("out") is not None, "summary": False}
 
 
@@ -311,9 +330,31 @@ def study_text(scenes=None, steps=None, name="python", fixed=None, resources=Non
 
 
 def sweep(scenes=None, steps=None, name="python", fixed=None, resources=None, progress=False, jobs=None, **axes):
-    """A sweep as a study (docs/studies.md) made from the arguments (study_text shows the file);
-    scenes: None for the study default (the paper's scene); resources: as --resources (None: paper);
-    jobs: as --jobs (None: the rule's). Returns a SweepResult."""
+    """A sweep, in one of two forms. With only `rc2000sim sweep`'s options (sweep_options() lists them:
+    scene, faces, face_levels, patch_levels, patch_size, steps, convergence, lanes, banks, bits, devices,
+    concurrent, paper_faithful, cards, card_split, card_bus, host, visibility, form_factor, full_banks,
+    resources, configs), the command's own table parses and checks them: the study `rc2000sim sweep` would
+    run, with its defaults and words. Otherwise a study (docs/studies.md) made from the arguments
+    (study_text shows the file): scenes as [[scenes]] tables (None: the paper's scene), axes as a study
+    file spells them (devices, bits, lanes, "banks.clock_mhz", ...), `fixed` and `name`. jobs: as --jobs
+    (None: the rule's). Returns a SweepResult (its warnings: a profile axis that changed nothing)."""
+    command = dict(axes, steps=steps, resources=resources)
+    command = {k: v for k, v in command.items() if v is not None}
+    known = sweep_options()
+    if scenes is None and fixed is None and name == "python" and all(k in known for k in command):
+        kwargs = {"args": _command_args("sweep", known, command), "progress": progress, "jobs": jobs}
+        return SweepResult.from_core(_submit_all([("sweep", kwargs)], False, "studies", progress)[0])
+    # The study form: a name only the command's form has (scene, faces, ...) cannot be one of its axes.
+    study_names = {"lanes", "banks", "bits", "devices", "concurrent", "cards", "steps", "resources"}
+    command_only = sorted(k for k in command if k in known and k not in study_names)
+    if command_only:
+        other = sorted(set(k for k in command if k not in known) | {k for k, v in (("scenes", scenes), ("fixed", fixed))
+                                                                      if v is not None} | ({"name"} if name != "python" else set()))
+        raise TypeError("rc2000tlm.sweep(): %s %s `rc2000sim sweep`'s option form, but %s %s not (the study form: "
+                        "scenes=, fixed=, name=, profile-path axes, or a name of neither form); use one form: the "
+                        "study form spells the workload in scenes=[{...}]"
+                        % (", ".join(command_only), "is of" if len(command_only) == 1 else "are of", ", ".join(other),
+                           "is" if len(other) == 1 else "are"))
     text = study_text(scenes=scenes, steps=steps, name=name, fixed=fixed, resources=resources, **axes)
     kwargs = {"text": text, "name": "rc2000tlm.sweep(%s)" % name, "progress": progress, "jobs": jobs}
     return SweepResult.from_core(_submit_all([("study_text", kwargs)], False, "studies", progress)[0])

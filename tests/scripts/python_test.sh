@@ -150,6 +150,23 @@ soft = rc2000tlm.run(impl="software", visibility="fast", steps=2, patch_size=0.2
                      face_levels=1)
 assert no_wall(soft.to_dict()) == dict(no_wall(cmd), per_step=soft.per_step), "run() differs from rc2000sim run " + " ".join(opts)
 assert soft.simulated_seconds is None and [s["step"] for s in soft.per_step] == [1, 2]
+# sweep(): `rc2000sim sweep`'s study options by the same names (all but the command's files, terminal and
+# shards, and --jobs, which is jobs= as everywhere), and the command's rows for the same options.
+helped = set(n.replace("-", "_") for n in re.findall(r"^\s+(?:-\w,\s?)?--([a-z][a-z-]*)", subprocess.run(
+    [sys.argv[2], "sweep", "--help"], capture_output=True, text=True).stdout, re.M))
+helped -= {"help", "study", "shard", "out", "quiet", "jobs", "list_fields"}
+assert helped == set(rc2000tlm.sweep_options()), ("sweep() and `rc2000sim sweep --help` differ", helped ^ set(rc2000tlm.sweep_options()))
+opts = ["--lanes", "1,2", "--banks", "6", "--steps", "5", "--faces", "70", "--patch-levels", "1", "--concurrent", "off"]
+subprocess.run([sys.argv[2], "sweep"] + opts + ["--quiet", "--out", "cli-sweep"], check=True, stdout=subprocess.DEVNULL)
+cmd_rows = json.load(open("cli-sweep/sweep.json"))["rows"]
+swept = rc2000tlm.sweep(lanes=[1, 2], banks=6, steps=5, faces=70, patch_levels=1, concurrent=False)
+assert [r["simulated_seconds"] for r in swept.rows] == [r["simulated_seconds"] for r in cmd_rows], "sweep() differs from rc2000sim sweep"
+try:
+    rc2000tlm.sweep(lanes="0-3", steps=2)
+except ValueError as e:
+    assert "--lanes: '0-3' is outside 1..255" in str(e), str(e)
+else:
+    sys.exit("sweep() accepted lanes 0")
 print("   %d steps, %.9f s, %d banks; per step: %s" % (r.steps, r.simulated_seconds, len(banks),
       ", ".join("%.6f" % t for t in steps.simulated_seconds)))
 PY

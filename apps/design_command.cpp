@@ -59,7 +59,8 @@ void check_and_resolve(const CLI::App& cmd, DesignCli& cli) {
     if (given(cmd, "--max-error")) check_design_cap("--max-error", o.constraints.max_error);
     if (given(cmd, "--max-error-max")) check_design_cap("--max-error-max", o.constraints.max_error_max);
     for (const auto& [option, text] : {std::pair<const char*, const std::string&>{"--lanes", o.lanes}, {"--banks", o.banks},
-                                       {"--bank-clocks", o.bank_clocks}})
+                                       {"--bank-clocks", o.bank_clocks}, {"--offset-lsb", o.offset_lsb},
+                                       {"--neighbour-rings", o.neighbour_rings}, {"--coordinate-bits", o.coordinate_bits}})
       if (given(cmd, option)) check_design_axis(option, text);
     resolve_design_options(o);
   } catch (const std::invalid_argument& e) {
@@ -122,6 +123,14 @@ void add_design_command(CLI::App& app, int& exit_code) {
   add_resources_option(*cmd, o->space.resources);
   cmd->add_option("--cards", o->cards, "Card counts, e.g. 1-4")->capture_default_str();
   cmd->add_option("--concurrent", o->concurrent, "Driver: on (sec 4.3), off, both")->capture_default_str();
+  cmd->add_option("--offset-lsb", o->offset_lsb,
+                  "Segment-end offsets along the normal in LSBs, e.g. 0,2 (0: off; run's --offset-lsb, docs/radiosity.md)")
+      ->capture_default_str();
+  cmd->add_option("--neighbour-rings", o->neighbour_rings, "Neighbour rules, e.g. 0-2 (0: off; run's --neighbour-rings)")
+      ->capture_default_str();
+  cmd->add_option("--coordinate-bits", o->coordinate_bits,
+                  "Coordinate widths below the lanes' --bits, e.g. 0,15 (0: off; run's --coordinate-bits)")
+      ->capture_default_str();
   cmd->add_option("--max-banks", o->constraints.max_banks, "Most banks a design may have (default: the profile's count; " + std::to_string(board::kMinBanks) + ".." +
                       std::to_string(kMaxRunBanks) + ")");
   cmd->add_option("--min-bits", o->constraints.min_bits, "Least fractional width a design may have (7..31)")

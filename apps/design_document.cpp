@@ -1,5 +1,7 @@
 #include "apps/design_document.h"
 
+#include "host_sw/radiosity/segment_fix_names.h"
+
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -21,7 +23,8 @@ std::string design_csv(const DesignSearchResult& r) {
   out << "device,lanes,banks,bank_clock_mhz,results,bits,multipliers,cards,concurrent,clock_mhz,simulated_seconds,"
          "energy_joules,average_watts,tests_per_second,tests_per_second_while_fpga_busy,bank_bytes_per_test,"
          "pci_bytes_per_test,bound,fpga_stream_limit,meets_constraints,on_front,best,steps,software_seconds,"
-         "speedup_vs_software,speedup_vs_reference,relative_rmse,relative_max_error,decisions_differ_share\n";
+         "speedup_vs_software,speedup_vs_reference,relative_rmse,relative_max_error,decisions_differ_share,offset_lsb,"
+         "neighbour_rings,coordinate_bits\n";
   out.precision(17);
   for (std::size_t i = 0; i < r.points.size(); ++i) {
     const DesignPoint& p = r.points[i];
@@ -37,7 +40,8 @@ std::string design_csv(const DesignSearchResult& r) {
         << p.row.steps << ',' << num(p.fidelity.software_seconds) << ',' << num(speedup_over_software(p)) << ','
         << (r.reference ? num(r.reference->row.simulated_seconds / p.row.simulated_seconds) : std::string()) << ','
         << num(p.fidelity.relative_rmse) << ',' << num(p.fidelity.relative_max) << ','
-        << num(p.fidelity.decisions_differ_share()) << '\n';
+        << num(p.fidelity.decisions_differ_share()) << ',' << p.design.fixes.offset_lsb << ','
+        << p.design.fixes.neighbour_rings << ',' << p.design.fixes.coordinate_bits << '\n';
   }
   return out.str();
 }
@@ -73,7 +77,7 @@ std::string width_table(const DesignSearchResult& r) {
   md << "\n\n| bits | steps | software alone, s | relative RMSE | relative max | decisions that differ |\n"
         "|---:|---:|---:|---:|---:|---:|\n";
   for (const WidthFidelity& f : r.widths) {
-    md << "| " << f.bits << " | " << f.steps << " | " << fmt("%.3f", f.software_seconds) << " | ";
+    md << "| " << f.bits << (f.fixes.any() ? ", " + describe(f.fixes) : std::string()) << " | " << f.steps << " | " << fmt("%.3f", f.software_seconds) << " | ";
     if (f.measured())
       md << fmt("%.3g", f.relative_rmse) << " | " << fmt("%.3g", f.relative_max) << " | " << fmt("%.3g%%", 100.0 * f.decisions_differ_share());
     else
@@ -130,7 +134,8 @@ void print_design(const DesignDocument& doc) {
   else
     std::printf("  widths (their error not measured: --fidelity off):\n");
   for (const WidthFidelity& f : r.widths)
-    std::printf("    %2d bits: %d steps, software %.3f s, %s\n", f.bits, f.steps, f.software_seconds, fidelity_text(f).c_str());
+    std::printf("    %2d bits%s: %d steps, software %.3f s, %s\n", f.bits,
+                f.fixes.any() ? (", " + describe(f.fixes)).c_str() : "", f.steps, f.software_seconds, fidelity_text(f).c_str());
   if (std::isfinite(doc.constraints.max_error) || std::isfinite(doc.constraints.max_error_max))
     std::printf("  error bound: relative RMSE %s, relative max %s\n",
                 std::isfinite(doc.constraints.max_error) ? fmt("<= %g", doc.constraints.max_error).c_str() : "any",

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "apps/cli_options.h"
+#include "host_sw/radiosity/segment_fix_names.h"
 
 namespace rc {
 
@@ -32,9 +33,8 @@ void check_segment_fix_options(const CLI::App& cmd, bool float_arith, const std:
     refuse_given(cmd, {"--offset-lsb", "--coordinate-bits"},
                  "needs the fixed-point width (--bits); --visibility float (double precision) has none: use --visibility "
                  "fixed or fast, or --impl board");
-  } else if (given(cmd, "--coordinate-bits") && coordinate_bits >= bits) {
-    refuse_option("--coordinate-bits", "must be below --bits (" + std::to_string(bits) + "): the lanes compute at --bits on "
-                                       "coordinates of fewer bits, got " + std::to_string(coordinate_bits));
+  } else if (given(cmd, "--coordinate-bits") && !coordinate_bits_problem(bits, coordinate_bits).empty()) {
+    refuse_option("--coordinate-bits", coordinate_bits_problem(bits, coordinate_bits));
   }
 }
 
@@ -44,14 +44,7 @@ SegmentFixOptions resolve_segment_fixes(SegmentFixOptions fixes, bool fixed_widt
 }
 
 namespace {
-std::string fix_name(const SegmentFixOptions& f) {
-  std::string name;
-  if (f.offset_lsb != 0) name = "offset " + std::to_string(f.offset_lsb) + " LSB";
-  if (f.neighbour_rings != 0) name += (name.empty() ? "" : " + ") + std::string("neighbours (ring ") + std::to_string(f.neighbour_rings) + ")";
-  if (f.coordinate_bits != 0)
-    name += (name.empty() ? "" : " + ") + std::to_string(f.coordinate_bits) + "-bit coordinates (" + std::to_string(f.bits - f.coordinate_bits) + " guard bits)";
-  return name;
-}
+std::string fix_name(const SegmentFixOptions& f) { return describe(f); }
 }  // namespace
 
 std::string segment_fix_summary(const SegmentFixOptions& fixes, const SolverResult& r) {

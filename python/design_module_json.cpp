@@ -136,7 +136,8 @@ const std::vector<Option>& options() {
       {"resources", [](DesignOptions& o, const ordered_json& v) {
          o.space.resources = parse_choice_option<pipeline::ResourceSource>("--resources", text("resources", v));
        }, [](const DesignOptions& o) { return ordered_json(choice_name(o.space.resources)); }},
-      RC_TEXT_AXIS(cards), RC_TEXT_AXIS(concurrent),
+      RC_TEXT_AXIS(cards), RC_TEXT_AXIS(concurrent), RC_TEXT_AXIS(offset_lsb), RC_TEXT_AXIS(neighbour_rings),
+      RC_TEXT_AXIS(coordinate_bits),
       {"max_banks", [](DesignOptions& o, const ordered_json& v) {
          const long long n = whole("max_banks", v);
          check_design_max_banks(n);

@@ -28,6 +28,9 @@ void replay_host_work(const VisibilityRecording& recording, const ReplayShape& s
     } else {
       charge(HostWork::IntersectionTest, recording.brute_force_tests(step));
     }
+    // The host's own re-tests (the neighbour rule, SolverOptions::fixes), as the solver charges them
+    // after the answer, whoever gave it.
+    charge(HostWork::IntersectionTest, recording.host_tests(step));
     charge(HostWork::EnergyUpdate, recording.needed(step) - recording.blocked(step));
     charge(HostWork::Step, 1);
     charge(HostWork::PatchScan, shape.patches);

@@ -19,7 +19,8 @@ struct ReplayShape {
 };
 
 // With `board` null the tests are the host's (the software implementation): each step charges
-// the recorded brute-force test count. Throws std::invalid_argument if the recording is too short.
+// the recorded brute-force test count; either way the host also charges the recording's host tests
+// (the neighbour rule's re-tests) as intersection tests, as the solver does. Throws std::invalid_argument if the recording is too short.
 // Call from the host SC_THREAD; the board's faces must already be loaded.
 void replay_host_work(const VisibilityRecording& recording, const ReplayShape& shape, HostCostSink& host,
                       TimingReplayTarget* board);

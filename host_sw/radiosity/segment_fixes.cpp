@@ -1,4 +1,5 @@
 #include "host_sw/radiosity/segment_fixes.h"
+#include "host_sw/radiosity/segment_fix_names.h"
 
 #include <algorithm>
 #include <array>
@@ -11,6 +12,21 @@
 #include "pipeline/reference_mt.h"
 
 namespace rc {
+
+std::string describe(const SegmentFixOptions& f) {
+  std::string name;
+  if (f.offset_lsb != 0) name = "offset " + std::to_string(f.offset_lsb) + " LSB";
+  if (f.neighbour_rings != 0) name += (name.empty() ? "" : " + ") + std::string("neighbours (ring ") + std::to_string(f.neighbour_rings) + ")";
+  if (f.coordinate_bits != 0)
+    name += (name.empty() ? "" : " + ") + std::to_string(f.coordinate_bits) + "-bit coordinates (" + std::to_string(f.bits - f.coordinate_bits) + " guard bits)";
+  return name;
+}
+
+std::string coordinate_bits_problem(int bits, int coordinate_bits) {
+  if (coordinate_bits == 0 || coordinate_bits < bits) return "";
+  return "must be below --bits (" + std::to_string(bits) + "): the lanes compute at --bits on coordinates of fewer bits, got " +
+         std::to_string(coordinate_bits);
+}
 
 std::vector<std::vector<int>> vertex_neighbours(const std::vector<Triangle>& faces, int rings) {
   std::map<std::array<double, 3>, std::vector<int>> at_vertex;

@@ -29,10 +29,18 @@ std::string scene_arguments(const SceneOptions& s) {
   return a;
 }
 
-// One width's own solve and its error against double precision; null figures: not measured.
+// The fix's three values, 0 for off (run's --offset-lsb, --neighbour-rings, --coordinate-bits).
+void fix_fields(Json& j, const SegmentFixOptions& f) {
+  j["offset_lsb"] = f.offset_lsb;
+  j["neighbour_rings"] = f.neighbour_rings;
+  j["coordinate_bits"] = f.coordinate_bits;
+}
+
+// One width's own solve (with its fix) and its error against double precision; null figures: not measured.
 Json fidelity_json(const WidthFidelity& f) {
   Json j;
   j["bits"] = f.bits;
+  fix_fields(j, f.fixes);
   j["steps"] = f.steps;
   j["software_seconds"] = finite_or_null(f.software_seconds);
   j["measured"] = f.measured();
@@ -54,6 +62,7 @@ Json point_json(const DesignPoint& p, const DesignSearchResult& r) {
   j["bank_clock_mhz"] = p.design.bank_clock_mhz;
   j["results"] = board::to_string(p.design.results);
   j["bits"] = c.bits;
+  fix_fields(j, p.design.fixes);
   j["multipliers"] = to_string(p.design.multipliers);
   j["cards"] = c.cards;
   j["concurrent"] = c.concurrent;
@@ -103,6 +112,10 @@ std::string run_command(const DesignDocument& doc, const DesignPoint& p, const s
                     std::to_string(c.bits);
   if (c.cards > 1) cmd += " --cards " + std::to_string(c.cards);
   if (c.concurrent) cmd += " --concurrent";
+  const SegmentFixOptions& f = p.design.fixes;
+  if (f.offset_lsb != 0) cmd += " --offset-lsb " + std::to_string(f.offset_lsb);
+  if (f.neighbour_rings != 0) cmd += " --neighbour-rings " + std::to_string(f.neighbour_rings);
+  if (f.coordinate_bits != 0) cmd += " --coordinate-bits " + std::to_string(f.coordinate_bits);
   // The source of resources decides whether the lanes fit: the run must use the search's.
   if (doc.space.resources != pipeline::ResourceSource::paper_fit) cmd += " --resources " + choice_name(doc.space.resources);
   cmd += scene_arguments(w.scene) + " --steps " + std::to_string(p.row.steps) + " --form-factor " + to_string(w.form_factor);

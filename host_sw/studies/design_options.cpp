@@ -1,5 +1,7 @@
 #include "host_sw/studies/design_options.h"
 
+#include "host_sw/radiosity/segment_fix_names.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -87,7 +89,10 @@ DesignOptions::DesignOptions()
       bits(joined_names(space.bits, [](int b) { return std::to_string(b); })),
       multipliers(joined_names(space.multipliers, [](Multipliers m) { return std::string(to_string(m)); })),
       cards(joined_names(space.cards, [](int c) { return std::to_string(c); })),
-      concurrent(concurrency_text(space.concurrent)) {}
+      concurrent(concurrency_text(space.concurrent)),
+      offset_lsb(joined_names(space.offset_lsb, [](int k) { return std::to_string(k); })),
+      neighbour_rings(joined_names(space.neighbour_rings, [](int r) { return std::to_string(r); })),
+      coordinate_bits(joined_names(space.coordinate_bits, [](int c) { return std::to_string(c); })) {}
 
 void check_design_steps(long long steps) { check_range("--steps", steps, 1, SolverOptions{}.max_steps); }
 
@@ -152,6 +157,17 @@ void resolve_design_options(DesignOptions& o) {
   for (const std::string& m : parse_name_list(o.multipliers, "--multipliers")) s.multipliers.push_back(parse_multipliers(m));
   s.cards = parse_int_list(o.cards, "--cards", CardCount::kMin, CardCount::kMax);
   s.concurrent = parse_concurrency(o.concurrent);
+  // The fixes' limits are run's (--offset-lsb 1..2^20, --neighbour-rings 1..2, --coordinate-bits 7..30), with 0 for off.
+  s.offset_lsb = parse_int_list(o.offset_lsb, "--offset-lsb", 0, 1 << 20);
+  s.neighbour_rings = parse_int_list(o.neighbour_rings, "--neighbour-rings", 0, 2);
+  s.coordinate_bits = parse_int_list(o.coordinate_bits, "--coordinate-bits", 0, 30);
+  for (int c : s.coordinate_bits)
+    if (c != 0 && c < 7)
+      throw std::invalid_argument("--coordinate-bits: '" + std::to_string(c) + "' is outside 7..30 (0: off)");
+  for (int b : s.bits)
+    if (b >= o.constraints.min_bits)
+      for (int c : s.coordinate_bits)
+        if (!coordinate_bits_problem(b, c).empty()) throw std::invalid_argument("--coordinate-bits: " + coordinate_bits_problem(b, c));
   o.workload.source = scene_source(o.workload.scene);
   o.workload.paper_faithful = !o.culled;
   if (o.fidelity != "on" && o.fidelity != "off")

@@ -26,6 +26,8 @@ struct DesignOptions {
   DesignConstraints constraints;
   std::string lanes, banks, bank_clocks;  // empty: the space's rule (1 .. what fits, 5 .. max banks, the profile's)
   std::string results, bits, multipliers, cards, concurrent;
+  // The fix axes (--offset-lsb, --neighbour-rings, --coordinate-bits as lists, 0 = off; design_fixes).
+  std::string offset_lsb, neighbour_rings, coordinate_bits;
   std::string fidelity = "on";  // --fidelity on|off: space.measure_fidelity
   bool culled = false;  // cull receivers behind the shooter (workload.paper_faithful = !culled)
   bool exhaustive = false;
@@ -52,7 +54,8 @@ FormFactorKind design_form_factor(const std::string& name);  // checked, then it
 
 // The axes' text parsed into options.space, the workload's source and segments set (from --scene
 // and --culled), and the combinations checked
-// (--min-bits against --bits, --max-banks against kMaxRunBanks, an error bound against --fidelity off).
+// (--min-bits against --bits, --max-banks against kMaxRunBanks, an error bound against --fidelity off,
+// --coordinate-bits below every width searched, in `run`'s words).
 // Throws std::invalid_argument naming the option.
 void resolve_design_options(DesignOptions& options);
 

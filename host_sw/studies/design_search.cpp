@@ -1,5 +1,7 @@
 #include "host_sw/studies/design_search.h"
 
+#include "host_sw/radiosity/segment_fix_names.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -26,6 +28,10 @@ unsigned total_banks(const DesignPoint& p) { return p.design.config.banks * p.de
 
 double energy_or_worst(const SweepRow& r) {
   return std::isfinite(r.energy_joules) ? r.energy_joules : std::numeric_limits<double>::infinity();
+}
+
+std::tuple<int, int, int> fix_key(const SegmentFixOptions& f) {
+  return {f.offset_lsb, f.neighbour_rings, f.coordinate_bits};
 }
 
 double error_or_worst(const DesignPoint& p) {
@@ -79,10 +85,33 @@ std::string describe(const DesignConfig& d) {
   const SweepConfig& c = d.config;
   char clock[32];
   std::snprintf(clock, sizeof clock, "%g", d.bank_clock_mhz);
+  const std::string fixes = d.fixes.any() ? ", " + describe(d.fixes) : std::string();
   return c.device + ", " + std::to_string(c.lanes) + (c.lanes == 1 ? " lane, " : " lanes, ") + std::to_string(c.banks) +
          " banks at " + clock + " MHz, results " + (d.results == board::ResultStore::bank ? "in the bank" : "on chip") +
          ", " + std::to_string(c.bits) + "-bit, " + to_string(d.multipliers) + " multipliers, " + std::to_string(c.cards) +
-         (c.cards == 1 ? " card, " : " cards, ") + (c.concurrent ? "concurrent" : "serial") + " driver";
+         (c.cards == 1 ? " card, " : " cards, ") + (c.concurrent ? "concurrent" : "serial") + " driver" + fixes;
+}
+
+std::vector<SegmentFixOptions> design_fixes(const DesignSpace& space, int bits) {
+  require(space.offset_lsb, "--offset-lsb");
+  require(space.neighbour_rings, "--neighbour-rings");
+  require(space.coordinate_bits, "--coordinate-bits");
+  std::vector<SegmentFixOptions> out;
+  for (int c : space.coordinate_bits) {
+    const std::string problem = coordinate_bits_problem(bits, c);
+    if (!problem.empty()) throw std::invalid_argument("--coordinate-bits: " + problem);
+    for (int r : space.neighbour_rings)
+      for (int k : space.offset_lsb) {
+        SegmentFixOptions f;
+        f.offset_lsb = k;
+        f.neighbour_rings = r;
+        f.coordinate_bits = c;
+        if (f.any()) f.bits = bits;
+        if (std::find(out.begin(), out.end(), f) == out.end()) out.push_back(f);
+      }
+  }
+  std::stable_partition(out.begin(), out.end(), [](const SegmentFixOptions& f) { return !f.any(); });
+  return out;
 }
 
 std::vector<DesignCandidate> enumerate_designs(const DesignSpace& space, const DesignConstraints& constraints,
@@ -103,6 +132,7 @@ std::vector<DesignCandidate> enumerate_designs(const DesignSpace& space, const D
   std::vector<DesignCandidate> out;
   for (int bits : space.bits) {
     if (bits < constraints.min_bits) continue;
+    for (const SegmentFixOptions& fix : design_fixes(space, bits))
     for (bool concurrent : space.concurrent)
       for (int cards : space.cards)
         for (board::ResultStore results : space.results)
@@ -112,6 +142,7 @@ std::vector<DesignCandidate> enumerate_designs(const DesignSpace& space, const D
               d.results = results;
               d.bank_clock_mhz = clock;
               d.multipliers = m;
+              d.fixes = fix;
               d.config.device = space.device;
               d.config.host = space.host;
               d.config.bits = bits;
@@ -141,7 +172,7 @@ std::optional<std::size_t> fastest(const std::vector<DesignPoint>& points) {
   std::optional<std::size_t> best;
   auto key = [&](const DesignPoint& p) {
     return std::make_tuple(p.row.simulated_seconds, total_banks(p), energy_or_worst(p.row), p.design.config.lanes,
-                           p.design.config.cards, p.row.config.label());
+                           p.design.config.cards, error_or_worst(p), p.row.config.label(), fix_key(p.design.fixes));
   };
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!points[i].meets_constraints) continue;
@@ -209,7 +240,7 @@ DesignCases design_cases(const std::vector<DesignCandidate>& candidates, const S
       continue;
     }
     TimingCase t;
-    t.label = c.design.config.label();
+    t.label = c.design.config.label() + (c.design.fixes.any() ? " (" + describe(c.design.fixes) + ")" : "");
     t.scene = &scene;
     t.solver = solver;
     t.recording = &recording;
@@ -228,13 +259,15 @@ DesignPoint design_point(const DesignConfig& design, const TimingOutcome& outcom
   p.row = row_from_report(design.config, outcome.report, steps);
   p.bound = design_bound(outcome.report);
   const RunReport& r = outcome.report;
-  p.tests = r.intersections.tests;
+  // Every test, as `run` counts its visibility_tests: the board's and the host's own (the neighbour
+  // rule's re-tests); the bytes per test are the board's, over the tests its lanes made.
+  p.tests = r.intersections.tests + r.work[static_cast<int>(HostWork::IntersectionTest)].count;
   double bank_bytes = 0;
   for (const BankUseReport& b : r.board.banks) bank_bytes += static_cast<double>(b.bytes_read + b.bytes_written);
-  const double tests = static_cast<double>(p.tests);
+  const double tests = static_cast<double>(r.intersections.tests);
   p.bank_bytes_per_test = tests > 0 ? bank_bytes / tests : 0;
   p.pci_bytes_per_test = tests > 0 ? static_cast<double>(r.board.pci.bytes_to_board + r.board.pci.bytes_to_host) / tests : 0;
-  p.tests_per_second = r.simulated_seconds > 0 ? tests / r.simulated_seconds : 0;
+  p.tests_per_second = r.simulated_seconds > 0 ? static_cast<double>(p.tests) / r.simulated_seconds : 0;
   p.meets_constraints = true;
   return p;
 }
@@ -252,13 +285,19 @@ struct Width {
   WidthFidelity fidelity;
 };
 
-// Every width's own solve, and its fidelity against one double-precision solve (fidelity.h).
-// Without `measure`, the widths' own solves only (their error not measured).
-std::map<int, Width> solve_widths(const Workload& w, BitExactVisibility visibility, const Scene& scene, const std::set<int>& bits,
-                                  int steps, bool measure, DesignSearchResult& r, const Progress& progress) {
+// A width and the fix it is solved with: what one solve (and its designs' recording) is of.
+using WidthKey = std::tuple<int, int, int, int>;  // bits, offset_lsb, neighbour_rings, coordinate_bits
+WidthKey width_key(int bits, const SegmentFixOptions& f) { return {bits, f.offset_lsb, f.neighbour_rings, f.coordinate_bits}; }
+WidthKey width_key(const DesignConfig& d) { return width_key(d.config.bits, d.fixes); }
+
+// Every width's own solve (with its fix), and its fidelity against one double-precision solve
+// (fidelity.h). Without `measure`, the widths' own solves only (their error not measured).
+std::map<WidthKey, Width> solve_widths(const Workload& w, BitExactVisibility visibility, const Scene& scene,
+                                       const std::map<WidthKey, SegmentFixOptions>& keys, int steps, bool measure,
+                                       DesignSearchResult& r, const Progress& progress) {
   const SolverOptions solver = solver_options(w, steps);
   std::vector<Arithmetic> arithmetics;
-  for (int b : bits) arithmetics.push_back({choice_name(visibility), b});
+  for (const auto& [key, fix] : keys) arithmetics.push_back({choice_name(visibility), std::get<0>(key), fix});
   FidelityOptions options;
   options.progress = progress;
   FidelityResult measured;
@@ -269,9 +308,9 @@ std::map<int, Width> solve_widths(const Workload& w, BitExactVisibility visibili
     std::vector<RecordedRun> runs = solve_arithmetics(scene, solver, arithmetics, options);
     for (std::size_t i = 0; i < runs.size(); ++i) measured.rows.push_back({arithmetics[i], std::move(runs[i]), {}, {}});
   }
-  std::map<int, Width> out;
+  std::map<WidthKey, Width> out;
   for (ArithmeticFidelity& f : measured.rows) {
-    Width& width = out[f.arithmetic.bits];
+    Width& width = out[width_key(f.arithmetic.bits, f.arithmetic.fixes)];
     width.functional = std::move(f.run);
     width.solver = solver;
     width.solver.fixed_steps = width.functional.result.steps;  // to convergence: replay what was solved
@@ -280,6 +319,7 @@ std::map<int, Width> solve_widths(const Workload& w, BitExactVisibility visibili
           std::max<std::uint64_t>(width.max_segments, width.functional.recording.segments(static_cast<std::size_t>(i)));
     WidthFidelity& fid = width.fidelity;
     fid.bits = f.arithmetic.bits;
+    fid.fixes = f.arithmetic.fixes;
     fid.steps = width.functional.result.steps;
     if (!measure) continue;
     fid.relative_rmse = f.error.relative_rmse();
@@ -320,54 +360,60 @@ DesignSearchResult search_designs(const Workload& workload, BitExactVisibility v
   r.faces = scene.faces.size();
   r.patches = scene.patches.size();
   const int steps = steps_to_solve(workload, r.faces, r.patches);
-  std::set<int> bits_solved = {15};  // the reference's
+  std::map<WidthKey, SegmentFixOptions> solved = {{width_key(15, {}), {}}};  // the reference's
   for (const DesignCandidate& c : candidates)
-    if (c.check.validity == Validity::ok) bits_solved.insert(c.design.config.bits);
+    if (c.check.validity == Validity::ok) solved[width_key(c.design)] = c.design.fixes;
+  std::set<int> bits_solved;
+  for (const auto& [key, fix] : solved) bits_solved.insert(std::get<0>(key));
+  const bool any_fix = solved.size() > bits_solved.size();
   progress("solving at " + std::to_string(bits_solved.size()) + (bits_solved.size() == 1 ? " width" : " widths") +
+           (any_fix ? " (" + std::to_string(solved.size()) + " with their fixes)" : std::string()) +
            (space.measure_fidelity ? " and in double precision" : ""));
-  std::map<int, Width> widths = solve_widths(workload, visibility, scene, bits_solved, steps, space.measure_fidelity, r, progress);
-  r.steps = widths.at(15).solver.fixed_steps;
+  std::map<WidthKey, Width> widths = solve_widths(workload, visibility, scene, solved, steps, space.measure_fidelity, r, progress);
+  const WidthKey key15 = width_key(15, {});
+  r.steps = widths.at(key15).solver.fixed_steps;
   std::vector<TimingCase> cases;
   std::vector<std::size_t> index(candidates.size(), ~std::size_t{0});
-  for (const auto& [bits, w] : widths) {
+  for (const auto& [key, w] : widths) {
     std::vector<DesignCandidate> at;
     std::vector<std::size_t> where;
     for (std::size_t i = 0; i < candidates.size(); ++i)
-      if (candidates[i].design.config.bits == bits) at.push_back(candidates[i]), where.push_back(i);
+      if (width_key(candidates[i].design) == key) at.push_back(candidates[i]), where.push_back(i);
     DesignCases dc = design_cases(at, scene, w.solver, w.functional.recording, w.max_segments, exhaustive);
     for (std::size_t j = 0; j < at.size(); ++j)
       if (dc.index[j] != ~std::size_t{0}) index[where[j]] = cases.size() + dc.index[j];
     for (TimingCase& t : dc.cases) cases.push_back(std::move(t));
   }
-  const Width& w15 = widths.at(15);
+  const Width& w15 = widths.at(key15);
   DesignCandidate reference{paper_two_lane_design(checker), {}, false};
   reference.check = checker.check(reference.design.config);
   DesignCases ref = design_cases({reference}, scene, w15.solver, w15.functional.recording, w15.max_segments, true);
   const std::size_t ref_case = cases.size();
   cases.push_back(ref.cases.at(0));
   // Software alone at every width: the host testing every segment of that width's own solve.
-  std::map<int, std::size_t> software_case;
-  for (const auto& [bits, w] : widths) {
+  std::map<WidthKey, std::size_t> software_case;
+  for (const auto& [key, w] : widths) {
     TimingCase software;
-    software.label = "software-" + std::to_string(bits);
+    software.label = "software-" + std::to_string(std::get<0>(key)) +
+                     (w.fidelity.fixes.any() ? " (" + describe(w.fidelity.fixes) + ")" : std::string());
     software.scene = &scene;
     software.solver = w.solver;
     software.recording = &w.functional.recording;
     software.software = true;
     software.host = space.host;
     software.host_profile = checker.host(reference.design.config);
-    software_case[bits] = cases.size();
+    software_case[key] = cases.size();
     cases.push_back(std::move(software));
   }
   progress("simulating " + std::to_string(cases.size()) + " systems");
   const std::vector<TimingOutcome> outcomes = run_timing_study(cases);
-  for (auto& [bits, w] : widths) {
-    w.fidelity.software_seconds = outcomes[software_case.at(bits)].simulated_seconds;
+  for (auto& [key, w] : widths) {
+    w.fidelity.software_seconds = outcomes[software_case.at(key)].simulated_seconds;
     r.widths.push_back(w.fidelity);
   }
   for (std::size_t i = 0; i < candidates.size(); ++i)
     if (index[i] != ~std::size_t{0}) {
-      const Width& w = widths.at(candidates[i].design.config.bits);
+      const Width& w = widths.at(width_key(candidates[i].design));
       r.points.push_back(design_point(candidates[i].design, outcomes[index[i]], w.fidelity.steps));
       r.points.back().profile = *candidates[i].check.options.device_profile;
       r.points.back().fidelity = w.fidelity;

@@ -58,6 +58,13 @@ struct DesignSpace {
   std::vector<Multipliers> multipliers = {Multipliers::block, Multipliers::slice};
   std::vector<int> cards = {1};
   std::vector<bool> concurrent = {true};
+  // The host-side segment fixes (host_sw/radiosity/segment_fixes.h; `run`'s --offset-lsb,
+  // --neighbour-rings, --coordinate-bits), 0 meaning off: every combination is a fix, searched at every
+  // width (a coordinate width must be below every width searched). Each (width, fix) is solved and
+  // measured on its own.
+  std::vector<int> offset_lsb = {0};
+  std::vector<int> neighbour_rings = {0};
+  std::vector<int> coordinate_bits = {0};
   // Not an axis: where the lanes' slices and block multipliers come from (which lane counts fit).
   pipeline::ResourceSource resources = pipeline::ResourceSource::paper_fit;
   // Not an axis: whether each width's picture is measured against one double-precision solve of the
@@ -84,6 +91,7 @@ struct DesignConstraints {
 // solve of the same workload, with the share of visibility decisions that differ along that solve.
 struct WidthFidelity {
   int bits = 0;
+  SegmentFixOptions fixes;            // the fix the width was solved with (none: any() false)
   int steps = 0;                      // of this width's own solve (what its designs replay)
   double software_seconds = std::numeric_limits<double>::quiet_NaN();
   // NaN: not measured.
@@ -116,7 +124,12 @@ struct DesignConfig {
   board::ResultStore results = board::ResultStore::bank;
   double bank_clock_mhz = 0;
   Multipliers multipliers = Multipliers::block;
+  SegmentFixOptions fixes;          // the host-side fixes (their width config.bits); none by default
 };
+
+// Every fix of the space's fix axes (their cross product, 0 = off) at `bits`, the no-fix first when
+// present. Throws std::invalid_argument naming the option for a coordinate width not below `bits`.
+std::vector<SegmentFixOptions> design_fixes(const DesignSpace& space, int bits);
 
 struct DesignCandidate {
   DesignConfig design;
@@ -134,8 +147,8 @@ struct DesignPoint {
   DesignConfig design;
   SweepRow row;  // simulated seconds, energy, watts, bound columns (sweep_row.h)
   DesignBound bound;
-  std::uint64_t tests = 0;
-  double bank_bytes_per_test = 0;  // every bank's bytes read and written / ray-face tests
+  std::uint64_t tests = 0;         // the lanes' and the host's own (re-tests), as run's visibility_tests
+  double bank_bytes_per_test = 0;  // every bank's bytes read and written / the lanes' ray-face tests
   double pci_bytes_per_test = 0;   // both directions
   double tests_per_second = 0;     // over the whole run
   WidthFidelity fidelity;           // of the design's width: steps, software time, error
@@ -204,7 +217,8 @@ DesignSearchResult search_designs(const Workload& workload, BitExactVisibility v
 // peak), the front, the best design and the paper's two-lane design as simulated.
 Roofline design_roofline(const DesignSearchResult& result, double paper_software_rate);
 
-// "virtex4-sx55, 6 lanes, 20 banks at 100 MHz, results on chip, 15-bit, block multipliers, 1 card, concurrent".
+// "virtex4-sx55, 6 lanes, 20 banks at 100 MHz, results on chip, 15-bit, block multipliers, 1 card, concurrent",
+// with ", offset 2 LSB + neighbours (ring 1)" when the design has fixes.
 std::string describe(const DesignConfig& design);
 
 }  // namespace rc

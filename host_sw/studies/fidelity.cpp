@@ -1,10 +1,13 @@
 #include "host_sw/studies/fidelity.h"
 
+#include "host_sw/radiosity/segment_fix_names.h"
+
 #include <algorithm>
 #include <atomic>
 #include <exception>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 
 #include "host_sw/radiosity/jobs.h"
 #include "host_sw/radiosity/worker_pool.h"
@@ -15,7 +18,19 @@ namespace rc {
 
 bool Arithmetic::is_float() const { return pipeline::names_float_format(backend); }
 
-std::string Arithmetic::label() const { return is_float() ? backend : "fixed:" + std::to_string(bits); }
+Arithmetic Arithmetic::fixed(int bits, SegmentFixOptions fixes) {
+  if (fixes.any()) fixes.bits = bits;
+  return {"fast", bits, fixes};
+}
+
+std::string Arithmetic::label() const {
+  if (is_float()) return backend;
+  std::string l = "fixed:" + std::to_string(bits);
+  if (fixes.offset_lsb != 0) l += "+offset:" + std::to_string(fixes.offset_lsb);
+  if (fixes.neighbour_rings != 0) l += "+rings:" + std::to_string(fixes.neighbour_rings);
+  if (fixes.coordinate_bits != 0) l += "+coordinates:" + std::to_string(fixes.coordinate_bits);
+  return l;
+}
 
 namespace {
 
@@ -172,9 +187,44 @@ class FanOutComparingVisibility : public VisibilityBackend {
 
 unsigned resolved_jobs(const FidelityOptions& o) { return o.jobs ? o.jobs : jobs(); }
 
-// Each arithmetic's backend once, so that a bad one is refused before any work.
+// Each arithmetic's backend once, so that a bad one is refused before any work; its fixes too (on no
+// faces: the fixer's checks of the options alone).
 void check_arithmetics(const std::vector<Arithmetic>& arithmetics) {
-  for (const Arithmetic& a : arithmetics) make_software_visibility(a.backend, a.bits, 1);
+  for (const Arithmetic& a : arithmetics) {
+    make_software_visibility(a.backend, a.bits, 1);
+    if (!a.fixes.any()) continue;
+    if (a.is_float()) throw std::invalid_argument(a.backend + ": the segment fixes act on the fixed-point pipeline's grid, not on a float format");
+    if (a.fixes.bits != a.bits)
+      throw std::invalid_argument(a.label() + ": the fixes' width (" + std::to_string(a.fixes.bits) + ") is not the arithmetic's");
+    SegmentFixer({}, FaceSheets{}, a.fixes);
+  }
+}
+
+// An arithmetic's answer as a shadow of the reference: its functional answer, with its fixes around it.
+class ShadowAnswer : public VisibilityBackend {
+ public:
+  explicit ShadowAnswer(const Arithmetic& a) : inner_(make_functional_answer(a.backend, a.bits, 1)) {
+    if (a.fixes.any()) fixed_ = std::make_unique<FixedSegmentsVisibility>(*inner_, a.fixes);
+  }
+  std::string name() const override { return answer().name(); }
+  void submit(const SegmentBatch& batch) override { answer().submit(batch); }
+  void collect(std::vector<std::uint8_t>& blocked) override { answer().collect(blocked); }
+  std::uint64_t tests_performed() const override { return answer().tests_performed(); }
+  bool runs_on_host() const override { return answer().runs_on_host(); }
+
+ private:
+  void load_triangles(const std::vector<Triangle>& faces) override { answer().load_faces(faces, sheets()); }
+  VisibilityBackend& answer() const { return fixed_ ? static_cast<VisibilityBackend&>(*fixed_) : *inner_; }
+
+  std::unique_ptr<VisibilityBackend> inner_;
+  std::unique_ptr<FixedSegmentsVisibility> fixed_;
+};
+
+// The solver options of an arithmetic's own solve: the caller's, with the arithmetic's fixes when it has any.
+SolverOptions arithmetic_solver(const SolverOptions& solver, const Arithmetic& a) {
+  SolverOptions s = solver;
+  if (a.fixes.any()) s.fixes = a.fixes;
+  return s;
 }
 
 }  // namespace
@@ -184,7 +234,7 @@ ReferenceDecisions solve_reference(const Scene& scene, const SolverOptions& solv
   check_arithmetics(arithmetics);
   SerialProgress progress(options.progress);
   std::vector<std::unique_ptr<VisibilityBackend>> shadows;
-  for (const Arithmetic& a : arithmetics) shadows.push_back(make_functional_answer(a.backend, a.bits, 1));
+  for (const Arithmetic& a : arithmetics) shadows.push_back(std::make_unique<ShadowAnswer>(a));
   const int workers = static_cast<int>(resolved_jobs(options));
   FanOutComparingVisibility fan_out(std::move(shadows), workers);
   ProgressiveRadiosity radiosity(scene, fan_out, solver);
@@ -214,7 +264,7 @@ std::vector<RecordedRun> solve_arithmetics(const Scene& scene, const SolverOptio
     for (std::size_t i; (i = next.fetch_add(1)) < n;) {
       try {
         const Arithmetic& a = arithmetics[i];
-        out[i] = record_functional_run(scene, solver, a.backend, a.bits, threads);
+        out[i] = record_functional_run(scene, arithmetic_solver(solver, a), a.backend, a.bits, threads);
         progress("solved " + a.label() + " (" + std::to_string(done.fetch_add(1) + 1) + " of " + std::to_string(n) + ")");
       } catch (...) {
         std::lock_guard<std::mutex> lock(error_mutex);

@@ -30,14 +30,21 @@
 namespace rc {
 
 // One arithmetic of the pipeline: a fixed-point width or a floating-point format.
+// With `fixes` (segment_fixes.h; fixed point only, their width `bits`), the arithmetic is the pipeline
+// with those host-side fixes around it: its own solve applies them (SolverOptions::fixes) and its
+// decisions along the reference's trajectory are the fixed answers (FixedSegmentsVisibility).
 struct Arithmetic {
   std::string backend = "fast";  // "fast" (fixed point at `bits`) or "float:E,M"
   int bits = 0;                  // fractional bits of fixed point; 0 for a float format
+  SegmentFixOptions fixes;       // none by default; else fixes.bits == bits
 
-  static Arithmetic fixed(int bits) { return {"fast", bits}; }
-  static Arithmetic floating(const std::string& format) { return {format, 0}; }
+  static Arithmetic fixed(int bits) { return {"fast", bits, {}}; }
+  static Arithmetic floating(const std::string& format) { return {format, 0, {}}; }
+  // Fixed point at `bits` with `fixes` (their width set to `bits`).
+  static Arithmetic fixed(int bits, SegmentFixOptions fixes);
   bool is_float() const;
-  std::string label() const;  // "fixed:15", "float:5,10"
+  // "fixed:15", "float:5,10"; with fixes "fixed:15+offset:2+rings:1+coordinates:11".
+  std::string label() const;
 };
 
 // Visibility decisions of one arithmetic against double precision on the segments the solver needs.

@@ -22,12 +22,28 @@ RecordedRun record_functional_run(const Scene& scene, const SolverOptions& solve
                                   int threads) {
   RecordedRun run;
   auto answer = make_functional_answer(backend, bits, threads);
-  RecordingVisibility recorder(*answer, run.recording);
-  ProgressiveRadiosity radiosity(scene, recorder, solver);
+  // With fixes the recording keeps the answers after them (the neighbour rule's) and each step's host
+  // re-tests, which a timing replay charges (work_replay.h): the fixes wrap the answer below the
+  // recorder instead of inside the solver, the same answers (FixedSegmentsVisibility's promise).
+  std::unique_ptr<FixedSegmentsVisibility> fixed;
+  SolverOptions options = solver;
+  if (solver.fixes.any()) {
+    fixed = std::make_unique<FixedSegmentsVisibility>(*answer, solver.fixes);
+    options.fixes = {};
+  }
+  VisibilityBackend& answered = fixed ? static_cast<VisibilityBackend&>(*fixed) : *answer;
+  std::function<std::uint64_t()> host_tests;
+  if (fixed) host_tests = [&fixed] { return fixed->fixer() ? fixed->fixer()->tests_performed() : 0; };
+  RecordingVisibility recorder(answered, run.recording, host_tests);
+  ProgressiveRadiosity radiosity(scene, recorder, options);
   radiosity.on_progress([&](const StepProgress& p) {
     if (run.convergence_step == 0 && p.convergence_reached >= solver.convergence) run.convergence_step = p.step;
   });
   run.result = radiosity.run();
+  if (fixed && fixed->fixer()) {
+    run.result.fix_tests = fixed->fixer()->tests_performed();
+    run.result.fix_cleared = fixed->fixer()->segments_cleared();
+  }
   return run;
 }
 

@@ -25,7 +25,7 @@ std::uint64_t brute_force_tests(const SegmentBatch& batch, std::size_t faces, co
 }
 
 void VisibilityRecording::add_step(const std::vector<std::uint8_t>& blocked, const std::vector<std::uint8_t>& needed,
-                                   int source_face, std::uint64_t brute_force_tests) {
+                                   int source_face, std::uint64_t brute_force_tests, std::uint64_t host_tests) {
   if (!needed.empty() && needed.size() != blocked.size()) {
     throw std::invalid_argument("a step has " + std::to_string(blocked.size()) + " answers but " +
                                 std::to_string(needed.size()) + " needed flags");
@@ -64,6 +64,7 @@ void VisibilityRecording::add_step(const std::vector<std::uint8_t>& blocked, con
   blocked_.push_back(blocked_count);
   source_faces_.push_back(source_face);
   tests_.push_back(brute_force_tests);
+  host_tests_.push_back(host_tests);
   total_ += n;
 }
 
@@ -91,12 +92,13 @@ void RecordingVisibility::submit(const SegmentBatch& batch) {
   source_face_ = batch.source_face;
   needed_ = batch.needed;
   tests_ = brute_force_tests(batch, faces_, sheets());
+  if (host_tests_) host_tests_before_ = host_tests_();
   answer_.submit(batch);
 }
 
 void RecordingVisibility::collect(std::vector<std::uint8_t>& blocked) {
   answer_.collect(blocked);
-  recording_.add_step(blocked, needed_, source_face_, tests_);
+  recording_.add_step(blocked, needed_, source_face_, tests_, host_tests_ ? host_tests_() - host_tests_before_ : 0);
 }
 
 void ReplayVisibility::load_triangles(const std::vector<Triangle>& faces) {

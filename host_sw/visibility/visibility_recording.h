@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -20,14 +21,17 @@ namespace rc {
 class VisibilityRecording {
  public:
   // `needed`: the batch's mask (empty: every segment).
+  // `host_tests`: segment-face tests the host ran besides the backend's (the neighbour rule's re-tests,
+  // SolverOptions::fixes), charged as intersection tests whoever answered.
   void add_step(const std::vector<std::uint8_t>& blocked, const std::vector<std::uint8_t>& needed, int source_face,
-                std::uint64_t brute_force_tests);
+                std::uint64_t brute_force_tests, std::uint64_t host_tests = 0);
   std::size_t steps() const { return sizes_.size(); }
   std::size_t segments(std::size_t step) const { return sizes_[step]; }
   std::size_t needed(std::size_t step) const { return needed_[step]; }
   std::size_t blocked(std::size_t step) const { return blocked_[step]; }  // of the needed ones
   int source_face(std::size_t step) const { return source_faces_[step]; }
   std::uint64_t brute_force_tests(std::size_t step) const { return tests_[step]; }
+  std::uint64_t host_tests(std::size_t step) const { return host_tests_[step]; }
   void step_flags(std::size_t step, std::vector<std::uint8_t>& blocked) const;
   std::uint64_t total_segments() const { return total_; }
 
@@ -35,7 +39,7 @@ class VisibilityRecording {
   std::vector<std::uint64_t> offsets_;  // first bit of each step
   std::vector<std::uint32_t> sizes_, needed_, blocked_;
   std::vector<int> source_faces_;
-  std::vector<std::uint64_t> tests_;
+  std::vector<std::uint64_t> tests_, host_tests_;
   std::vector<std::uint8_t> bits_;
   std::uint64_t total_ = 0;
 };
@@ -43,10 +47,13 @@ class VisibilityRecording {
 // Segment-face tests of a brute-force backend for one batch of a scene with `faces` faces.
 std::uint64_t brute_force_tests(const SegmentBatch& batch, std::size_t faces, const FaceSheets& sheets);
 
+// `host_tests`, when given, counts (cumulatively) the host's own tests inside `answer` (e.g. a
+// FixedSegmentsVisibility's re-tests); each step records what it added.
 class RecordingVisibility : public VisibilityBackend {
  public:
-  RecordingVisibility(VisibilityBackend& answer, VisibilityRecording& recording)
-      : answer_(answer), recording_(recording) {}
+  RecordingVisibility(VisibilityBackend& answer, VisibilityRecording& recording,
+                      std::function<std::uint64_t()> host_tests = nullptr)
+      : answer_(answer), recording_(recording), host_tests_(std::move(host_tests)) {}
   std::string name() const override { return answer_.name(); }
   void load_triangles(const std::vector<Triangle>& faces) override;
   void submit(const SegmentBatch& batch) override;
@@ -57,6 +64,8 @@ class RecordingVisibility : public VisibilityBackend {
  private:
   VisibilityBackend& answer_;
   VisibilityRecording& recording_;
+  std::function<std::uint64_t()> host_tests_;
+  std::uint64_t host_tests_before_ = 0;
   std::size_t faces_ = 0;
   int source_face_ = -1;
   std::vector<std::uint8_t> needed_;

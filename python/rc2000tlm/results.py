@@ -131,7 +131,8 @@ class DesignBound:
 
 class DesignPoint:
     """One simulated design (a point record of design.json, docs/outputs.md): design (its description),
-    device, lanes, banks, bank_clock_mhz, results, bits, multipliers, cards, concurrent, clock_mhz,
+    device, lanes, banks, bank_clock_mhz, results, bits, offset_lsb, neighbour_rings, coordinate_bits (its
+    segment fix, 0 for off), multipliers, cards, concurrent, clock_mhz,
     simulated_seconds, speedup_vs_reference, speedup_vs_software, energy_joules, average_watts, tests,
     tests_per_second, tests_per_second_while_fpga_busy, bank_bytes_per_test, pci_bytes_per_test, steps
     (its width's own solve's), fidelity (a dict: bits, steps, software_seconds, measured, relative_rmse,

@@ -140,7 +140,10 @@ bad = [({"max_banks": 65}, ["--max-banks", "65"]), ({"max_banks": 4}, ["--max-ba
        ({"jobs": 0}, ["--jobs", "0"]), ({"jobs": 513}, ["--jobs", "513"]),
        ({"resources": "yosys"}, ["--resources", "yosys"]), ({"max_error": 0}, ["--max-error", "0"]),
        ({"max_error_max": float("inf")}, ["--max-error-max", "inf"]), ({"fidelity": "maybe"}, ["--fidelity", "maybe"]),
-       ({"max_error": 0.01, "fidelity": False}, ["--max-error", "0.01", "--fidelity", "off"])]
+       ({"max_error": 0.01, "fidelity": False}, ["--max-error", "0.01", "--fidelity", "off"]),
+       # The segment fixes as axes (issue 37): run's limits, a coordinate width at the width searched.
+       ({"coordinate_bits": [0, 15]}, ["--coordinate-bits", "0,15"]), ({"coordinate_bits": 5}, ["--coordinate-bits", "5"]),
+       ({"neighbour_rings": 3}, ["--neighbour-rings", "3"]), ({"offset_lsb": "0,2000000"}, ["--offset-lsb", "0,2000000"])]
 for options, flags in bad:
     given = dict(base, **dict(zip(flags[::2], flags[1::2])))  # the bad values in place of the space's
     done = command(*[x for pair in given.items() for x in pair], "--quiet", "--out", os.path.join(work, "bad"))

@@ -9,6 +9,7 @@
 #include <random>
 #include <set>
 
+#include "host_sw/radiosity/segment_fix_names.h"
 #include "host_sw/studies/design_search.h"
 
 namespace rc::test {
@@ -171,6 +172,49 @@ TEST(DesignSearch, SpaceKeepsToTheConstraintsAndNamesWhatCannotExist) {
   EXPECT_EQ(kinds, (std::set<Validity>{Validity::ok, Validity::does_not_fit, Validity::too_few_banks}));
   // 4 lane counts x banks 5..8 x 2 result places x 2 multiplier kinds, at 15 bits only.
   EXPECT_EQ(all.size(), 4u * 4u * 2u * 2u);
+}
+
+// The fix axes (issue 37): their cross product at each width, no fix first, each design carrying its
+// fix at its width; a coordinate width not below a width searched refused in run's words.
+TEST(DesignSearch, FixAxesAreACrossProductAtEachWidth) {
+  DesignSpace space;
+  space.offset_lsb = {0, 2};
+  space.neighbour_rings = {1, 0};
+  space.coordinate_bits = {0, 11};
+  const std::vector<SegmentFixOptions> fixes = design_fixes(space, 15);
+  ASSERT_EQ(fixes.size(), 8u);
+  EXPECT_FALSE(fixes[0].any());
+  for (std::size_t i = 1; i < fixes.size(); ++i) {
+    EXPECT_TRUE(fixes[i].any());
+    EXPECT_EQ(fixes[i].bits, 15);
+    for (std::size_t j = 0; j < i; ++j) EXPECT_FALSE(fixes[i] == fixes[j]);
+  }
+  const ConfigChecker checker({"xc2v6000"}, "athlon-mp-2600-calibrated");
+  space.lanes = {2};
+  space.banks = {6};
+  space.results = {board::ResultStore::bank};
+  space.multipliers = {Multipliers::block};
+  space.bits = {15, 19};
+  const std::vector<DesignCandidate> all = enumerate_designs(space, DesignConstraints{}, checker);
+  ASSERT_EQ(all.size(), 16u);
+  std::size_t described = 0;
+  for (const DesignCandidate& d : all) {
+    if (!d.design.fixes.any()) continue;
+    EXPECT_EQ(d.design.fixes.bits, d.design.config.bits);
+    const std::string text = describe(d.design);
+    described += !describe(d.design.fixes).empty() && text.find(", " + describe(d.design.fixes)) != std::string::npos;
+  }
+  EXPECT_EQ(described, 14u);  // every fixed design names its fix (2 widths x 7 fixes)
+  space.coordinate_bits = {0, 15};
+  try {
+    enumerate_designs(space, DesignConstraints{}, checker);
+    FAIL() << "coordinate bits at the width accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "--coordinate-bits: must be below --bits (15): the lanes compute at --bits on coordinates of fewer "
+                           "bits, got 15");
+  }
+  space.coordinate_bits = {};
+  EXPECT_THROW(design_fixes(space, 15), std::invalid_argument);
 }
 
 TEST(DesignSearch, PrunedSearchEqualsExhaustiveOnASmallSpace) {

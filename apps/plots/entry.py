@@ -40,6 +40,27 @@ def save(fig, path, **options):
     finally:
         if os.path.exists(temporary):
             os.remove(temporary)
+    _list(path)
+
+
+LISTING = "rc2000sim-outputs.txt"  # apps/outputs.h, kOutputListing
+
+
+def _list(path):
+    """Adds a saved picture to the listing of the command's output folder (RC2000SIM_OUTPUT_FOLDER,
+    set by rc2000sim: apps/outputs.h, Outputs::own_folder), when the picture lies inside it and the
+    command has written its listing: the next command into the folder then removes it unless it
+    draws it again (docs/outputs.md, "Output folders own their files"). One short line appended:
+    the forked copies drawing side by side do not mix their lines."""
+    folder = os.environ.get("RC2000SIM_OUTPUT_FOLDER")
+    if not folder:
+        return
+    listing = os.path.join(folder, LISTING)
+    relative = os.path.relpath(os.path.abspath(path), folder)
+    if relative.startswith("..") or os.path.isabs(relative) or not os.path.isfile(listing):
+        return
+    with open(listing, "a") as f:
+        f.write(f"file {relative}\n")
 
 
 def _die_with_parent():

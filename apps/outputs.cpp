@@ -161,7 +161,10 @@ std::string inside(const std::string& folder, const std::string& path) {
 }
 
 void write_listing(const std::string& folder, const std::string& command, const std::string& set,
-                   const std::vector<std::string>& files) {
+                   std::vector<std::string> files) {
+  // Sorted, as the plot script keeps it (entry.py, _list): the listing does not depend on the order
+  // of writing or of drawing (one machine and merged shards write the same listing).
+  std::sort(files.begin(), files.end());
   std::string text =
       "# rc2000sim outputs: the files the commands that last wrote here wrote; the next command into this folder "
       "removes them unless it writes them again (docs/outputs.md, \"Output folders own their files\")\n";
@@ -204,7 +207,12 @@ void Outputs::write() {
   };
   for (const File& f : files_)
     if (f.failure.empty()) add_mine(f.path);
-  for (const std::string& k : kept_) add_mine(k);
+  // A kept input stays where the earlier listing named it; one it did not name is not this folder's
+  // output (shards in a subfolder with a listing of their own) and is not listed here.
+  for (const std::string& k : kept_) {
+    const std::string relative = inside(folder_, k);
+    if (std::find(earlier.files.begin(), earlier.files.end(), relative) != earlier.files.end()) add_mine(k);
+  }
   const bool adds = !set_.empty() && earlier.set == set_;
   std::vector<std::string> stale, both = mine;
   for (const std::string& f : earlier.files) {

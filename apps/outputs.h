@@ -65,7 +65,7 @@ class Outputs {
   // under the folder are added to the listing as they are saved (apps/plots/entry.py, save()).
   void own_folder(const std::string& folder, const std::string& command, const std::string& set = "");
   // A file of the owned folder this command reads and keeps (sweep merge's shards): not removed, and
-  // listed again.
+  // listed again when the earlier listing named it.
   void keep(const std::string& path);
 
   // Creates each file's folder when its first file is written, and each file atomically, in the

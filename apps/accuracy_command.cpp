@@ -77,6 +77,7 @@ std::string width_rows_csv(const std::vector<WidthResult>& rows, int float_steps
 int run_accuracy(const AccuracyOptions& o) {
   const std::string csv = o.out_dir + "/accuracy.csv", png = o.out_dir + "/accuracy.png";
   Outputs outputs;
+  outputs.own_folder(o.out_dir, "accuracy");
   outputs.expect(csv);
   outputs.expect(png);
   ProgressLine progress(!o.quiet);

@@ -107,6 +107,7 @@ int run_adaptive(const AdaptiveOptions& o) {
   const std::string pictures = o.docs_dir.empty() ? o.out_dir : o.docs_dir + "/adaptive-patches";
   const std::string markdown_path = o.docs_dir + "/adaptive-patches.md";
   Outputs outputs;
+  outputs.own_folder(o.out_dir, "adaptive");
   outputs.expect(csv);
   outputs.expect(pictures + "/reference.png");
   if (!o.docs_dir.empty()) outputs.expect(markdown_path);

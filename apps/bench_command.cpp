@@ -91,6 +91,7 @@ int run_bench(const BenchOptions& o) {
   const std::string pictures = o.docs_dir.empty() ? o.out_dir : o.docs_dir + "/speed-vs-error";
   const std::string markdown_path = o.docs_dir + "/speed-vs-error.md";
   Outputs outputs;
+  outputs.own_folder(o.out_dir, "bench");
   outputs.expect(csv);
   outputs.expect(pictures + "/pareto.png");
   if (!o.docs_dir.empty()) outputs.expect(markdown_path);

@@ -72,6 +72,7 @@ int run_design(const DesignCli& cli) {
   const DesignOptions& o = cli.options;
   Outputs outputs;
   const std::string dir = cli.out_dir;
+  outputs.own_folder(dir, "design");
   for (const char* f : {"/design.json", "/design.csv", "/design.md", "/roofline.csv", "/best-device.json"})
     outputs.expect(dir + f);
   ProgressLine progress(!cli.quiet);

@@ -100,10 +100,16 @@ std::string design_markdown(const DesignDocument& doc) {
      << to_string(r.workload.form_factor) << ". Software alone: " << fmt("%.3f s", r.software_seconds) << " (15 bits).\n\n"
      << width_table(r)
      << "Space: " << r.designs << " designs within at most " << r.max_banks << " banks and at least "
-     << doc.constraints.min_bits << " bits; " << r.infeasible << " cannot exist, " << r.pruned
-     << " pruned (spare banks only: dominated), " << r.points.size() << " simulated.\n\n";
+     << doc.constraints.min_bits << " bits; " << r.infeasible << " cannot exist, "
+     << (r.exhaustive ? std::string("none pruned (--exhaustive)")
+                      : std::to_string(r.pruned) + " pruned (spare banks only: dominated)")
+     << ", " << r.points.size() << " simulated.\n\n";
   if (r.best) md << "**Best:** " << point_line(r.points[*r.best], r) << ".\n\nRun it: `" << run_command(doc, r.points[*r.best], "best-device.json") << "`\n\n";
-  else md << "**Best:** no design meets the constraints.\n\n";
+  else {
+    md << "**Best:** no design meets the constraints.\n\n";
+    for (const std::string& why : why_no_design(r, doc.constraints)) md << "- " << why << "\n";
+    md << "\n";
+  }
   if (r.reference) md << "**The paper's two-lane design** (sec 5.5, concurrent driver): " << point_line(*r.reference, r) << ".\n\n";
   md << "## Pareto front (time, energy, banks, error)\n\n| design | seconds | joules | watts | banks | relative RMSE | bound |\n"
         "|---|---|---|---|---|---|---|\n";
@@ -127,8 +133,9 @@ void print_design(const DesignDocument& doc) {
   const DesignSearchResult& r = doc.result;
   std::printf("rc2000sim design: %s, %zu faces, %zu patches, %d steps (%s)\n", r.device.c_str(), r.faces, r.patches, r.steps,
               r.workload.paper_faithful ? "paper-faithful" : "culled");
-  std::printf("  %zu designs within %u banks: %zu cannot exist, %zu pruned (spare banks), %zu simulated\n", r.designs,
-              r.max_banks, r.infeasible, r.pruned, r.points.size());
+  std::printf("  %zu designs within %u banks: %zu cannot exist, %s, %zu simulated\n", r.designs, r.max_banks, r.infeasible,
+              r.exhaustive ? "none pruned (--exhaustive)" : (std::to_string(r.pruned) + " pruned (spare banks)").c_str(),
+              r.points.size());
   if (r.reference_steps > 0)
     std::printf("  widths against one double-precision solve (%d steps):\n", r.reference_steps);
   else
@@ -142,7 +149,10 @@ void print_design(const DesignDocument& doc) {
                 std::isfinite(doc.constraints.max_error_max) ? fmt("<= %g", doc.constraints.max_error_max).c_str() : "any");
   if (r.best) std::printf("  best: %s\n  run:  %s\n", point_line(r.points[*r.best], r).c_str(),
                           run_command(doc, r.points[*r.best], "best-device.json").c_str());
-  else std::printf("  best: no design meets the constraints\n");
+  else {
+    std::printf("  best: no design meets the constraints\n");
+    for (const std::string& why : why_no_design(r, doc.constraints)) std::printf("        %s\n", why.c_str());
+  }
   if (r.reference) std::printf("  paper's two-lane design: %s\n", point_line(*r.reference, r).c_str());
   std::printf("  Pareto front (time, energy, banks, error):\n");
   for (const DesignPoint& p : r.points)

@@ -57,6 +57,17 @@ class Outputs {
   // moved to `path` with the others.
   void move_in(const std::string& path, const std::string& temporary);
 
+  // The folder this command's outputs live in (its --out; docs/outputs.md, "Output folders own their
+  // files"). write() then lists the files it writes under `folder` in `folder`/rc2000sim-outputs.txt
+  // (kOutputListing), and removes the files an earlier command's listing there names that this
+  // command does not write: never a file no listing names (a user's own). Commands of one `set` (the
+  // shards of one study) add to the listing instead of replacing it. Pictures the plot scripts save
+  // under the folder are added to the listing as they are saved (apps/plots/entry.py, save()).
+  void own_folder(const std::string& folder, const std::string& command, const std::string& set = "");
+  // A file of the owned folder this command reads and keeps (sweep merge's shards): not removed, and
+  // listed again when the earlier listing named it.
+  void keep(const std::string& path);
+
   // Creates each file's folder when its first file is written, and each file atomically, in the
   // order added. Throws OutputsNotWritten at the first failure to write, or after writing the
   // others when a file of add_made could not be made.
@@ -71,9 +82,24 @@ class Outputs {
     std::string temporary;  // move_in: the file to move
     std::string failure;    // add_made: why its bytes could not be made (it is not written)
   };
+  void write_files();
   std::vector<File> files_;
   std::vector<std::string> expected_;  // absolute, normal
+  std::string folder_, command_, set_;  // own_folder()
+  std::vector<std::string> kept_;
 };
+
+// The listing of an output folder's files (Outputs::own_folder).
+inline constexpr const char* kOutputListing = "rc2000sim-outputs.txt";
+
+// What a folder's listing says: the command, its set, the files (relative to the folder). Lines that
+// are not "file <relative path>" inside the folder (an absolute path, "..") are skipped: a listing
+// never reaches outside its folder. A folder without a listing gives an empty one.
+struct OutputListing {
+  std::string command, set;
+  std::vector<std::string> files;
+};
+OutputListing read_output_listing(const std::string& folder);
 
 // A temporary file in the system's temporary folder, removed when it goes out of scope (unless it was
 // moved away): where SystemC writes a VCD while the run simulates.

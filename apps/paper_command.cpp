@@ -279,6 +279,7 @@ int run_paper(const PaperOptions& o) {
   const std::string markdown_path = o.docs_dir + "/paper.md";
   const std::string pictures = o.docs_dir.empty() ? o.out_dir : o.docs_dir + "/paper";
   Outputs outputs;
+  outputs.own_folder(o.out_dir, "paper");
   for (const std::string& p : {json_path, csv_path, o.out_dir + "/roofline.csv", pictures + "/table2.png",
                                pictures + "/table2-intervals.png"})
     outputs.expect(p);

@@ -278,6 +278,39 @@ nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& pre
                         {"face_levels", o.scene.face_levels},
                         {"patch_levels", o.scene.patch_size > 0 ? nlohmann::ordered_json() : nlohmann::ordered_json(o.scene.patch_levels)},
                         {"patch_size", o.scene.patch_size > 0 ? nlohmann::ordered_json(o.scene.patch_size) : nlohmann::ordered_json()}};
+  // Every other option that can change a figure, as used (the profile's value where the option was not
+  // given); null where it does not apply (a software run has no board). Tested by walking `run --help`
+  // (tests/scripts/report_settings_test.sh): an option missing here fails it.
+  const bool board = o.impl == Impl::board;
+  const auto on_board = [&](nlohmann::ordered_json v) { return board ? std::move(v) : nlohmann::ordered_json(); };
+  nlohmann::ordered_json& settings = report["settings"];
+  settings["scene"] = o.scene.file.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(o.scene.file);
+  settings["paper_faithful"] = !o.solver.cull_receivers;
+  settings["image_size"] = o.render.width;
+  settings["offset_lsb"] = o.solver.fixes.offset_lsb;
+  settings["neighbour_rings"] = o.solver.fixes.neighbour_rings;
+  settings["coordinate_bits"] = o.solver.fixes.coordinate_bits;
+  settings["fidelity_sample"] = o.fidelity_sample;
+  settings["fidelity_warn"] = o.fidelity_warn;
+  settings["device"] = on_board(o.board.device);
+  settings["host"] = on_board(o.board.host);
+  settings["lanes"] = on_board(o.board.lanes.value());
+  settings["banks"] = on_board(o.board.banks != 0 || !o.board.device_profile ? o.board.banks : o.board.device_profile->bank_count);
+  settings["concurrent"] = on_board(o.board.concurrent);
+  settings["lanes_impl"] = on_board(choice_name(o.lanes_impl));
+  settings["lanes_compute"] = on_board(o.lanes_compute);
+  settings["resources"] = on_board(choice_name(o.board.resources));
+  if (board && o.board.host_profile) {
+    const DriverModel& driver = o.board.host_profile->driver_model;
+    const CpuSplit split = o.cpu_share.empty() ? driver.cpu_split : parse_cpu_split(o.cpu_share, o.cpu_cores);
+    settings["cpu_share"] = !split.on()                                ? nlohmann::ordered_json()
+                            : split.mode == CpuSplit::Mode::balanced ? nlohmann::ordered_json("balanced")
+                                                                     : nlohmann::ordered_json(split.share);
+    settings["cpu_cores"] = split.on() ? nlohmann::ordered_json(split.cores) : nlohmann::ordered_json();
+    settings["chunk_rays"] = o.board.chunk_rays != 0 ? o.board.chunk_rays : driver.chunk_rays;
+  } else {
+    settings["cpu_share"] = settings["cpu_cores"] = settings["chunk_rays"] = nullptr;
+  }
   report["solver"] = solver_json(out.solver);
   report["solver"]["warnings"] = solver_warnings;
   if (out.board) {
@@ -391,6 +424,7 @@ void check_run_options(const CLI::App& cmd, const RunOptions& o) {
 int run_simulation(const RunOptions& given, const RunHooks& hooks) {
   Outputs outputs;
   if (hooks.write_outputs) {
+    outputs.own_folder(given.out_dir, "run");
     for (const std::string& path : output_paths(given)) outputs.expect(path);  // before any work
   }
   // The profiles, each read once, here, and handed down; the board they make (lanes, banks,

@@ -97,6 +97,7 @@ int run_sweep(const SweepOptions& o, const Study& study) {
     const Shard shard = parse_shard(o.shard);
     const std::string path = shard_path(o.out_dir, shard);
     Outputs outputs;
+    outputs.own_folder(o.out_dir, "sweep --shard", shard_listing_set(study, shard.count));
     outputs.expect(path);
     const ShardResult result = run_study_shard(study, shard, report);
     progress.finish();

@@ -66,7 +66,10 @@ int run_merge(const MergeOptions& o) {
   const StudyResult result = merge_shards(shards, files);
   expect_study_outputs(result.study, o.out_dir);
   std::printf("rc2000sim sweep merge: study %s, %zu shard(s)\n", result.study.name.c_str(), shards.size());
-  write_study(result, o.out_dir, progress);
+  // Merged into the shards' own folder, the shards stay (they are its input) and the folder's listing
+  // keeps them with the merged outputs.
+  const std::string set = shard_listing_set(result.study, shards.front().shard.count);
+  write_study(result, o.out_dir, progress, read_output_listing(o.out_dir).set == set ? set : "", files);
   return 0;
 }
 

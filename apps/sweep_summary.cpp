@@ -15,6 +15,15 @@ std::string name_list_text(const std::vector<std::string>& items) {
 
 namespace {
 
+// "2.05x one lane", or what is missing when the ratio could not be formed (NaN: the group has no
+// one-lane row, the software time was not measured): a summary never prints "nanx".
+std::string times_text(double ratio, const char* against, const char* missing) {
+  if (!std::isfinite(ratio)) return missing;
+  char text[64];
+  std::snprintf(text, sizeof text, "%.2fx %s", ratio, against);
+  return text;
+}
+
 std::string rate_text(double x) {
   char text[32];
   std::snprintf(text, sizeof text, "%.3g", x);
@@ -82,9 +91,11 @@ void print_blocks(const std::vector<SweepRow>& rows, const SweepAxes& axes) {
     }
     if (!unfit.empty()) std::printf("  lanes %s: do not fit the device\n", range_list_text(unfit).c_str());
     if (best) {
-      std::printf("  fastest: %u lanes, %u banks: %.3f s, %.2fx one lane, %.2fx software; bottleneck %s\n",
-                  best->config.lanes, best->config.banks, best->simulated_seconds, best->speedup_vs_one_lane,
-                  best->speedup_vs_software, best->bottleneck.c_str());
+      std::printf("  fastest: %u lanes, %u banks: %.3f s, %s, %s; bottleneck %s\n", best->config.lanes,
+                  best->config.banks, best->simulated_seconds,
+                  times_text(best->speedup_vs_one_lane, "one lane", "no one-lane design in its group to compare").c_str(),
+                  times_text(best->speedup_vs_software, "software", "no software time").c_str(),
+                  best->bottleneck.c_str());
       if (!best->stream_bound.empty()) {
         std::printf("           FPGA stream bound by %s at %.3g tests/s%s\n", best->stream_bound.c_str(),
                     best->stream_bound_tests_per_second,

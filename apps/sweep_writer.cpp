@@ -31,10 +31,17 @@ void expect_study_outputs(const Study& s, const std::string& out) {
   if (s.scenes.size() > 1) outputs.expect(out + "/study.csv");
 }
 
-void write_study(const StudyResult& r, const std::string& out, const ProgressLine& clock) {
+std::string shard_listing_set(const Study& study, unsigned count) {
+  return "shards of study " + study.name + " split " + std::to_string(count) + " ways";
+}
+
+void write_study(const StudyResult& r, const std::string& out, const ProgressLine& clock, const std::string& listing_set,
+                 const std::vector<std::string>& keep) {
   const std::vector<SweptFit> fits = swept_fits(r.study);
   const std::vector<std::string> extra = extra_columns(r.study.axes);
   Outputs outputs;
+  outputs.own_folder(out, "sweep", listing_set);
+  for (const std::string& k : keep) outputs.keep(k);
   for (std::size_t i = 0; i < r.scenes.size(); ++i) {
     const std::string dir = scene_dir(r.study, i, out);
     std::ostringstream csv;

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 
@@ -34,6 +35,15 @@ std::optional<double> parse_finite(std::string_view text) {
   const double value = std::strtod(copy.c_str(), &end);
   if (end != copy.c_str() + copy.size() || !std::isfinite(value)) return std::nullopt;
   return value;
+}
+
+std::string shortest_text(double value) {
+  char text[40];
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, value);
+    if (!std::isfinite(value) || std::strtod(text, nullptr) == value) break;
+  }
+  return text;
 }
 
 }  // namespace rc::io

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace rc::io {
@@ -16,5 +17,10 @@ std::optional<std::uint64_t> parse_unsigned(std::string_view text);
 std::optional<std::int64_t> parse_integer(std::string_view text);
 // A decimal or scientific number (as strtod reads it, all of the text), finite.
 std::optional<double> parse_finite(std::string_view text);
+
+// The inverse, for numbers people read and paste back (printed commands: docs/outputs.md): the
+// shortest %g text that reads back as exactly `value` (0.2, not 0.20000000000000001; 1e-09; at
+// most 17 digits). "nan", "inf" and "-inf" for the values that are not finite.
+std::string shortest_text(double value);
 
 }  // namespace rc::io

@@ -40,6 +40,45 @@ def save(fig, path, **options):
     finally:
         if os.path.exists(temporary):
             os.remove(temporary)
+    _list(path)
+
+
+LISTING = "rc2000sim-outputs.txt"  # apps/outputs.h, kOutputListing
+
+
+def _list(path):
+    """Adds a saved picture to the listing of the command's output folder (RC2000SIM_OUTPUT_FOLDER,
+    set by rc2000sim: apps/outputs.h, Outputs::own_folder), when the picture lies inside it and the
+    command has written its listing: the next command into the folder then removes it unless it
+    draws it again (docs/outputs.md, "Output folders own their files"). The file lines stay sorted
+    (as rc2000sim writes them), so the listing does not depend on the order the pictures were drawn
+    in; the forked copies drawing side by side take turns (a lock on the folder) and each rewrite
+    is atomic."""
+    folder = os.environ.get("RC2000SIM_OUTPUT_FOLDER")
+    if not folder:
+        return
+    listing = os.path.join(folder, LISTING)
+    relative = os.path.relpath(os.path.abspath(path), folder)
+    if relative.startswith("..") or os.path.isabs(relative) or not os.path.isfile(listing):
+        return
+    import fcntl
+    fd = os.open(folder, os.O_RDONLY)
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX)
+        with open(listing, encoding="utf-8", errors="surrogateescape") as f:
+            lines = f.read().splitlines()
+        head = [line for line in lines if not line.startswith("file ")]
+        files = sorted({line for line in lines if line.startswith("file ")} | {f"file {relative}"})
+        temporary = f"{listing}.partial-{os.getpid()}"
+        try:
+            with open(temporary, "w", encoding="utf-8", errors="surrogateescape") as f:
+                f.write("\n".join(head + files) + "\n")
+            os.replace(temporary, listing)
+        finally:
+            if os.path.exists(temporary):
+                os.remove(temporary)
+    finally:
+        os.close(fd)
 
 
 def _die_with_parent():

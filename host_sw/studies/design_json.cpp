@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "host_sw/studies/workload_json.h"
+#include "io/parse_number.h"
 
 namespace rc {
 
@@ -13,18 +14,13 @@ using Json = nlohmann::ordered_json;
 
 Json finite_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
 
-std::string fmt(const char* format, double v) {
-  char text[64];
-  std::snprintf(text, sizeof text, format, v);
-  return text;
-}
-
 std::string scene_arguments(const SceneOptions& s) {
   std::string a;
   if (!s.file.empty()) a += " --scene " + s.file;
   if (s.face_target > 0) a += " --faces " + std::to_string(s.face_target);
   if (s.face_levels > 0) a += " --face-levels " + std::to_string(s.face_levels);
-  if (s.patch_size > 0) a += " --patch-size " + fmt("%.17g", s.patch_size);
+  // Numbers of a printed command in their shortest round-trip text: `--patch-size 0.2`, the value given.
+  if (s.patch_size > 0) a += " --patch-size " + io::shortest_text(s.patch_size);
   else a += " --patch-levels " + std::to_string(s.patch_levels);
   return a;
 }
@@ -154,6 +150,7 @@ Json design_json(const DesignDocument& doc) {
     j["best"]["run_command"] = run_command(doc, r.points[*r.best], "best-device.json");
   } else {
     j["best"] = nullptr;
+    j["no_best_because"] = why_no_design(r, doc.constraints);  // only when no design meets the constraints
   }
   if (r.reference) j["reference"] = point_json(*r.reference, r);
   Json front = Json::array();

@@ -201,14 +201,62 @@ void mark_front(std::vector<DesignPoint>& points) {
   }
 }
 
+std::vector<DesignCap> design_caps(const DesignConstraints& c) {
+  std::vector<DesignCap> caps;
+  auto add = [&](const char* option, const char* unit, double limit, double (*figure)(const DesignPoint&),
+                 const char* unknown) {
+    if (!std::isinf(limit)) caps.push_back({option, unit, limit, figure, unknown});
+  };
+  add("--max-energy", "J", c.max_energy_joules, [](const DesignPoint& p) { return p.row.energy_joules; },
+      "no energy figure: the profile has no energy table");
+  add("--max-power", "W", c.max_watts, [](const DesignPoint& p) { return p.row.average_watts; },
+      "no power figure: the profile has no energy table");
+  add("--max-error", "relative RMSE", c.max_error, [](const DesignPoint& p) { return p.fidelity.relative_rmse; },
+      "error not measured");
+  add("--max-error-max", "relative max error", c.max_error_max,
+      [](const DesignPoint& p) { return p.fidelity.relative_max; }, "error not measured");
+  return caps;
+}
+
+std::vector<std::string> why_no_design(const DesignSearchResult& r, const DesignConstraints& c) {
+  std::vector<std::string> why;
+  if (r.points.empty()) {
+    why.push_back("no design was simulated: " + std::to_string(r.infeasible) + " of " + std::to_string(r.designs) +
+                  " cannot exist" + (r.pruned ? ", " + std::to_string(r.pruned) + " pruned" : std::string()));
+    return why;
+  }
+  bool each_met = true;
+  for (const DesignCap& cap : design_caps(c)) {
+    std::size_t met = 0, unknown = 0;
+    double least = std::numeric_limits<double>::infinity();
+    for (const DesignPoint& p : r.points) {
+      const double v = cap.figure(p);
+      if (std::isnan(v)) ++unknown;
+      else least = std::min(least, v);
+      met += v <= cap.limit ? 1 : 0;
+    }
+    each_met = each_met && met > 0;
+    char limit[48], best[48];
+    std::snprintf(limit, sizeof limit, "%g", cap.limit);
+    std::snprintf(best, sizeof best, "%.4g", least);
+    std::string line = std::string(cap.option) + " " + limit + " (" + cap.unit + "): met by " + std::to_string(met) + " of " +
+                       std::to_string(r.points.size()) + " simulated designs";
+    if (unknown > 0) line += "; " + std::to_string(unknown) + " with " + cap.unknown;
+    if (met == 0 && std::isfinite(least)) line += "; the least is " + std::string(best);
+    why.push_back(line);
+  }
+  if (each_met && !why.empty())
+    why.push_back("each limit is met by some design but no design meets them all: the limits contradict each other "
+                  "for this workload; relax one");
+  return why;
+}
+
 void apply_caps(std::vector<DesignPoint>& points, const DesignConstraints& c) {
+  const std::vector<DesignCap> caps = design_caps(c);
   for (DesignPoint& p : points) {
-    const bool energy_ok = std::isinf(c.max_energy_joules) || p.row.energy_joules <= c.max_energy_joules;
-    const bool power_ok = std::isinf(c.max_watts) || p.row.average_watts <= c.max_watts;
-    // Not measured (NaN) fails an error cap that is set, as NaN fails any comparison.
-    const bool rmse_ok = std::isinf(c.max_error) || p.fidelity.relative_rmse <= c.max_error;
-    const bool max_ok = std::isinf(c.max_error_max) || p.fidelity.relative_max <= c.max_error_max;
-    p.meets_constraints = energy_ok && power_ok && rmse_ok && max_ok;  // a NaN energy or power fails a cap that is set
+    p.meets_constraints = true;
+    // Not measured or not known (NaN) fails a cap that is set, as NaN fails any comparison.
+    for (const DesignCap& cap : caps) p.meets_constraints = p.meets_constraints && cap.figure(p) <= cap.limit;
   }
 }
 
@@ -231,11 +279,17 @@ DesignConfig paper_two_lane_design(const ConfigChecker& checker) {
   return d;
 }
 
+// Whether the search leaves a candidate out unsimulated because a cheaper design dominates it: one
+// rule for what is simulated (design_cases) and what the outputs count as pruned (note_infeasible).
+static bool is_pruned(const DesignCandidate& c, bool exhaustive) {
+  return c.check.validity == Validity::ok && c.spare_banks && !exhaustive;
+}
+
 DesignCases design_cases(const std::vector<DesignCandidate>& candidates, const Scene& scene, const SolverOptions& solver,
                          const VisibilityRecording& recording, std::uint64_t max_segments, bool exhaustive) {
   DesignCases out;
   for (const DesignCandidate& c : candidates) {
-    if (c.check.validity != Validity::ok || (c.spare_banks && !exhaustive)) {
+    if (c.check.validity != Validity::ok || is_pruned(c, exhaustive)) {
       out.index.push_back(~std::size_t{0});
       continue;
     }
@@ -330,11 +384,12 @@ std::map<WidthKey, Width> solve_widths(const Workload& w, BitExactVisibility vis
   return out;
 }
 
-void note_infeasible(DesignSearchResult& r, const std::vector<DesignCandidate>& candidates) {
+void note_infeasible(DesignSearchResult& r, const std::vector<DesignCandidate>& candidates, bool exhaustive) {
   std::set<Validity> seen;
+  r.exhaustive = exhaustive;
   for (const DesignCandidate& c : candidates) {
     if (c.check.validity == Validity::ok) {
-      r.pruned += c.spare_banks ? 1 : 0;
+      r.pruned += is_pruned(c, exhaustive) ? 1 : 0;
       continue;
     }
     ++r.infeasible;
@@ -354,7 +409,7 @@ DesignSearchResult search_designs(const Workload& workload, BitExactVisibility v
   r.max_banks = constraints.max_banks ? constraints.max_banks : checker.device(space.device).bank_count;
   const std::vector<DesignCandidate> candidates = enumerate_designs(space, constraints, checker);
   r.designs = candidates.size();
-  note_infeasible(r, candidates);
+  note_infeasible(r, candidates, exhaustive);
   progress("preparing the scene");
   const Scene scene = prepare_scene(workload.scene).scene;
   r.faces = scene.faces.size();

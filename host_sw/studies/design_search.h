@@ -85,6 +85,19 @@ struct DesignConstraints {
   double max_error_max = std::numeric_limits<double>::infinity();
 };
 
+struct DesignPoint;
+// A limit of DesignConstraints that is set, as one rule: the option that sets it, its unit, the
+// limit and the point's figure it bounds (NaN: not known, which fails the limit) and what a NaN means.
+// apply_caps and why_no_design both read this one list.
+struct DesignCap {
+  const char* option;
+  const char* unit;
+  double limit;
+  double (*figure)(const DesignPoint&);
+  const char* unknown;
+};
+std::vector<DesignCap> design_caps(const DesignConstraints& constraints);
+
 // One width's own solve of the workload and what its arithmetic does to the picture
 // (host_sw/studies/fidelity.h): the steps it took, the software-only time of that solve (the host
 // testing every segment, simulated), and its patch radiosity's error against ONE double-precision
@@ -177,6 +190,7 @@ struct DesignSearchResult {
   int reference_steps = 0;  // of the double-precision solve the widths' errors are measured against
   std::vector<WidthFidelity> widths;  // every width solved, ascending
   std::size_t designs = 0, infeasible = 0, pruned = 0;  // of the space within the constraints
+  bool exhaustive = false;                              // --exhaustive: nothing pruned, every feasible design simulated
   std::vector<std::string> infeasible_reasons;          // one per reason kind, an example each
   std::vector<DesignPoint> points;                      // simulated, in enumeration order
   std::optional<std::size_t> best;
@@ -210,6 +224,12 @@ double speedup_over_software(const DesignPoint& p);
 DesignSearchResult search_designs(const Workload& workload, BitExactVisibility visibility, const DesignSpace& space,
                                   const DesignConstraints& constraints, bool exhaustive,
                                   const std::function<void(const std::string&)>& progress);
+
+// When no design meets the constraints, why (docs/design.md, "When no design meets the
+// constraints"): per limit set, how many simulated designs meet it, how many have no figure for it
+// (no energy table, error not measured) and the least value; then whether the limits contradict
+// each other (each met by some design, none by all). Empty when no limit is set.
+std::vector<std::string> why_no_design(const DesignSearchResult& result, const DesignConstraints& constraints);
 
 // The roofline of a search's device: the best design's roofs (its lanes and clock, its banks and bank
 // clock, PCI, and the flat PCI and host roofs of its run), the paper's rule for the device (sec 5.6:

@@ -55,6 +55,10 @@ nlohmann::ordered_json shard_json(const ShardResult& s) {
   j["tool"] = s.tool;
   j["shard"] = {{"index", s.shard.index}, {"count", s.shard.count}};
   j["groups_in_study"] = s.groups_in_study;
+  nlohmann::ordered_json prints = nlohmann::ordered_json::array();
+  for (const ProfileFingerprint& p : s.profiles)
+    prints.push_back({{"kind", p.kind}, {"name", p.name}, {"fingerprint", p.fingerprint}});
+  j["profiles"] = prints;
   j["study"] = study_json(s.study);
   nlohmann::ordered_json scenes = nlohmann::ordered_json::array();
   for (const auto& [index, scene] : s.scenes) {
@@ -81,6 +85,11 @@ ShardResult shard_from_json(const nlohmann::ordered_json& j, const std::string& 
     s.shard.index = j.at("shard").at("index").get<unsigned>();
     s.shard.count = j.at("shard").at("count").get<unsigned>();
     s.groups_in_study = j.at("groups_in_study").get<std::size_t>();
+    if (j.contains("profiles")) {  // shards of builds before issue 39 have none (merge then compares counts)
+      for (const auto& p : j.at("profiles"))
+        s.profiles.push_back({p.at("kind").get<std::string>(), p.at("name").get<std::string>(),
+                              p.at("fingerprint").get<std::string>()});
+    }
     s.study = study_from_json(j.at("study"));
     for (const auto& scene : j.at("scenes")) {
       s.scenes[scene.at("index").get<std::size_t>()] = {scene.at("name").get<std::string>(),

@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <optional>
+#include <cstdint>
 #include <cstdio>
 #include <set>
 #include <stdexcept>
+#include <tuple>
 
 #include "io/parse_number.h"
+#include "profiles/profile_json.h"
 #include "host_sw/studies/paper_workload.h"
 #include "host_sw/studies/config_checker.h"
 #include "host_sw/studies/shard_json.h"
@@ -233,6 +236,24 @@ std::vector<unsigned> deal_groups(const std::vector<double>& costs, unsigned sha
   return owner;
 }
 
+std::vector<ProfileFingerprint> profile_fingerprints(const Study& study) {
+  std::vector<ProfileFingerprint> prints;
+  for (const auto& [kind, folder, names] : {std::tuple<const char*, const char*, const std::vector<std::string>&>{
+                                                "device", "devices", study.axes.devices},
+                                            {"host", "hosts", study.axes.hosts}}) {
+    for (const std::string& name : names) {
+      // The parsed document, so a change of layout (spaces, key order is kept) alone changes nothing.
+      const std::string text = profiles::read_json_file(profiles::resolve_profile_path(name, folder)).dump();
+      std::uint64_t hash = 14695981039346656037ull;  // FNV-1a, 64 bits
+      for (const unsigned char c : text) hash = (hash ^ c) * 1099511628211ull;
+      char hex[17];
+      std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+      prints.push_back({kind, name, std::string("fnv1a64:") + hex});
+    }
+  }
+  return prints;
+}
+
 ShardResult run_study_shard(const Study& study, const Shard& shard, const Progress& progress) {
   check_study(study);
   const ConfigChecker checker(study.axes.devices, study.axes.hosts, study.fixed, study_name(study), study.resources);
@@ -240,6 +261,7 @@ ShardResult run_study_shard(const Study& study, const Shard& shard, const Progre
   ShardResult result;
   result.study = study;
   result.tool = tool_version();
+  result.profiles = profile_fingerprints(study);
   result.shard = shard;
   // Every shard prepares every scene: the deal needs their sizes (loading is not solving).
   std::vector<Scene> scenes;
@@ -292,6 +314,22 @@ void check_same_run(const std::vector<ShardResult>& shards, const std::vector<st
     if (shards[i].tool != shards[0].tool) {
       throw std::invalid_argument(origins[i] + " was made by " + shards[i].tool + ", " + origins[0] + " by " +
                                   shards[0].tool + "; re-run the shards with one build");
+    }
+    for (const ProfileFingerprint& p : shards[i].profiles) {
+      for (const ProfileFingerprint& q : shards[0].profiles) {
+        if (p.kind == q.kind && p.name == q.name && p.fingerprint != q.fingerprint) {
+          throw std::invalid_argument(p.kind + " profile '" + p.name + "' held other contents when " + origins[i] +
+                                      " ran (" + p.fingerprint + ") than when " + origins[0] + " ran (" + q.fingerprint +
+                                      "): the shards did not simulate the same boards; re-run them with one copy of "
+                                      "the profile");
+        }
+      }
+    }
+    if (shards[i].profiles.size() != shards[0].profiles.size()) {
+      throw std::invalid_argument(origins[i] + " records " + std::to_string(shards[i].profiles.size()) +
+                                  " profile fingerprint(s), " + origins[0] + " " +
+                                  std::to_string(shards[0].profiles.size()) +
+                                  ": re-run the shards with one build");
     }
     if (shards[i].shard.count != shards[0].shard.count) {
       throw std::invalid_argument(origins[i] + " is shard " + shards[i].shard.text() + ", " + origins[0] + " is shard " +

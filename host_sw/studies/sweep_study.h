@@ -49,9 +49,21 @@ struct GroupResult {
   std::map<std::size_t, SweepRow> rows;                   // by index in the plan (enumerate_configs)
 };
 
+// What a profile the study names held when a shard ran (docs/studies.md, "Shards"): merge refuses
+// shards whose profiles of one name held different contents.
+struct ProfileFingerprint {
+  std::string kind;         // "device" or "host"
+  std::string name;         // as the study names it
+  std::string fingerprint;  // "fnv1a64:<16 hex digits>" of the parsed profile (energy table included), compact JSON
+};
+
+// Every device and host profile the study names, in its order.
+std::vector<ProfileFingerprint> profile_fingerprints(const Study& study);
+
 struct ShardResult {
   Study study;
   std::string tool;  // tool_version() of the run
+  std::vector<ProfileFingerprint> profiles;  // profile_fingerprints() when it ran
   Shard shard;
   std::size_t groups_in_study = 0;
   std::map<std::size_t, SceneSummary> scenes;  // the scenes of this shard's groups

@@ -17,8 +17,8 @@ SystemC elaborates once per process, so every simulation runs in a worker proces
 `rc2000sim --jobs` (jobs=; rc2000tlm.workers); errors come back as ValueError or RuntimeError with the
 command line's message. README, "Use it from Python".
 """
-from .results import DesignBound, DesignPoint, DesignResult, PaperResult, RunResult, SweepResult, load
+from .results import DesignBound, DesignPoint, DesignResult, OutputError, PaperResult, RunResult, SweepResult, load
 from .workers import design, design_defaults, paper, run, run_many, run_options, study, sweep, sweep_options
 
-__all__ = ["DesignBound", "DesignPoint", "DesignResult", "PaperResult", "RunResult", "SweepResult", "design",
+__all__ = ["DesignBound", "DesignPoint", "DesignResult", "OutputError", "PaperResult", "RunResult", "SweepResult", "design",
            "design_defaults", "load", "paper", "run", "run_many", "run_options", "study", "sweep", "sweep_options"]

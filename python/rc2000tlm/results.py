@@ -4,6 +4,7 @@ reads what rc2000sim or these wrote."""
 import csv
 import json
 import os
+import re
 
 
 def _dataframe(records, columns=None):
@@ -97,20 +98,140 @@ class SweepResult:
         return "SweepResult(study=%r, %d rows)" % (self.study, len(self.rows))
 
 
-def _number(text):
-    if text == "":
+class OutputError(ValueError):
+    """An output file that cannot be read back as rc2000sim writes it (damaged, cut short, edited):
+    the message names the file and the line or key."""
+
+
+LISTING = "rc2000sim-outputs.txt"  # apps/outputs.h, kOutputListing
+
+
+def _listed(folder):
+    """The files the folder's listing names (docs/outputs.md, "Output folders own their files"): the
+    outputs of the command that last wrote there; None for a folder without a listing (written by an
+    older rc2000sim, or by hand), where every file counts."""
+    path = os.path.join(folder, LISTING)
+    if not os.path.isfile(path):
         return None
-    for kind in (int, float):
-        try:
-            return kind(text)
-        except ValueError:
-            pass
-    return text
+    with open(path, encoding="utf-8", errors="replace") as f:
+        return {os.path.normpath(line[5:].rstrip("\n")) for line in f if line.startswith("file ")}
 
 
-def _read_rows(path):
-    with open(path, newline="") as f:
-        return [{k: _number(v) for k, v in row.items()} for row in csv.DictReader(f)]
+def _present(folder, name, listed):
+    return os.path.isfile(os.path.join(folder, name)) and (listed is None or os.path.normpath(name) in listed)
+
+
+def _read_json(path):
+    """A JSON output, or OutputError naming the file and the line and column of the damage."""
+    try:
+        with open(path, encoding="utf-8") as f:
+            return json.load(f)
+    except json.JSONDecodeError as e:
+        raise OutputError("%s: line %d, column %d: not valid JSON: %s" % (path, e.lineno, e.colno, e.msg)) from None
+    except UnicodeDecodeError as e:
+        raise OutputError("%s: not UTF-8 (byte 0x%02X at offset %d)" % (path, e.object[e.start], e.start)) from None
+
+
+def _object(path, data, schema=None):
+    """`data` read from `path` must be a JSON object (of `schema`, when given)."""
+    if not isinstance(data, dict):
+        raise OutputError("%s: holds a JSON %s, not the object rc2000sim writes" % (path, type(data).__name__))
+    if schema is not None and data.get("schema") != schema:
+        raise OutputError("%s: key \"schema\" is %r, not %r" % (path, data.get("schema"), schema))
+    return data
+
+
+def _read_csv(path):
+    """(header, rows of text) of a CSV output; OutputError naming the file and line of a row whose
+    number of fields is not the header's, or of text the CSV reader refuses."""
+    try:
+        with open(path, newline="", encoding="utf-8") as f:
+            reader = csv.reader(f)
+            header = next(reader, None)
+            if not header:
+                raise OutputError("%s: empty, no header line" % path)
+            rows = []
+            for fields in reader:
+                if len(fields) != len(header):
+                    raise OutputError("%s: line %d: %d fields where the header has %d" %
+                                      (path, reader.line_num, len(fields), len(header)))
+                rows.append(fields)
+            return header, rows
+    except csv.Error as e:
+        raise OutputError("%s: line %d: %s" % (path, reader.line_num, e)) from None
+    except UnicodeDecodeError as e:
+        raise OutputError("%s: not UTF-8 (byte 0x%02X at offset %d)" % (path, e.object[e.start], e.start)) from None
+
+
+_INTEGER = re.compile(r"-?(0|[1-9][0-9]*)\Z")
+_DECIMAL = re.compile(r"-?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?\Z")
+
+
+def _number(text):
+    """A number as rc2000sim writes one in a CSV (%d, %.10g: no leading zeros, no "nan" or "inf": an
+    empty cell is a missing figure), else None."""
+    if _INTEGER.match(text):
+        return int(text)
+    if _DECIMAL.match(text) and not re.match(r"-?0[0-9]", text):
+        return float(text)
+    return None
+
+
+def _typed_rows(path):
+    """A CSV without the writer's JSON beside it: a column is numbers only when every cell of it is a
+    number as rc2000sim writes them ("007", "1e3x" and a column of names keep their text: a name that
+    looks like a number stays a name when any other cell of its column is text); empty cells are None."""
+    header, rows = _read_csv(path)
+    numeric = [all(r[i] == "" or _number(r[i]) is not None for r in rows) and any(r[i] != "" for r in rows)
+               for i in range(len(header))]
+    return [{k: (None if v == "" else _number(v) if numeric[i] else v) for i, (k, v) in enumerate(zip(header, r))}
+            for r in rows]
+
+
+def _json_rows(folder, csv_path):
+    """The rows of `folder`'s sweep.json (the writer's own types: a label stays text, a number a
+    number), in the columns of the CSV beside it; OutputError when the two disagree."""
+    path = os.path.join(folder, "sweep.json")
+    data = _object(path, _read_json(path), "rc2000sim.sweep/1")
+    rows = data.get("rows")
+    if not isinstance(rows, list) or not all(isinstance(r, dict) for r in rows):
+        raise OutputError("%s: key \"rows\" is not a list of row objects" % path)
+    header, text_rows = _read_csv(csv_path)
+    if len(text_rows) != len(rows):
+        raise OutputError("%s has %d rows, %s %d: one of them was changed or cut short" %
+                          (csv_path, len(text_rows), path, len(rows)))
+    return [{k: r.get(k) for k in header} if set(header) <= set(r) else r for r in rows]
+
+
+def _sweep_rows(folder, listed):
+    """A one-scene sweep's rows: sweep.json's when listed beside sweep.csv, else the CSV's by column."""
+    csv_path = os.path.join(folder, "sweep.csv")
+    if _present(folder, "sweep.json", listed):
+        return _json_rows(folder, csv_path)
+    return _typed_rows(csv_path)
+
+
+def _study_rows(folder, listed):
+    """A study of several scenes: each scene's sweep.json (folder/<scene>/) with a first column scene,
+    in study.csv's order; study.csv by column where a scene's JSON is missing."""
+    path = os.path.join(folder, "study.csv")
+    header, text_rows = _read_csv(path)
+    if not header or header[0] != "scene":
+        raise OutputError("%s: line 1: the first column is %r, not scene" % (path, header[0] if header else ""))
+    scenes = []
+    for r in text_rows:
+        if r[0] not in scenes:
+            scenes.append(r[0])
+    if not all(_present(folder, os.path.join(s, "sweep.json"), listed) and
+               _present(folder, os.path.join(s, "sweep.csv"), listed) for s in scenes):
+        return _typed_rows(path)
+    rows = []
+    for s in scenes:
+        for r in _json_rows(os.path.join(folder, s), os.path.join(folder, s, "sweep.csv")):
+            rows.append(dict({"scene": s}, **r))
+    if len(rows) != len(text_rows):
+        raise OutputError("%s has %d rows, its scenes' sweep.json %d" % (path, len(text_rows), len(rows)))
+    return rows
 
 
 class DesignBound:
@@ -205,37 +326,44 @@ class DesignResult:
                                                           self.best.design if self.best else None)
 
 
-def _load_design(folder):
-    with open(os.path.join(folder, "design.json")) as f:
-        document = json.load(f)
+def _load_design(folder, listed):
+    path = os.path.join(folder, "design.json")
+    document = _object(path, _read_json(path), "rc2000sim.design/1")
     best_device = None
-    profile = os.path.join(folder, "best-device.json")
-    if os.path.isfile(profile):
-        with open(profile) as f:
-            best_device = json.load(f)
-    return DesignResult(document, best_device)
+    if _present(folder, "best-device.json", listed):
+        profile = os.path.join(folder, "best-device.json")
+        best_device = _object(profile, _read_json(profile))
+    try:
+        return DesignResult(document, best_device)
+    except (AttributeError, KeyError, TypeError) as e:
+        raise OutputError("%s: not a design document as rc2000sim writes it (%s: %s)" %
+                          (path, type(e).__name__, e)) from None
 
 
 def load(folder):
     """Outputs already written: a study over several scenes (study.csv), a sweep (sweep.csv), a design
-    search (design.json) or a run (report.json); FileNotFoundError naming the folder and the files
-    looked for otherwise."""
+    search (design.json) or a run (report.json). Only the files the folder's listing names count
+    (rc2000sim-outputs.txt: the last command's outputs; docs/outputs.md), so a file an earlier command
+    left is never read. Values keep the writer's types (a sweep's rows from its sweep.json: a scene
+    named "007" stays text). FileNotFoundError naming the folder and the files looked for when there
+    are none; OutputError (a ValueError) naming the file and the line or key of a damaged one."""
+    listed = _listed(folder)
     for name in ("study.csv", "sweep.csv"):
-        path = os.path.join(folder, name)
-        if os.path.isfile(path):
+        if _present(folder, name, listed):
             study = ""
-            record = os.path.join(folder, "study.json")
-            if os.path.isfile(record):
-                study = _find(json.load(open(record)), "name") or ""
-            return SweepResult(_read_rows(path), study)
-    if os.path.isfile(os.path.join(folder, "design.json")):
-        return _load_design(folder)
-    report = os.path.join(folder, "report.json")
-    if os.path.isfile(report):
-        with open(report) as f:
-            return RunResult(json.load(f))
-    raise FileNotFoundError("%s: no study.csv, sweep.csv, design.json or report.json (rc2000tlm.load reads "
-                            "rc2000sim's outputs)" % folder)
+            if _present(folder, "study.json", listed):
+                record = os.path.join(folder, "study.json")
+                study = _find(_object(record, _read_json(record)), "name") or ""
+            rows = _study_rows(folder, listed) if name == "study.csv" else _sweep_rows(folder, listed)
+            return SweepResult(rows, study)
+    if _present(folder, "design.json", listed):
+        return _load_design(folder, listed)
+    if _present(folder, "report.json", listed):
+        path = os.path.join(folder, "report.json")
+        return RunResult(_object(path, _read_json(path), "rc2000sim.run/1"))
+    raise FileNotFoundError("%s: no study.csv, sweep.csv, design.json or report.json%s (rc2000tlm.load reads "
+                            "rc2000sim's outputs)" % (folder, "" if listed is None else " among the files its " +
+                                                      LISTING + " lists"))
 
 
 class PaperResult:

@@ -7,6 +7,7 @@
 #include <unistd.h>
 #include <functional>
 #include <filesystem>
+#include <limits>
 #include <fstream>
 #include <string>
 
@@ -119,6 +120,18 @@ TEST(ParseNumber, FiniteRefusesPrefixesInfinitiesAndNan) {
   EXPECT_EQ(parse_finite("1.5e3"), 1500.0);
   EXPECT_EQ(parse_finite("-0.25"), -0.25);
   for (const char* bad : {"", " 1", "1 ", "1.5x", "nan", "inf", "-inf", "1e999"}) EXPECT_FALSE(parse_finite(bad)) << bad;
+}
+
+// Printed commands carry numbers people paste back: the shortest text that reads back exactly.
+TEST(ParseNumber, ShortestTextReadsBackExactly) {
+  EXPECT_EQ(shortest_text(0.2), "0.2");
+  EXPECT_EQ(shortest_text(1e-9), "1e-09");
+  EXPECT_EQ(shortest_text(66.667), "66.667");
+  EXPECT_EQ(shortest_text(3), "3");
+  EXPECT_EQ(shortest_text(0.1 + 0.2), "0.30000000000000004");
+  for (double v : {0.1, 1.0 / 3, 2.5e-300, 1.7976931348623157e308, -7.25})
+    EXPECT_EQ(parse_finite(shortest_text(v)), v) << shortest_text(v);
+  EXPECT_EQ(shortest_text(std::numeric_limits<double>::infinity()), "inf");
 }
 
 }  // namespace

@@ -154,6 +154,26 @@ TEST(SweepStudy, MergeRefusesMissingDuplicatedAndForeignShards) {
   EXPECT_THROW(merge_shards({}, {}), std::invalid_argument);
 }
 
+// Shards carry a fingerprint of each profile's contents (issue 39): shards run with other contents of
+// a profile of one name are not one study; merge names the profile and both shards. The records
+// round-trip, and a shard's own fingerprints are those of the files it names.
+TEST(SweepStudy, MergeRefusesShardsWhoseProfilesHeldOtherContents) {
+  const Study s = small_study();
+  ShardResult a = made_up_shard(s, 0, 2), b = made_up_shard(s, 1, 2);
+  a.profiles = b.profiles = profile_fingerprints(s);
+  ASSERT_EQ(a.profiles.size(), s.axes.devices.size() + s.axes.hosts.size());
+  EXPECT_EQ(a.profiles.front().kind, "device");
+  EXPECT_EQ(a.profiles.front().fingerprint.rfind("fnv1a64:", 0), 0u) << a.profiles.front().fingerprint;
+  EXPECT_NO_THROW(merge_shards({a, b}, {"a.json", "b.json"}));
+  EXPECT_EQ(shard_from_json(shard_json(a), "a.json").profiles.back().fingerprint, a.profiles.back().fingerprint);
+  b.profiles.front().fingerprint = "fnv1a64:0000000000000000";
+  const std::string e = error_of({a, b});
+  EXPECT_NE(e.find("device profile '" + s.axes.devices.front() + "' held other contents when"), std::string::npos) << e;
+  b.profiles = a.profiles;
+  b.profiles.pop_back();
+  EXPECT_NE(error_of({a, b}).find("profile fingerprint"), std::string::npos);
+}
+
 // A form-factor axis (docs/studies.md): the one scene is solved once per form factor, each to its own
 // convergence, as a direct solve with that form factor converges, and every configuration replays
 // its own scene's steps.

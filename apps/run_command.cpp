@@ -117,6 +117,7 @@ BoardRunOptions board_options(const RunOptions& o) {
   board.trace = !o.trace_path.empty();
   board.bits = o.bits;
   if (!o.cpu_share.empty()) board.cpu_split = parse_cpu_split(o.cpu_share, o.cpu_cores);
+  board.ray_split = board::parse_ray_split(o.ray_split);
   if (float_arith(o)) board.float_format = o.arith.float_format();  // float lanes
   if (o.lanes_impl == LanesImpl::rtl) {  // the Verilated RTL in the cycle-level wrapper; it computes
     board.model = board::WrapperModel::cycle;
@@ -201,8 +202,9 @@ void print_board_summary(const RunReport& b) {
   }
   std::printf("  FPGA         busy %.6f s (overlapping host compute %.6f s), %.4g intersections/s while busy\n",
               t.fpga_busy, t.overlap, b.intersections.per_second_while_fpga_busy);
-  std::printf("  board        %s at %.3f MHz, %u banks, %llu passes, %.4g MB over PCI\n", b.board.device.profile.c_str(),
-              b.board.device.clock_hz / 1e6, b.board.device.banks,
+  std::printf("  board        %s at %.3f MHz, %u banks (rays split: %s), %llu passes, %.4g MB over PCI\n",
+              b.board.device.profile.c_str(), b.board.device.clock_hz / 1e6, b.board.device.banks,
+              b.board.layout.ray_split.c_str(),
               static_cast<unsigned long long>(b.board.batching.passes),
               (static_cast<double>(b.board.pci.bytes_to_board) + static_cast<double>(b.board.pci.bytes_to_host)) / 1e6);
   // What bounds the run and its FPGA stream, and the bandwidth each resource gave (docs/board.md,
@@ -317,7 +319,8 @@ pipeline::Arithmetic parse_arith_option(const std::string& text) {
 void check_run_options(const CLI::App& cmd, const RunOptions& o) {
   if (o.impl != Impl::board) {
     refuse_given(cmd, {"--device", "--lanes", "--banks", "--concurrent", "--cards", "--card-split", "--card-bus",
-                       "--lanes-compute", "--lanes-impl", "--resources", "--host", "--trace", "--trace-steps", "--vcd", "--cpu-share", "--cpu-cores", "--chunk-rays"},
+                       "--lanes-compute", "--lanes-impl", "--resources", "--host", "--trace", "--trace-steps", "--vcd", "--cpu-share", "--cpu-cores", "--chunk-rays",
+                       "--ray-split"},
                  "applies to --impl board only (the simulated RC2000); this run answers visibility in software");
   } else {
     refuse_given(cmd, {"--visibility"}, "applies to --impl software only: with --impl board the board's lanes answer "
@@ -461,6 +464,12 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--banks", b.banks, "Board: memory banks, 1..64 (default: the profile's)")->check(CLI::Range(1, 64))
       ->capture_default_str();
   cmd->add_flag("--concurrent", b.concurrent, "Board: form factors while the FPGA works (paper sec 4.3)");
+  cmd->add_option("--ray-split", options->ray_split,
+                  "Board: how a pass's rays are divided over the ray groups: limit (by what limits each group's "
+                  "stream, result bank included) or nominal (the paper's: by the lanes' nominal rates); docs/board.md, "
+                  "Ray split")
+      ->check(CLI::IsMember({"limit", "nominal"}))
+      ->capture_default_str();
   cmd->add_option("--chunk-rays", b.chunk_rays,
                   "Board: the pipelined driver, rays per chunk (chunks go to alternating halves of the banks, so "
                   "transfers overlap the passes; docs/board.md, Pipelined passes); default: the host profile's, "

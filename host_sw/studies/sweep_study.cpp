@@ -235,7 +235,8 @@ std::vector<unsigned> deal_groups(const std::vector<double>& costs, unsigned sha
 
 ShardResult run_study_shard(const Study& study, const Shard& shard, const Progress& progress) {
   check_study(study);
-  const ConfigChecker checker(study.axes.devices, study.axes.hosts, study.fixed, study_name(study), study.resources);
+  const ConfigChecker checker(study.axes.devices, study.axes.hosts, study.fixed, study_name(study), study.resources,
+                              study.ray_split);
   const std::vector<Planned> plan = plan_configs(study.axes, checker);
   ShardResult result;
   result.study = study;

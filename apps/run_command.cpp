@@ -169,7 +169,7 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   out.visibility_tests = r.report.intersections.tests + r.report.work[static_cast<int>(HostWork::IntersectionTest)].count;
   out.board = std::move(r.report);
   // The calibration's error applies to the profile it was fitted as (docs/calibration.md).
-  if (board.host == BoardRunOptions{}.host && !board.host_profile) {
+  if (board.host == BoardRunOptions{}.host) {
     out.interval = timing_interval(out.board->simulated_seconds, scene.faces.size(), scene.patches.size());
     for (const std::string& w : out.interval->warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   } else {

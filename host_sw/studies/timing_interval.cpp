@@ -69,7 +69,7 @@ TimingInterval timing_interval(double seconds, std::size_t faces, std::size_t pa
 
 std::string TimingInterval::text() const {
   char line[256];
-  std::snprintf(line, sizeof line, "%.6g s in [%.6g, %.6g] (the calibration's left-out error %+.1f%%..%+.1f%%, %zu cells)",
+  std::snprintf(line, sizeof line, "%.6g s in [%.6g, %.6g] (the calibration's left-out error %+.1f%%..%+.1f%%, %zu left-out errors)",
                 seconds, low_seconds, high_seconds, 100.0 * error_low, 100.0 * error_high, errors);
   return line;
 }

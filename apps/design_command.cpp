@@ -26,6 +26,7 @@ namespace {
 struct DesignCli {
   DesignOptions options;
   int steps = 0;  // --steps as given (design_steps makes it the workload's fixed count)
+  std::string ray_split = "limit";  // --ray-split (options.space.ray_split)
   bool quiet = false;
   std::string out_dir = "out/design";
   std::string command = "rc2000sim design";  // as given, for design.md
@@ -49,6 +50,7 @@ void check_and_resolve(const CLI::App& cmd, DesignCli& cli) {
   DesignOptions& o = cli.options;
   try {
     if (given(cmd, "--steps")) o.workload.steps = design_steps(cli.steps);
+    o.space.ray_split = board::parse_ray_split(cli.ray_split);
     // A scene file as it is, solved with run's form factor, unless told otherwise (workload.h).
     take_scene_as_given(o.workload.scene, [&](const std::string& option) { return given(cmd, option); });
     if (!o.workload.scene.file.empty() && !given(cmd, "--form-factor")) o.workload.form_factor = kSceneFileFormFactor;
@@ -122,6 +124,11 @@ void add_design_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--multipliers", o->multipliers, "block (block multipliers while they last), slice")
       ->capture_default_str();
   add_resources_option(*cmd, o->space.resources);
+  cmd->add_option("--ray-split", cli->ray_split,
+                  "How each pass divides its rays over the ray groups: limit (by what limits each group's stream, "
+                  "result bank included) or nominal (the paper's lane rates); docs/board.md, Ray split")
+      ->check(CLI::IsMember({"limit", "nominal"}))
+      ->capture_default_str();
   cmd->add_option("--cards", o->cards, "Card counts, e.g. 1-4")->capture_default_str();
   cmd->add_option("--concurrent", o->concurrent, "Driver: on (sec 4.3), off, both")->capture_default_str();
   cmd->add_option("--offset-lsb", o->offset_lsb,

@@ -136,6 +136,8 @@ void print_design(const DesignDocument& doc) {
   std::printf("  %zu designs within %u banks: %zu cannot exist, %s, %zu simulated\n", r.designs, r.max_banks, r.infeasible,
               r.exhaustive ? "none pruned (--exhaustive)" : (std::to_string(r.pruned) + " pruned (spare banks)").c_str(),
               r.points.size());
+  std::printf("  rays split by %s (docs/board.md, Ray split)\n",
+              doc.space.ray_split == board::RaySplitRule::limit ? "the limiting resource" : "nominal lane rate (the paper's)");
   if (r.reference_steps > 0)
     std::printf("  widths against one double-precision solve (%d steps):\n", r.reference_steps);
   else

@@ -14,6 +14,7 @@
 #include "apps/progress.h"
 #include "apps/report.h"
 #include "io/parse_number.h"
+#include "host_sw/studies/timing_interval.h"
 #include "host_sw/platform/run_bounds.h"
 #include "host_sw/radiosity/png_writer.h"
 #include "host_sw/studies/workload.h"
@@ -37,6 +38,10 @@ struct RunOutcome {
   SolverResult solver;
   std::string visibility_name;
   std::uint64_t visibility_tests = 0;
+  // Board runs on the calibrated host: the simulated time's interval and the workload's range warnings
+  // (host_sw/studies/timing_interval.h); empty elsewhere, with why in interval_absent.
+  std::optional<TimingInterval> interval;
+  std::string interval_absent;
   std::array<std::uint64_t, kHostWorkKinds> work_counts{};  // software runs
   std::optional<RunReport> board;                           // board runs
   std::optional<LanesThatFit> lanes_that_fit;               // board runs: sec 5.6 on the run's device
@@ -120,6 +125,7 @@ BoardRunOptions board_options(const RunOptions& o) {
   board.trace = !o.trace_path.empty();
   board.bits = o.bits;
   if (!o.cpu_share.empty()) board.cpu_split = parse_cpu_split(o.cpu_share, o.cpu_cores);
+  board.ray_split = board::parse_ray_split(o.ray_split);
   if (float_arith(o)) board.float_format = o.arith.float_format();  // float lanes
   if (o.lanes_impl == LanesImpl::rtl) {  // the Verilated RTL in the cycle-level wrapper; it computes
     board.model = board::WrapperModel::cycle;
@@ -167,6 +173,14 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   // The board's tests and, with a CPU/FPGA split, the host's (0 otherwise).
   out.visibility_tests = r.report.intersections.tests + r.report.work[static_cast<int>(HostWork::IntersectionTest)].count;
   out.board = std::move(r.report);
+  // The calibration's error applies to the profile it was fitted as (docs/calibration.md).
+  if (board.host == BoardRunOptions{}.host) {
+    out.interval = timing_interval(out.board->simulated_seconds, scene.faces.size(), scene.patches.size());
+    for (const std::string& w : out.interval->warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  } else {
+    out.interval_absent = "host " + board.host + " is not the calibrated profile " + BoardRunOptions{}.host +
+                          ": the calibration's error does not apply";
+  }
   if (r.trace) out.trace_json = trace_json(*r.trace);
   out.lanes_that_fit = std::move(fit);
   return out;
@@ -200,14 +214,15 @@ void print_board_summary(const RunReport& b) {
   }
   const WorkTally& software_tests = b.work[static_cast<int>(HostWork::IntersectionTest)];
   if (software_tests.count > 0) {  // the CPU/FPGA split (docs/board.md)
-    std::printf("  cpu split    %llu segment-face tests in software (%.6f s), %llu on the board\n",
+    std::printf("  cpu split    %llu software segment-face tests (%.6f s), %llu board segment-face pairs streamed\n",
                 static_cast<unsigned long long>(software_tests.count), software_tests.seconds,
                 static_cast<unsigned long long>(b.intersections.tests));
   }
   std::printf("  FPGA         busy %.6f s (overlapping host compute %.6f s), %.4g intersections/s while busy\n",
               t.fpga_busy, t.overlap, b.intersections.per_second_while_fpga_busy);
-  std::printf("  board        %s at %.3f MHz, %u banks, %llu passes, %.4g MB over PCI\n", b.board.device.profile.c_str(),
-              b.board.device.clock_hz / 1e6, b.board.device.banks,
+  std::printf("  board        %s at %.3f MHz, %u banks (rays split: %s), %llu passes, %.4g MB over PCI\n",
+              b.board.device.profile.c_str(), b.board.device.clock_hz / 1e6, b.board.device.banks,
+              b.board.layout.ray_split.c_str(),
               static_cast<unsigned long long>(b.board.batching.passes),
               (static_cast<double>(b.board.pci.bytes_to_board) + static_cast<double>(b.board.pci.bytes_to_host)) / 1e6);
   // What bounds the run and its FPGA stream, and the bandwidth each resource gave (docs/board.md,
@@ -234,15 +249,30 @@ void print_summary(const RunOptions& o, const Scene& scene, const RunOutcome& ou
   std::printf("  scene        %zu faces, %zu patches\n", scene.faces.size(), scene.patches.size());
   std::printf("  solver       %d steps, %.2f%% converged (target %.2f%%), form factor %s\n", r.steps,
               100.0 * r.convergence_reached, 100.0 * o.solver.convergence, to_string(o.solver.form_factor).c_str());
-  std::printf("  visibility   %s: %llu segments (%llu blocked), %llu segment-face tests\n", out.visibility_name.c_str(),
-              static_cast<unsigned long long>(r.segments), static_cast<unsigned long long>(r.blocked_segments),
-              static_cast<unsigned long long>(out.visibility_tests));
+  // Each count under its own name (docs/outputs.md, "Counts of visibility work"): software tests are
+  // the pairs a software backend tested, board pairs the pairs the lanes streamed.
+  if (out.board) {
+    std::printf("  visibility   %s: %llu segments (%llu blocked), %llu board segment-face pairs streamed\n",
+                out.visibility_name.c_str(), static_cast<unsigned long long>(r.segments),
+                static_cast<unsigned long long>(r.blocked_segments),
+                static_cast<unsigned long long>(out.board->intersections.tests));
+  } else {
+    std::printf("  visibility   %s: %llu segments (%llu blocked), %llu software segment-face tests\n",
+                out.visibility_name.c_str(), static_cast<unsigned long long>(r.segments),
+                static_cast<unsigned long long>(r.blocked_segments), static_cast<unsigned long long>(out.visibility_tests));
+  }
   if (out.fidelity) std::printf("  fidelity     %s\n", fidelity_line(*out.fidelity).c_str());
   if (const std::string fixes = segment_fix_summary(o.solver.fixes, r); !fixes.empty()) std::printf("  fixes        %s\n", fixes.c_str());
   std::printf("  energy       emitted %.6g = absorbed %.6g + escaping %.6g + unshot %.6g\n", r.energy.emitted,
               r.energy.absorbed, r.energy.escaping, r.energy.unshot);
   if (out.board) {
     print_board_summary(*out.board);
+    if (out.interval) {
+      std::printf("  interval     %s\n", out.interval->text().c_str());
+      for (const std::string& w : out.interval->warnings) std::printf("  warning      %s\n", w.c_str());
+    } else {
+      std::printf("  interval     none: %s\n", out.interval_absent.c_str());
+    }
     std::printf("  sec 5.6      lanes that fit on %s\n", lanes_that_fit_line(*out.lanes_that_fit).c_str());
   }
   std::printf("  wall time    %.2f s\n", wall);
@@ -258,7 +288,21 @@ nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& pre
   report["faces"] = scene.faces.size();
   report["patches"] = scene.patches.size();
   report["steps"] = out.solver.steps;
-  if (out.board) report["simulated_seconds"] = out.board->simulated_seconds;
+  if (out.board) {
+    report["simulated_seconds"] = out.board->simulated_seconds;
+    if (out.interval) {
+      report["timing_interval"] = {{"low_seconds", out.interval->low_seconds},
+                                   {"high_seconds", out.interval->high_seconds},
+                                   {"left_out_error_low", out.interval->error_low},
+                                   {"left_out_error_high", out.interval->error_high},
+                                   {"left_out_errors", out.interval->errors},
+                                   {"how", "simulated seconds / (1 + e), e the 10% and 90% quantiles of the calibration's "
+                                           "left-out relative errors (docs/calibration.md, Prediction intervals)"},
+                                   {"range_warnings", out.interval->warnings}};
+    } else {
+      report["timing_interval"] = {{"none", out.interval_absent}};
+    }
+  }
   report["scene"] = scene_json(scene, o.scene.file.empty() ? "embedded:cornell-box" : o.scene.file, prepared.warnings);
   report["workload"] = workload_json(run_workload(o.scene, o.solver), scene.faces.size(), scene.patches.size(),
                                      out.solver.steps);
@@ -355,7 +399,8 @@ pipeline::Arithmetic parse_arith_option(const std::string& text) {
 void check_run_options(const CLI::App& cmd, const RunOptions& o) {
   if (o.impl != Impl::board) {
     refuse_given(cmd, {"--device", "--lanes", "--banks", "--concurrent", "--cards", "--card-split", "--card-bus",
-                       "--lanes-compute", "--lanes-impl", "--resources", "--host", "--trace", "--trace-steps", "--vcd", "--cpu-share", "--cpu-cores", "--chunk-rays"},
+                       "--lanes-compute", "--lanes-impl", "--resources", "--host", "--trace", "--trace-steps", "--vcd", "--cpu-share", "--cpu-cores", "--chunk-rays",
+                       "--ray-split"},
                  "applies to --impl board only (the simulated RC2000); this run answers visibility in software");
   } else {
     refuse_given(cmd, {"--visibility"}, "applies to --impl software only: with --impl board the board's lanes answer "
@@ -526,6 +571,12 @@ RunOptionsResolver add_run_options(CLI::App& command) {
   cmd->add_option("--banks", b.banks, "Board: memory banks, 1..64 (default: the profile's)")->check(CLI::Range(1, 64))
       ->capture_default_str();
   cmd->add_flag("--concurrent", b.concurrent, "Board: form factors while the FPGA works (paper sec 4.3)");
+  cmd->add_option("--ray-split", options->ray_split,
+                  "Board: how a pass's rays are divided over the ray groups: limit (by what limits each group's "
+                  "stream, result bank included) or nominal (the paper's: by the lanes' nominal rates); docs/board.md, "
+                  "Ray split")
+      ->check(CLI::IsMember({"limit", "nominal"}))
+      ->capture_default_str();
   cmd->add_option("--chunk-rays", b.chunk_rays,
                   "Board: the pipelined driver, rays per chunk (chunks go to alternating halves of the banks, so "
                   "transfers overlap the passes; docs/board.md, Pipelined passes); default: the host profile's, "

@@ -55,6 +55,7 @@ struct RunOptions {
   BoardRunOptions board;
   std::string cpu_share;             // --cpu-share: empty (off), a fraction 0..1 or "balanced" (board.cpu_split)
   unsigned cpu_cores = 1;            // --cpu-cores: 1 or 2
+  std::string ray_split = "limit";   // --ray-split: limit or nominal (board.ray_split; board/bank_layout.h)
   std::string trace_path;            // --trace: the trace.json to write (board runs)
   std::string trace_steps = "1:3";   // A:B, steps written to the trace
   std::string out_dir = "out";

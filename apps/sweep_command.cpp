@@ -51,6 +51,7 @@ struct SweepOptions {
   std::string form_factor = Study{}.form_factor;  // the paper's point rule (a sweep replicates its workload)
   bool full_banks = false;
   pipeline::ResourceSource resources = pipeline::ResourceSource::paper_fit;
+  std::string ray_split = "limit";
   bool quiet = false;
   bool list_fields = false;
   std::string out_dir = "out/sweep";
@@ -60,7 +61,8 @@ struct SweepOptions {
 const char* const kStudyOptions[] = {"--scene", "--faces", "--face-levels", "--patch-levels", "--patch-size",
                                      "--steps", "--convergence", "--lanes", "--banks", "--bits", "--devices",
                                      "--concurrent", "--paper-faithful", "--host", "--visibility", "--full-banks",
-                                     "--cards", "--card-split", "--card-bus", "--form-factor", "--resources"};
+                                     "--cards", "--card-split", "--card-bus", "--form-factor", "--resources",
+                                     "--ray-split"};
 
 Study study_from_options(const SweepOptions& o) {
   Study s = default_study();
@@ -73,6 +75,7 @@ Study study_from_options(const SweepOptions& o) {
   s.form_factor = o.form_factor;
   s.full_banks = o.full_banks;
   s.resources = o.resources;
+  s.ray_split = board::parse_ray_split(o.ray_split);
   s.axes.devices = parse_name_list(o.devices, "--devices");
   s.axes.hosts = parse_name_list(o.hosts, "--host");
   s.axes.bits = parse_int_list(o.bits, "--bits", 7, 31);
@@ -151,6 +154,10 @@ std::function<Study()> add_sweep_study_options(CLI::App& command) {
   cmd->add_flag("--full-banks", o->full_banks,
                 "Model the profile's bank capacity even when smaller banks change nothing (more memory)");
   add_resources_option(*cmd, o->resources);
+  cmd->add_option("--ray-split", o->ray_split,
+                  "How each pass divides its rays over the ray groups: limit (by what limits each group's stream, "
+                  "result bank included) or nominal (the paper's lane rates); docs/board.md, Ray split")
+      ->check(CLI::IsMember({"limit", "nominal"}))->capture_default_str();
   return [o, cmd] {
     // A scene file is taken as it is unless refinement is asked for, and solved with run's form
     // factor unless one is given: the paper defaults are for the embedded box (workload.h).

@@ -133,7 +133,9 @@ void print_sweep_scene(const Study& s, const SceneSweep& r, const std::vector<Sw
       std::printf("\n");
     }
   }
-  std::printf("  %zu configurations: %zu simulated, %zu cannot exist\n", r.rows.size(), r.valid, r.rows.size() - r.valid);
+  std::printf("  %zu configurations: %zu simulated, %zu cannot exist; rays split by %s (docs/board.md, Ray split)\n",
+              r.rows.size(), r.valid, r.rows.size() - r.valid,
+              s.ray_split == board::RaySplitRule::limit ? "the limiting resource" : "nominal lane rate (the paper's)");
   print_blocks(r.rows, s.axes);
   std::printf("\n  sec 5.6, lanes that fit at full rate (docs/calibration.md):\n");
   for (const SweptFit& f : fits) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 #include "pipeline/fixed_format.h"
 
@@ -56,6 +57,19 @@ std::string bank_capacity_problem(std::uint64_t capacity_bytes, unsigned word_bi
            "most the 32-bit FACE_COUNT register reaches)";
   }
   return "";
+}
+
+const std::vector<std::string>& ray_split_names() {
+  static const std::vector<std::string> names = {"nominal", "limit"};
+  return names;
+}
+
+const char* to_string(RaySplitRule rule) { return ray_split_names()[static_cast<std::size_t>(rule)].c_str(); }
+
+RaySplitRule parse_ray_split(const std::string& text) {
+  if (text == "nominal") return RaySplitRule::nominal;
+  if (text == "limit") return RaySplitRule::limit;
+  throw std::invalid_argument("ray split '" + text + "' is not one of nominal, limit");
 }
 
 const char* to_string(ResultStore store) { return result_store_names()[static_cast<std::size_t>(store)].c_str(); }
@@ -197,40 +211,80 @@ std::uint64_t result_store_bits(const BankLayout& layout, const RaySplit& split)
   return bits;
 }
 
+BankLayout place_split(BankLayout layout, RaySplitRule rule, std::uint64_t bank_period, std::uint64_t device_period) {
+  if (bank_period == 0 || device_period == 0) throw std::invalid_argument("the ray split needs nonzero clock periods");
+  layout.ray_split = rule;
+  layout.split_bank_period = bank_period;
+  layout.split_device_period = device_period;
+  const ResultStore store = layout.results;
+  const std::uint64_t store_bits = layout.result_store_bits;
+  return place_results(std::move(layout), store, store_bits);
+}
+
 RaySplit split_rays(const BankLayout& layout, std::uint64_t rays) {
   const std::size_t G = layout.groups.size();
-  // Rays group g can take in n cycles at its nominal rate, within its capacity.
-  auto can_take = [&](std::size_t g, std::uint64_t n) {
-    const RayGroup& group = layout.groups[g];
-    return group.lanes * std::min(n * group.k() / 3, group.max_packets);
+  const bool limit = layout.ray_split == RaySplitRule::limit;
+  // Bank words one bank moves in n device cycles: to_device(w) <= n exactly when w <= this.
+  auto bank_words_in = [&](std::uint64_t n) {
+    const unsigned __int128 w = static_cast<unsigned __int128>(n) * layout.split_device_period / layout.split_bank_period;
+    return static_cast<std::uint64_t>(std::min<unsigned __int128>(w, std::uint64_t{1} << 62));
   };
-  auto total = [&](std::uint64_t n) {
-    std::uint64_t t = 0;
-    for (std::size_t g = 0; g < G; ++g) t += can_take(g, n);
-    return t;
+  // Packets group g can take in n cycles, within its capacity: at its nominal rate, or (limit) within
+  // its lanes' and its ray banks' terms of the pass-timing formula (ceil(3P / k) <= min(n, W)).
+  auto packets_in = [&](std::size_t g, std::uint64_t n) {
+    const RayGroup& group = layout.groups[g];
+    const std::uint64_t m = limit ? std::min(n, bank_words_in(n)) : n;
+    return std::min(m * group.k() / 3, group.max_packets);
+  };
+  // Fills the groups in order, each up to its packets in n cycles and (limit, results in the bank)
+  // the result bank's words left: a group's packet costs result_accesses() of them (a pass that does
+  // not clear, pass_timing.h). Groups come in order of rays per result access (s / a: every full group
+  // has c lanes, only the last may have fewer), so filling in order is filling the most rays per
+  // access first. Returns the rays placed (at most `want`) and, if asked, the split's ray counts.
+  const bool result_term = limit && layout.results == ResultStore::bank;
+  auto fill = [&](std::uint64_t n, std::uint64_t want, std::vector<std::uint64_t>* out) {
+    std::uint64_t left = want, budget = result_term ? bank_words_in(n) : ~std::uint64_t{0};
+    for (std::size_t g = 0; g < G; ++g) {
+      const RayGroup& group = layout.groups[g];
+      std::uint64_t P = packets_in(g, n);
+      if (result_term) P = std::min(P, budget / group.result_accesses());
+      const std::uint64_t take = std::min<std::uint64_t>(group.lanes * P, left);
+      if (result_term) budget -= group.result_accesses() * ((take + group.lanes - 1) / group.lanes);
+      if (out) (*out)[g] = take;
+      left -= take;
+    }
+    return want - left;
   };
   RaySplit s;
   s.rays.assign(G, 0);
   s.first_ray.assign(G, 0);
   s.packets.assign(G, 0);
   s.result_base.assign(G, 0);
-  // Smallest n covering all rays; 3 * rays cycles always would if capacity allowed.
-  std::uint64_t lo = 0, hi = 3 * rays;
-  if (total(hi) < rays) {
+  // Smallest n covering all rays. Nominal: 3 * rays cycles always would if capacity allowed. Limit:
+  // every term is at most 3 * rays bank words (a packet's three words, two result accesses), which
+  // ceil(3 * rays * Pb / Pd) device cycles move.
+  std::uint64_t hi = 3 * rays;
+  if (limit) {
+    const unsigned __int128 n = (static_cast<unsigned __int128>(3 * rays) * layout.split_bank_period +
+                                 layout.split_device_period - 1) / layout.split_device_period;
+    hi = std::max<std::uint64_t>(hi, static_cast<std::uint64_t>(n));
+  }
+  std::uint64_t lo = 0;
+  if (fill(hi, rays, nullptr) < rays) {
     s.fits = false;
-    hi = lo = 3 * rays;
+    lo = hi;
   }
   while (lo < hi) {
     const std::uint64_t mid = lo + (hi - lo) / 2;
-    if (total(mid) >= rays)
+    if (fill(mid, rays, nullptr) >= rays)
       hi = mid;
     else
       lo = mid + 1;
   }
+  fill(hi, rays, &s.rays);
   std::uint64_t left = rays, first = 0, words = 0;
   for (std::size_t g = 0; g < G; ++g) {
-    const std::uint64_t take = std::min(can_take(g, hi), left);
-    s.rays[g] = take;
+    const std::uint64_t take = s.rays[g];
     s.first_ray[g] = first;
     s.packets[g] = (take + layout.groups[g].lanes - 1) / layout.groups[g].lanes;
     s.result_base[g] = words;

@@ -39,6 +39,18 @@ namespace rc::board {
 //   on_chip  in the FPGA's block RAM, one entry per packet; each result word is written to the result
 //            bank once, at the end of the pass
 enum class ResultStore { bank, on_chip };
+
+// How split_rays divides a pass's rays over the ray groups (docs/board.md, "Ray split"):
+//   nominal  by the groups' nominal lane rates (the paper's design: a group of k banks and s lanes
+//            does s * floor(n * k / 3) rays in n cycles), whatever else limits the stream
+//   limit    by what each group can do in n device cycles under the pass-timing formula's every
+//            term (pass_timing.h): its lanes, its ray banks at the bank clock and the result bank's
+//            accesses (results in the bank), so the split's stream is the fewest cycles any split of
+//            contiguous ranges takes, and a layout with more banks is never slower
+enum class RaySplitRule { nominal, limit };
+const char* to_string(RaySplitRule rule);               // "nominal", "limit": the option's spelling
+const std::vector<std::string>& ray_split_names();      // in enum order
+RaySplitRule parse_ray_split(const std::string& text);  // throws std::invalid_argument naming the choices
 const char* to_string(ResultStore store);  // "bank", "on_chip": the profile's spelling
 const std::vector<std::string>& result_store_names();  // in enum order
 
@@ -75,6 +87,10 @@ struct BankLayout {
   std::uint64_t max_rays_per_batch = 0;  // the smaller of what the banks and (on chip) the block RAM hold
   ResultStore results = ResultStore::bank;
   std::uint64_t result_store_bits = 0;   // on chip: block RAM bits the design leaves for the results
+  // How split_rays divides a pass's rays, and (limit) the clocks it reads: bank and device periods in
+  // any one unit (make_bank_layout(BoardParams) sets them from the design's WrapperTiming).
+  RaySplitRule ray_split = RaySplitRule::nominal;
+  std::uint64_t split_bank_period = 1, split_device_period = 1;
 
   unsigned banks_used() const;
   unsigned face_words() const { return 9; }
@@ -124,8 +140,12 @@ BankLayout make_bank_layout(LaneCount lanes, unsigned banks, pipeline::FloatForm
 BankLayout place_results(BankLayout layout, ResultStore store, std::uint64_t store_bits);
 
 // The rays of one pass divided over the groups: contiguous ranges in ray order, each group filled
-// up to what it can do in the smallest number of cycles that covers all rays at the groups'
-// nominal rates (a group of k banks and s lanes does s * floor(n * k / 3) rays in n cycles).
+// up to what it can do in the smallest number of cycles n that covers all rays, by layout.ray_split:
+//   nominal  at the groups' nominal rates (a group of k banks and s lanes does s * floor(n * k / 3)
+//            rays in n cycles)
+//   limit    s * min(floor(m * k / 3), capacity) rays with m = min(n, W), W = floor(n * Pd / Pb) the
+//            bank words one bank moves in n device cycles; with results in the bank, the groups' result
+//            accesses (a per packet, 2 when lanes share a word) together at most W
 // The host packs, and the wrapper unpacks, with this same function.
 struct RaySplit {
   std::vector<std::uint64_t> rays;         // per group
@@ -136,6 +156,9 @@ struct RaySplit {
   bool fits = true;                        // within every bank's capacity (and, on chip, the block RAM)
 };
 RaySplit split_rays(const BankLayout& layout, std::uint64_t rays);
+// The layout with its rays split by `rule` at these clocks (periods in one unit), its batch limit
+// recomputed (the split decides which batches fit). Throws std::invalid_argument for a zero period.
+BankLayout place_split(BankLayout layout, RaySplitRule rule, std::uint64_t bank_period, std::uint64_t device_period);
 // Block RAM bits a split's results take on chip: one entry per packet, as wide as its group's lanes.
 std::uint64_t result_store_bits(const BankLayout& layout, const RaySplit& split);
 

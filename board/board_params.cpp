@@ -58,6 +58,7 @@ BoardParams make_board_params(const DeviceProfile& p, const BoardChoices& c) {
       throw std::invalid_argument("the " + c.clocked_lanes.name + " lanes need the cycle-level wrapper model");
     b.clocked_lanes = c.clocked_lanes;
   }
+  b.ray_split = c.ray_split;
   b.results = p.results;
   b.result_store_bits = b.fit.block_ram_bits_available - std::min(b.fit.block_ram_bits, b.fit.block_ram_bits_available);
   if (b.results == ResultStore::on_chip && b.result_store_bits == 0) {
@@ -72,7 +73,9 @@ BankLayout make_bank_layout(const BoardParams& p) {
   BankLayout layout = p.float_format
                           ? make_bank_layout(p.lanes, p.banks, *p.float_format, p.word_bits, p.bank_capacity_bytes)
                           : make_bank_layout(p.lanes, p.banks, p.bits, p.word_bits, p.bank_capacity_bytes);
-  return place_results(std::move(layout), p.results, p.result_store_bits);
+  layout = place_results(std::move(layout), p.results, p.result_store_bits);
+  return place_split(std::move(layout), p.ray_split, static_cast<std::uint64_t>(p.timing.bank_period.value()),
+                     static_cast<std::uint64_t>(p.timing.device_period.value()));
 }
 
 }  // namespace rc::board

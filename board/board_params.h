@@ -38,6 +38,9 @@ struct BoardParams {
   ClockedLanesFactory clocked_lanes;
   ResultStore results = ResultStore::bank;  // where a pass's blocked bits accumulate (bank_layout.h)
   std::uint64_t result_store_bits = 0;  // on chip: block RAM bits left for them (device's minus the design's)
+  // How a pass's rays are divided over the ray groups (bank_layout.h, docs/board.md "Ray split"):
+  // by what limits each group's stream (default), or by the nominal lane rates (the paper's).
+  RaySplitRule ray_split = RaySplitRule::limit;
   bool report_at_end = false;          // print the tlm parts' summaries at sc_stop()
   DesignFit fit;                       // resources and clock of the design (make_board_params)
 };
@@ -54,6 +57,7 @@ struct BoardChoices {
   // float lanes have counting-rule estimates only, so they take the paper fit.
   pipeline::ResourceSource resources = pipeline::ResourceSource::paper_fit;
   sc_core::sc_time irq_latency = sc_core::SC_ZERO_TIME;
+  RaySplitRule ray_split = RaySplitRule::limit;  // BoardParams::ray_split
 };
 
 // Throws std::invalid_argument if the lanes do not fit the device (design_fit.h), the profile
@@ -63,7 +67,8 @@ struct BoardChoices {
 // profile's (the float operators' latencies are not sourced; docs/board.md, "Float lanes").
 BoardParams make_board_params(const DeviceProfile& profile, const BoardChoices& choices);
 
-// The bank layout of a board with these parameters, results placed as they say (bank_layout.h).
+// The bank layout of a board with these parameters, results placed and rays split as they say
+// (bank_layout.h; the split at the design's device and bank clocks).
 BankLayout make_bank_layout(const BoardParams& params);
 
 }  // namespace rc::board

@@ -60,7 +60,8 @@ struct FieldList<LayoutReport> {
       field("face_bank", &LayoutReport::face_bank), field("result_bank", &LayoutReport::result_bank),
       field("own_face_table", &LayoutReport::own_face_table), field("ray_groups", &LayoutReport::ray_groups),
       field("spare_banks", &LayoutReport::spare_banks),
-      field("nominal_rays_per_cycle", &LayoutReport::nominal_rays_per_cycle));
+      field("nominal_rays_per_cycle", &LayoutReport::nominal_rays_per_cycle),
+      field("ray_split", &LayoutReport::ray_split));
 };
 template <>
 struct FieldList<BatchingReport> {

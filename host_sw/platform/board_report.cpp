@@ -50,6 +50,7 @@ LayoutReport layout_report(const board::BankLayout& L) {
   for (const board::RayGroup& g : L.groups) l.ray_groups.push_back({g.banks, g.lanes, g.first_lane, g.k() / 3.0});
   l.spare_banks = L.spare_banks;
   l.nominal_rays_per_cycle = L.nominal_rays_per_cycle();
+  l.ray_split = board::to_string(L.ray_split);
   return l;
 }
 

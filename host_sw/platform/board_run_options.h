@@ -65,6 +65,9 @@ struct BoardRunOptions {
   CardCount cards = 1;
   CardSplit card_split = CardSplit::rays;
   CardBus card_bus = CardBus::shared;
+  // How a pass's rays are divided over the ray groups (board/bank_layout.h; docs/board.md "Ray split"):
+  // by what limits each group's stream (default), or the paper's nominal lane rates.
+  board::RaySplitRule ray_split = board::RaySplitRule::limit;
 };
 
 }  // namespace rc

@@ -16,6 +16,7 @@ BoardSetup make_board_setup(const BoardRunOptions& o) {
   c.clocked_lanes = o.clocked_lanes;
   c.resources = o.resources;
   c.irq_latency = s.host.interrupt_latency;
+  c.ray_split = o.ray_split;
   s.board = board::make_board_params(device, c);
   s.board.report_at_end = o.print_summaries;
   // The layout, made once: a bad configuration fails here, before elaboration, and the board uses it.

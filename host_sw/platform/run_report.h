@@ -68,6 +68,7 @@ struct LayoutReport {
   std::vector<RayGroupReport> ray_groups;
   std::vector<unsigned> spare_banks;
   double nominal_rays_per_cycle = 0;
+  std::string ray_split;  // how a pass's rays were divided over the groups: "limit" or "nominal" (bank_layout.h)
 };
 
 struct BatchingReport {

@@ -20,8 +20,9 @@ std::string to_string(Validity v) {
 
 ConfigChecker::ConfigChecker(const std::vector<std::string>& devices, const std::vector<std::string>& hosts,
                              const std::vector<ProfileSetting>& fixed, const std::string& study,
-                             pipeline::ResourceSource resources)
-    : host_order_(hosts), resources_(pipeline::ResourceModel::load_default(resources)), study_(study) {
+                             pipeline::ResourceSource resources, board::RaySplitRule ray_split)
+    : host_order_(hosts), resources_(pipeline::ResourceModel::load_default(resources)), study_(study),
+      ray_split_(ray_split) {
   if (hosts.empty()) throw std::invalid_argument("a sweep needs at least one host profile");
   // An unknown profile or a rejected fixed setting fails here, not as every configuration's reason.
   for (const std::string& h : hosts) hosts_.emplace(h, with_settings(find_host_profile(h), fixed, study));
@@ -77,6 +78,7 @@ ConfigCheck ConfigChecker::check(const SweepConfig& c) const {
     out.options.card_split = c.card_split;
     out.options.card_bus = c.card_bus;
     out.options.resources = resources_.source();
+    out.options.ray_split = ray_split_;
     (void)make_board_setup(out.options);
   } catch (const std::invalid_argument& e) {
     out.validity = Validity::other;

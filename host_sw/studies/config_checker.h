@@ -50,7 +50,8 @@ class ConfigChecker {
   // the boards it passes carry it.
   ConfigChecker(const std::vector<std::string>& devices, const std::vector<std::string>& hosts,
                 const std::vector<ProfileSetting>& fixed = {}, const std::string& study = "command line",
-                pipeline::ResourceSource resources = pipeline::ResourceSource::paper_fit);
+                pipeline::ResourceSource resources = pipeline::ResourceSource::paper_fit,
+                board::RaySplitRule ray_split = board::RaySplitRule::limit);
   ConfigChecker(const std::vector<std::string>& devices, const std::string& host)
       : ConfigChecker(devices, std::vector<std::string>{host}) {}
 
@@ -78,6 +79,7 @@ class ConfigChecker {
   std::vector<std::string> host_order_;
   pipeline::ResourceModel resources_;
   std::string study_;
+  board::RaySplitRule ray_split_;
 };
 
 }  // namespace rc

@@ -114,6 +114,7 @@ std::string run_command(const DesignDocument& doc, const DesignPoint& p, const s
   if (f.coordinate_bits != 0) cmd += " --coordinate-bits " + std::to_string(f.coordinate_bits);
   // The source of resources decides whether the lanes fit: the run must use the search's.
   if (doc.space.resources != pipeline::ResourceSource::paper_fit) cmd += " --resources " + choice_name(doc.space.resources);
+  if (doc.space.ray_split != board::RaySplitRule::limit) cmd += std::string(" --ray-split ") + board::to_string(doc.space.ray_split);
   cmd += scene_arguments(w.scene) + " --steps " + std::to_string(p.row.steps) + " --form-factor " + to_string(w.form_factor);
   if (w.paper_faithful) cmd += " --paper-faithful";
   return cmd + " --out " + doc.out_dir + "/best-run";
@@ -133,6 +134,7 @@ Json design_json(const DesignDocument& doc) {
                       {"max_error", finite_or_null(doc.constraints.max_error)},
                       {"max_error_max", finite_or_null(doc.constraints.max_error_max)}};
   j["resources"] = choice_name(doc.space.resources);  // where the lanes' slices and block multipliers came from
+  j["ray_split"] = board::to_string(doc.space.ray_split);  // how each pass divided its rays (board/bank_layout.h)
   j["designs"] = r.designs;
   j["infeasible"] = r.infeasible;
   j["pruned_spare_banks"] = r.pruned;

@@ -402,7 +402,8 @@ void note_infeasible(DesignSearchResult& r, const std::vector<DesignCandidate>& 
 
 DesignSearchResult search_designs(const Workload& workload, BitExactVisibility visibility, const DesignSpace& space,
                                   const DesignConstraints& constraints, bool exhaustive, const Progress& progress) {
-  const ConfigChecker checker({space.device, "xc2v6000"}, {space.host}, {}, "command line", space.resources);
+  const ConfigChecker checker({space.device, "xc2v6000"}, {space.host}, {}, "command line", space.resources,
+                              space.ray_split);
   DesignSearchResult r;
   r.device = space.device;
   r.workload = workload;

@@ -67,6 +67,8 @@ struct DesignSpace {
   std::vector<int> coordinate_bits = {0};
   // Not an axis: where the lanes' slices and block multipliers come from (which lane counts fit).
   pipeline::ResourceSource resources = pipeline::ResourceSource::paper_fit;
+  // Not an axis: how each pass divides its rays over the ray groups (board/bank_layout.h).
+  board::RaySplitRule ray_split = board::RaySplitRule::limit;
   // Not an axis: whether each width's picture is measured against one double-precision solve of the
   // workload (WidthFidelity; `--fidelity off` skips that solve, the costliest part of a search on the
   // default workload, and leaves every design's error "not measured").

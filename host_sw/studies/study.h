@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "board/bank_layout.h"
 #include "host_sw/radiosity/radiosity.h"
 #include "host_sw/visibility/visibility_factory.h"
 #include "scenes/prepare.h"
@@ -49,6 +50,9 @@ struct Study {
   // Where the lanes' slices and block multipliers come from (pipeline/resource_source.h): decides
   // which lane counts fit each device; the study file's top-level `resources`, sweep's --resources.
   pipeline::ResourceSource resources = pipeline::ResourceSource::paper_fit;
+  // How every configuration's passes divide their rays over the ray groups (board/bank_layout.h):
+  // the study file's top-level `ray_split`, sweep's --ray-split.
+  board::RaySplitRule ray_split = board::RaySplitRule::limit;
   SweepAxes axes;
   std::vector<ProfileSetting> fixed;  // applied to every configuration's profiles
 };

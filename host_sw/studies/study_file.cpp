@@ -438,7 +438,7 @@ Study parse_study_text(const std::string& text, const std::string& path) {
                                            : ""));
   }
   const Reader r(path);
-  r.only(root, "", {"name", "description", "resources", "scenes", "solver", "axes", "fixed"});
+  r.only(root, "", {"name", "description", "resources", "ray_split", "scenes", "solver", "axes", "fixed"});
   Study s = default_study();
   s.file = path;
   s.name = std::filesystem::path(path).stem().string();
@@ -449,6 +449,13 @@ Study parse_study_text(const std::string& text, const std::string& path) {
       s.resources = parse_choice<pipeline::ResourceSource>(r.text(*n, "resources"));
     } catch (const std::invalid_argument& e) {
       r.fail(*n, "resources", e.what());
+    }
+  }
+  if (const toml::node* n = root.get("ray_split")) {
+    try {
+      s.ray_split = board::parse_ray_split(r.text(*n, "ray_split"));
+    } catch (const std::invalid_argument& e) {
+      r.fail(*n, "ray_split", e.what());
     }
   }
   if (root.contains("scenes")) read_scenes(r, *root.get("scenes"), s);

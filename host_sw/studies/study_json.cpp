@@ -55,6 +55,7 @@ nlohmann::ordered_json study_json(const Study& s) {
   j["file"] = std::filesystem::path(s.file).filename().string();  // where it lay is not part of the study
   // Recorded when not the paper fit, so records made before the choice existed read as before.
   if (s.resources != Study{}.resources) j["resources"] = choice_name(s.resources);
+  j["ray_split"] = board::to_string(s.ray_split);  // always: which split ran (board/bank_layout.h)
   nlohmann::ordered_json scenes = nlohmann::ordered_json::array();
   for (const StudyScene& scene : s.scenes) scenes.push_back(scene_json(scene));
   j["scenes"] = scenes;
@@ -89,6 +90,8 @@ Study study_from_json(const nlohmann::ordered_json& j) {
     s.description = j.at("description").get<std::string>();
     s.file = j.at("file").get<std::string>();
     s.resources = parse_choice<pipeline::ResourceSource>(j.value("resources", choice_name(Study{}.resources)));
+    // Records made before the choice existed ran the paper's nominal split.
+    s.ray_split = board::parse_ray_split(j.value("ray_split", std::string("nominal")));
     for (const auto& scene : j.at("scenes")) s.scenes.push_back(scene_from_json(scene));
     const auto& solver = j.at("solver");
     s.steps = parse_steps(solver.at("steps").get<std::string>());

@@ -256,7 +256,8 @@ std::vector<ProfileFingerprint> profile_fingerprints(const Study& study) {
 
 ShardResult run_study_shard(const Study& study, const Shard& shard, const Progress& progress) {
   check_study(study);
-  const ConfigChecker checker(study.axes.devices, study.axes.hosts, study.fixed, study_name(study), study.resources);
+  const ConfigChecker checker(study.axes.devices, study.axes.hosts, study.fixed, study_name(study), study.resources,
+                              study.ray_split);
   const std::vector<Planned> plan = plan_configs(study.axes, checker);
   ShardResult result;
   result.study = study;

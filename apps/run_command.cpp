@@ -19,6 +19,7 @@
 #include "pipeline/float_format.h"
 #include "rtl/lanes/rtl_lanes.h"
 #include "rtl/sim/rtl_pipeline.h"
+#include "host_sw/radiosity/energy_plausibility.h"
 #include "host_sw/visibility/fixed_visibility.h"
 #include "host_sw/visibility/visibility_factory.h"
 #include "host_sw/outputs/fidelity_json.h"
@@ -227,8 +228,9 @@ void print_summary(const RunOptions& o, const Scene& scene, const RunOutcome& ou
   const SolverResult& r = out.solver;
   std::printf("rc2000sim run: %s\n", scene.name.c_str());
   std::printf("  scene        %zu faces, %zu patches\n", scene.faces.size(), scene.patches.size());
-  std::printf("  solver       %d steps, %.2f%% converged (target %.2f%%), form factor %s\n", r.steps,
-              100.0 * r.convergence_reached, 100.0 * o.solver.convergence, to_string(o.solver.form_factor).c_str());
+  std::printf("  solver       %d steps%s, %.2f%% converged (target %.2f%%), form factor %s\n", r.steps,
+              r.exhausted ? " (stopped: nothing left to shoot is a normal number)" : "", 100.0 * r.convergence_reached,
+              100.0 * o.solver.convergence, to_string(o.solver.form_factor).c_str());
   std::printf("  visibility   %s: %llu segments (%llu blocked), %llu segment-face tests\n", out.visibility_name.c_str(),
               static_cast<unsigned long long>(r.segments), static_cast<unsigned long long>(r.blocked_segments),
               static_cast<unsigned long long>(out.visibility_tests));
@@ -407,7 +409,12 @@ int run_simulation(const RunOptions& given) {
   if (!o.board.vcd_path.empty()) vcd.emplace(".vcd");
   const RunOutcome out =
       o.impl == Impl::board ? run_board(o, scene, progress, vcd ? vcd->path() : std::string()) : run_software(o, scene, progress);
-  const RgbImage image = tone_map(render_radiosity(scene, out.solver.radiosity, o.render), o.render.key);
+  // A scene of subnormal emission: drawn from the solve's scaled radiosity, where nothing underflowed
+  // (the picture does not depend on the scene's units).
+  const std::vector<Spectrum>& drawn = out.solver.radiosity_solved.empty() ? out.solver.radiosity : out.solver.radiosity_solved;
+  const RgbImage image = tone_map(render_radiosity(scene, drawn, o.render), o.render.key);
+  progress.update("checking the energy accounting against the scene's geometry");
+  const std::vector<std::string> end_notes = solver_end_notes(scene, out.solver, o.solver.fixed_steps);
   progress.finish();
   // Point and disc: steps that created energy, said once (docs/radiosity.md, Form-factor sums).
   std::vector<std::string> solver_warnings;
@@ -420,6 +427,12 @@ int run_simulation(const RunOptions& given) {
   if (std::string w = form_factor_sum_warning(scene, out.solver, o.solver.form_factor); !w.empty()) {
     std::fprintf(stderr, "warning: %s\n", w.c_str());
     solver_warnings.push_back(std::move(w));
+  }
+  // How the solve ended: stopped for want of normal powers, underflow in the scene's units, an
+  // energy accounting the geometry does not allow (host_sw/radiosity/energy_plausibility.h).
+  for (const std::string& w : end_notes) {
+    std::fprintf(stderr, "warning: %s\n", w.c_str());
+    solver_warnings.push_back(w);
   }
 
   outputs.add(o.out_dir + "/patches.csv", patches_csv(scene, out.solver.radiosity));

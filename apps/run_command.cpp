@@ -87,6 +87,8 @@ RunOutcome run_software(const RunOptions& o, const Scene& scene, ProgressLine& p
   DecisionSampler sampler(in_pipeline_arithmetic(o) ? o.fidelity_sample : 0);
   solver.on_answers(sampler.observer());
   RunOutcome out;
+  progress.update("solving %zu patches against %zu faces (%s visibility), step 1", scene.patches.size(), scene.faces.size(),
+                  visibility->name().c_str());
   out.solver = solver.run();
   measure_fidelity(o, scene, sampler, out, progress);
   out.visibility_name =
@@ -148,6 +150,7 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
                                     : lanes_that_fit(*board.device_profile, *board.host_profile, o.bits, board.resources);
   DecisionSampler sampler(o.fidelity_sample);
   board.on_answers = sampler.observer();
+  progress.update("solving %zu patches against %zu faces on the board, step 1", scene.patches.size(), scene.faces.size());
   BoardRunResult r = run_radiosity_on_board(scene, o.solver, board);
   RunOutcome out;
   out.solver = std::move(r.solver);

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <string>
 
@@ -82,7 +83,14 @@ TEST(SpecialFiles, ANamedPipeWithAWriterIsRefusedAndTheWriterReleased) {
     }
     ::_exit(0);
   }
-  ::usleep(100 * 1000);  // the writer is in open()
+  // Wait until the writer waits in open() (wait channel wait_for_partner), at most 5 s.
+  for (int i = 0; i < 500; ++i) {
+    std::ifstream wchan("/proc/" + std::to_string(writer) + "/wchan");
+    std::string where;
+    std::getline(wchan, where);
+    if (where.find("partner") != std::string::npos || where.find("fifo") != std::string::npos) break;  // wait_for_partner
+    ::usleep(10 * 1000);
+  }
   const auto start = std::chrono::steady_clock::now();
   EXPECT_EQ(message_of([&] { read_file(fifo, 1000, "a scene file", Pipes::read_once); }),
             fifo + ": is a named pipe (FIFO), not a regular file (a scene file must be one)");

@@ -29,6 +29,7 @@ nlohmann::ordered_json solver_json(const SolverResult& r) {
   nlohmann::ordered_json j;
   j["steps"] = r.steps;
   j["converged"] = r.converged;
+  if (r.exhausted) j["exhausted"] = true;  // stopped early: nothing normal left to shoot (docs/radiosity.md, Guards)
   j["convergence_reached"] = r.convergence_reached;
   j["max_initial_power"] = r.max_initial_power;
   j["max_unshot_power"] = r.max_unshot_power;

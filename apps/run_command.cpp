@@ -22,6 +22,7 @@
 #include "pipeline/float_format.h"
 #include "rtl/lanes/rtl_lanes.h"
 #include "rtl/sim/rtl_pipeline.h"
+#include "host_sw/radiosity/energy_plausibility.h"
 #include "host_sw/visibility/fixed_visibility.h"
 #include "host_sw/visibility/visibility_factory.h"
 #include "host_sw/outputs/fidelity_json.h"
@@ -94,6 +95,8 @@ RunOutcome run_software(const RunOptions& o, const Scene& scene, ProgressLine& p
   DecisionSampler sampler(in_pipeline_arithmetic(o) ? o.fidelity_sample : 0);
   solver.on_answers(sampler.observer());
   RunOutcome out;
+  progress.update("solving %zu patches against %zu faces (%s visibility), step 1", scene.patches.size(), scene.faces.size(),
+                  visibility->name().c_str());
   out.solver = solver.run();
   measure_fidelity(o, scene, sampler, out, progress);
   out.visibility_name =
@@ -158,6 +161,7 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
                                     : lanes_that_fit(*board.device_profile, *board.host_profile, o.bits, board.resources);
   DecisionSampler sampler(o.fidelity_sample);
   board.on_answers = sampler.observer();
+  progress.update("solving %zu patches against %zu faces on the board, step 1", scene.patches.size(), scene.faces.size());
   BoardRunResult r = run_radiosity_on_board(scene, o.solver, board);
   RunOutcome out;
   out.solver = std::move(r.solver);
@@ -247,8 +251,9 @@ void print_summary(const RunOptions& o, const Scene& scene, const RunOutcome& ou
   const SolverResult& r = out.solver;
   std::printf("rc2000sim run: %s\n", scene.name.c_str());
   std::printf("  scene        %zu faces, %zu patches\n", scene.faces.size(), scene.patches.size());
-  std::printf("  solver       %d steps, %.2f%% converged (target %.2f%%), form factor %s\n", r.steps,
-              100.0 * r.convergence_reached, 100.0 * o.solver.convergence, to_string(o.solver.form_factor).c_str());
+  std::printf("  solver       %d steps%s, %.2f%% converged (target %.2f%%), form factor %s\n", r.steps,
+              r.exhausted ? " (stopped: nothing left to shoot is a normal number)" : "", 100.0 * r.convergence_reached,
+              100.0 * o.solver.convergence, to_string(o.solver.form_factor).c_str());
   // Each count under its own name (docs/outputs.md, "Counts of visibility work"): software tests are
   // the pairs a software backend tested, board pairs the pairs the lanes streamed.
   if (out.board) {
@@ -496,7 +501,12 @@ int run_simulation(const RunOptions& given, const RunHooks& hooks) {
   if (!o.board.vcd_path.empty()) vcd.emplace(".vcd");
   const RunOutcome out = o.impl == Impl::board ? run_board(o, scene, progress, vcd ? vcd->path() : std::string(), hooks)
                                                : run_software(o, scene, progress, hooks);
-  const RgbImage image = tone_map(render_radiosity(scene, out.solver.radiosity, o.render), o.render.key);
+  // A scene of subnormal emission: drawn from the solve's scaled radiosity, where nothing underflowed
+  // (the picture does not depend on the scene's units).
+  const std::vector<Spectrum>& drawn = out.solver.radiosity_solved.empty() ? out.solver.radiosity : out.solver.radiosity_solved;
+  const RgbImage image = tone_map(render_radiosity(scene, drawn, o.render), o.render.key);
+  progress.update("checking the energy accounting against the scene's geometry");
+  const std::vector<std::string> end_notes = solver_end_notes(scene, out.solver, o.solver.fixed_steps);
   progress.finish();
   // Point and disc: steps that created energy, said once (docs/radiosity.md, Form-factor sums).
   std::vector<std::string> solver_warnings;
@@ -509,6 +519,12 @@ int run_simulation(const RunOptions& given, const RunHooks& hooks) {
   if (std::string w = form_factor_sum_warning(scene, out.solver, o.solver.form_factor); !w.empty()) {
     std::fprintf(stderr, "warning: %s\n", w.c_str());
     solver_warnings.push_back(std::move(w));
+  }
+  // How the solve ended: stopped for want of normal powers, underflow in the scene's units, an
+  // energy accounting the geometry does not allow (host_sw/radiosity/energy_plausibility.h).
+  for (const std::string& w : end_notes) {
+    std::fprintf(stderr, "warning: %s\n", w.c_str());
+    solver_warnings.push_back(w);
   }
 
   if (!hooks.write_outputs) {

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -54,7 +55,18 @@ const char* special_kind(const struct stat& st) {
   return "special file";
 }
 
+// A named pipe is refused without reading it. A process already writing into it waits in open()
+// for a reader, and would wait forever (a shell's `cat room.scene > f.fifo &` never ends, nor a
+// script's `wait` on it): opening the read end without blocking and closing it at once lets that
+// open() return, and the writer's first write fails with a broken pipe, so it ends too.
+void release_writers(const std::string& path, const struct stat& st) {
+  if (!S_ISFIFO(st.st_mode) || on_pipe_file_system(st)) return;
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd >= 0) ::close(fd);
+}
+
 [[noreturn]] void refuse_special(const std::string& path, const struct stat& st, const std::string& what) {
+  release_writers(path, st);
   throw InputFileError(path + ": is a " + special_kind(st) + ", not a regular file (" + what + " must be one)");
 }
 

@@ -24,7 +24,8 @@ class InputFileError : public std::runtime_error {
 // Whether a reader takes a pipe. Only `--scene` does (docs/scenes.md): an anonymous pipe, as bash's
 // process substitution `--scene <(gunzip -c room.scene.gz)` or a shell pipe into /dev/stdin gives,
 // is read once into memory. A named pipe (FIFO) is refused everywhere: opening one blocks until a
-// writer comes, which may be never.
+// writer comes, which may be never. A writer already waiting on it is released (the refusal opens
+// the read end without blocking and closes it: the writer gets a broken pipe and ends).
 enum class Pipes { refused, read_once };
 
 // The whole file as bytes. Throws InputFileError naming `path` when it cannot be opened, is a

@@ -72,6 +72,7 @@ double ProgressiveRadiosity::unshot_total() const {
 }
 
 bool ProgressiveRadiosity::done(int steps, double max_unshot) const {
+  if (max_unshot < kSmallestShotPower) return true;  // nothing normal left to shoot (run() says so)
   if (options_.fixed_steps > 0) return steps >= options_.fixed_steps;
   if (steps < std::min(options_.min_steps, options_.max_steps)) return false;
   return steps >= options_.max_steps || max_unshot < (1.0 - options_.convergence) * initial_max_power_;
@@ -104,6 +105,8 @@ SolverResult ProgressiveRadiosity::run() {
   radiosity_.assign(n, Spectrum{});
   unshot_.assign(n, Spectrum{});
   unshot_power_.assign(n, 0.0);
+  shot_by_patch_.assign(n, 0.0);
+  share_by_patch_.assign(n, 0.0);
   emission_exponent_ = emission_exponent(scene_);
   shot_total_ = 0;
   SolverResult result;
@@ -122,6 +125,8 @@ SolverResult ProgressiveRadiosity::run() {
   }
   if (result.max_initial_power <= 0) throw std::invalid_argument("scene emits no light");
   initial_max_power_ = result.max_initial_power;
+  max_area_ = 0;
+  for (int i = 0; i < n; ++i) max_area_ = std::max(max_area_, columns_.area[i]);
   // Energy guard. With exact form factors (summing to at most 1 over a shooter's receivers) and
   // rho < 1, every step loses energy, so the total unshot power never exceeds the emitted power.
   // The point and disc rules can overshoot near a patch (the default Cornell solve with point form
@@ -159,9 +164,15 @@ SolverResult ProgressiveRadiosity::run() {
   result.max_unshot_power = unshot_power(shooter);
   result.convergence_reached = 1.0 - result.max_unshot_power / initial_max_power_;
   result.converged = options_.fixed_steps > 0 ? false : result.max_unshot_power < (1.0 - options_.convergence) * initial_max_power_;
+  // Stopped for want of normal powers before the steps asked for, or before converging.
+  result.exhausted = result.max_unshot_power < kSmallestShotPower &&
+                     (options_.fixed_steps > 0 ? result.steps < options_.fixed_steps : !result.converged);
   for (int i = 0; i < n; ++i) result.energy.unshot += unshot_power(i);
   result.radiosity = radiosity_;
+  result.shot_power_by_patch = shot_by_patch_;
+  result.delivered_share_by_patch = share_by_patch_;
   if (emission_exponent_ != 0) {  // back to the scene's units (exact, barring underflow of the output)
+    result.radiosity_solved = radiosity_;
     for (Spectrum& b : result.radiosity) b = scaled(b, -emission_exponent_);
     for (double* power : {&result.max_initial_power, &result.max_unshot_power, &result.energy.emitted,
                           &result.energy.absorbed, &result.energy.escaping, &result.energy.unshot}) {
@@ -294,6 +305,8 @@ void ProgressiveRadiosity::shoot(int shooter, SolverResult& result) {
   if (share > 1) ++sums.steps_above_one;
   if (share > sums.largest) sums.largest = share, sums.largest_step = result.steps + 1, sums.largest_shooter = shooter;
   step_scale_ = sums.normalised && share > 1 ? 1.0 / share : 1.0;
+  shot_by_patch_[shooter] += shot_power;
+  share_by_patch_[shooter] = share * step_scale_;
 
   double arrived = 0;
   // The run's absorbed power and blocked count, added to in registers: through `result` every
@@ -326,7 +339,10 @@ void ProgressiveRadiosity::shoot(int shooter, SolverResult& result) {
   result.blocked_segments += blocked;
   charge(HostWork::EnergyUpdate, updated);
   result.energy.escaping += shot_power - arrived;
-  if (sums.normalised && !(arrived <= shot_power * (1 + rounding_))) {
+  // Relative rounding, plus the absolute rounding of deliveries that are subnormal numbers (a tiny
+  // form factor times a small shot): at most 2^-1074 per band and product, per receiver.
+  const double underflow = double(updated) * 8.0 * std::numeric_limits<double>::denorm_min() * std::max(1.0, max_area_);
+  if (sums.normalised && !(arrived <= shot_power * (1 + rounding_) + underflow)) {
     std::ostringstream m;
     m.precision(17);
     m << "internal error: step " << result.steps + 1 << " delivered " << unscaled(arrived) << " of the "

@@ -92,6 +92,18 @@ struct SolverResult {
   // Emission was scaled by 2^emission_exponent for the solve (0: not scaled) so that no power is
   // subnormal; radiosity and energies are reported unscaled (kSmallestUnscaledEmission).
   int emission_exponent = 0;
+  // The run stopped before the steps it was asked for (or before converging) because the largest
+  // unshot power fell below kSmallestShotPower: nothing left to shoot is a normal number
+  // (docs/radiosity.md, Guards). steps says where it stopped.
+  bool exhausted = false;
+  // With emission_exponent != 0: the radiosity in the solve's units (emission x 2^emission_exponent),
+  // where no value underflows; empty otherwise. The picture is drawn from it (render is scale-free).
+  std::vector<Spectrum> radiosity_solved;
+  // Per patch, the power it shot in all (solve units) and the share S of its shots that arrived
+  // (after any normalisation; the same at every shot of one shooter): what the energy
+  // plausibility check (energy_plausibility.h) compares with the scene's geometry.
+  std::vector<double> shot_power_by_patch;
+  std::vector<double> delivered_share_by_patch;
 };
 
 // A scene whose largest emission (any band of any emitting material) is below this is solved with
@@ -101,6 +113,15 @@ struct SolverResult {
 // limit are not scaled at all, so they stay bit-identical. 2^-256 (about 8.6e-78) leaves 2^750 of
 // headroom below it for the products of form factors, reflectances and the convergence target.
 constexpr double kSmallestUnscaledEmission = 0x1p-256;
+
+// The solve stops (SolverResult::exhausted) once the largest unshot power, in the solve's units, is
+// below this: 2^-960, 2^62 above the smallest normal double. A shot below it splits into deliveries
+// (times form factors, reflectances, over areas) that are subnormal numbers, with fewer than 53
+// bits and absolute rounding of 2^-1074 each, where the energy bookkeeping no longer holds to its
+// relative rounding (the analytic rule's delivery check reported such a step as an internal error).
+// Emission is at least 2^-256 in the solve's units (kSmallestUnscaledEmission), so everything left
+// is below 2^-700 of the emitted power times the patch's area: no output it could change is printed.
+constexpr double kSmallestShotPower = 0x1p-960;
 
 // Centres closer than this times the square root of the larger patch area coincide: the pair never
 // exchanges energy. The back face of a two-sided surface puts its patch centres about 1e-16 from the
@@ -190,7 +211,8 @@ class ProgressiveRadiosity {
   double initial_max_power_ = 0;
   double energy_limit_ = 0;  // the emitted power plus the rounding of the sums that measure it
   double rounding_ = 0;      // relative rounding of one step's or the run's sums
-  double shot_total_ = 0;    // every step's shot power, summed (the balance's rounding scales with it)
+  double shot_total_ = 0;
+  double max_area_ = 0;      // the largest patch area (the delivery check's underflow allowance)    // every step's shot power, summed (the balance's rounding scales with it)
   int emission_exponent_ = 0;
   double step_scale_ = 1;    // what the last step multiplied its form factors by (1 unless normalised)
   Spectrum last_shot_;       // what the last step shot (for SolveDiverged's diagnosis)
@@ -203,6 +225,7 @@ class ProgressiveRadiosity {
   int every_receiver_shooter_ = -1;
   std::vector<double> form_factors_;
   std::vector<std::uint8_t> blocked_;
+  std::vector<double> shot_by_patch_, share_by_patch_;  // SolverResult::shot_power_by_patch, delivered_share_by_patch
   std::unique_ptr<SegmentFixer> fixer_;  // SolverOptions::fixes, when any
   SegmentBatch fixed_batch_;             // batch_ as the fixes move it
 };

@@ -5,10 +5,15 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <string>
 
+#include <csignal>
+
+#include <fcntl.h>
 #include <sys/socket.h>
+#include <sys/wait.h>
 #include <sys/stat.h>
 #include <sys/un.h>
 #include <unistd.h>
@@ -59,6 +64,48 @@ TEST(SpecialFiles, ANamedPipeIsRefusedWithoutWaitingForAWriter) {
   EXPECT_EQ(message_of([&] { check_regular_file(fifo, 1000, "a scene file"); }), expected);
   EXPECT_FALSE(is_anonymous_pipe(fifo));
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+}
+
+// Issue 39: a FIFO with a process writing into it. The refusal comes at once, and the writer (which
+// waits in open() for a reader) is released and ends with a broken pipe instead of waiting forever.
+TEST(SpecialFiles, ANamedPipeWithAWriterIsRefusedAndTheWriterReleased) {
+  const std::string fifo = folder() + "/scene.fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const pid_t writer = ::fork();
+  ASSERT_GE(writer, 0);
+  if (writer == 0) {
+    const int fd = ::open(fifo.c_str(), O_WRONLY);  // blocks until a reader opens the FIFO
+    if (fd < 0) ::_exit(2);
+    ::signal(SIGPIPE, SIG_DFL);
+    const char text[] = "material white reflectance 0.5 0.5 0.5\n";
+    for (int i = 0; i < 1000; ++i) {
+      if (::write(fd, text, sizeof text - 1) < 0) ::_exit(3);  // EPIPE: no reader
+    }
+    ::_exit(0);
+  }
+  // Wait until the writer waits in open() (wait channel wait_for_partner), at most 5 s.
+  for (int i = 0; i < 500; ++i) {
+    std::ifstream wchan("/proc/" + std::to_string(writer) + "/wchan");
+    std::string where;
+    std::getline(wchan, where);
+    if (where.find("partner") != std::string::npos || where.find("fifo") != std::string::npos) break;  // wait_for_partner
+    ::usleep(10 * 1000);
+  }
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EQ(message_of([&] { read_file(fifo, 1000, "a scene file", Pipes::read_once); }),
+            fifo + ": is a named pipe (FIFO), not a regular file (a scene file must be one)");
+  int status = 0;
+  pid_t done = 0;
+  while ((done = ::waitpid(writer, &status, WNOHANG)) == 0 && std::chrono::steady_clock::now() - start < std::chrono::seconds(5)) {
+    ::usleep(10 * 1000);
+  }
+  if (done == 0) {
+    ::kill(writer, SIGKILL);
+    ::waitpid(writer, &status, 0);
+    FAIL() << "the writer still waits on the FIFO after the refusal";
+  }
+  EXPECT_TRUE((WIFSIGNALED(status) && WTERMSIG(status) == SIGPIPE) || (WIFEXITED(status) && WEXITSTATUS(status) == 3))
+      << "status " << status;
 }
 
 TEST(SpecialFiles, ASocketIsRefusedByName) {

@@ -3,7 +3,9 @@
 // recognised by content; the malformed files that package ships give clear errors, no crash.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstdio>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -131,6 +133,38 @@ TEST(MeshImport, BrokenFacesAndHeadersGiveClearErrors) {
   std::ofstream(aborts, std::ios::binary) << found.rdbuf();
   EXPECT_EQ(error_of(aborts, o), aborts + ": the mesh reader (Assimp) failed on it: killed by signal 6 (Aborted) (a "
                                           "malformed file, or one that needs more than 8 GiB of memory)");
+  std::filesystem::remove_all(dir);
+}
+
+// Issue 39: a GLB whose chunk length points past the file was answered by Assimp's "No suitable
+// reader found" after 9 s. Its framing is checked first, whatever the extension, naming the problem.
+TEST(MeshImport, BinaryGltfFramingIsCheckedBeforeAssimp) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "rc_mesh_import_glb";
+  std::filesystem::create_directories(dir);
+  const auto u32 = [](std::uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+  const std::string json = "{\"asset\":{\"version\":\"2.0\"}}     ";  // 32 bytes
+  const auto glb = [&](std::uint32_t version, std::int64_t length_delta, std::uint32_t chunk_length, const std::string& type) {
+    const std::string body = u32(chunk_length) + type + json;
+    return "glTF" + u32(version) + u32(static_cast<std::uint32_t>(12 + body.size() + length_delta)) + body;
+  };
+  const std::pair<std::string, std::string> cases[] = {
+      {glb(2, 0, 999999, "JSON"), "chunk 0 giving its length as 999999 bytes where 32 remain"},
+      {glb(2, 5, 32, "JSON"), "a header that gives its length as 57 bytes where the file has 52"},
+      {glb(3, 0, 32, "JSON"), "version 3 (1 and 2 exist)"},
+      {glb(2, 0, 32, std::string("BIN\0", 4)), "a first chunk that is not JSON"},
+      {"glTF" + u32(2), "no total length: the file ends at byte 8"},
+  };
+  MeshImportOptions o;
+  o.require_emitter = false;
+  for (const std::string& extension : {".glb", ".bin"}) {
+    for (const auto& [bytes, why] : cases) {
+      const std::string path = (dir / ("bad" + extension)).string();
+      std::ofstream(path, std::ios::binary) << bytes;
+      const auto start = std::chrono::steady_clock::now();
+      EXPECT_EQ(error_of(path, o), path + ": a binary glTF (GLB) file with " + why + " (docs/scenes.md, Meshes)");
+      EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(2));
+    }
+  }
   std::filesystem::remove_all(dir);
 }
 

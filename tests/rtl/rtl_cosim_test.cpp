@@ -1,7 +1,7 @@
 // Co-simulation of the Verilog pipeline (rtl/mt_pipeline.v, Verilated) against the C++ bit-exact
 // model (pipeline/fixed_mt.h): at 7, 11, 15, 23 and 31 fractional bits, random integer inputs over the
 // whole ranges (corners included) and every kind of the stress suite (pipeline/stress_cases.h) give the
-// same hit bit, streamed one test per clock; and a valid bit sampled at rising edge c is in the last
+// same hit bit (with the t_guard input at 0, and at 1, 2, 4 and 255), streamed one test per clock; and a valid bit sampled at rising edge c is in the last
 // register after edge c + 36, for the consumer to sample at edge c + 37: 37 register stages exactly.
 // Without Verilator (or a width not built) each test prints "SKIP: <reason>" and is skipped.
 #include <cstdint>
@@ -167,6 +167,31 @@ TEST_P(RtlCosim, StressCasesEqualTheCppPipelineBitForBit) {
   for (const Case& c : cases) expected_hits += c.expected;
   EXPECT_EQ(stream(*rtl, cases, 0), expected_hits);
   EXPECT_GT(expected_hits, 1000u);
+}
+
+// The t_guard input (the guard band on t): with g in {1, 2, 4, 255} held for a whole stream, the RTL
+// gives the C++ model's guarded test (pipeline::segment_hits(..., g)) bit for bit; the stress cases put
+// crossings near both ends and faces of a few LSBs, so the guard turns hits into misses.
+TEST_P(RtlCosim, GuardBandOnTEqualsTheCppPipelineBitForBit) {
+  const int bits = GetParam();
+  REQUIRE_MODEL(bits, false);
+  auto rtl = make_rtl_pipeline(bits);
+  std::size_t flipped = 0;
+  for (int g : {1, 2, 4, 255}) {
+    std::vector<Case> cases = stress_cases(bits, 1500, 300 + g);
+    const std::vector<Case> random = random_cases(bits, 20000, 4000 + bits + g);
+    cases.insert(cases.end(), random.begin(), random.end());
+    std::size_t expected_hits = 0;
+    for (Case& c : cases) {
+      c.in.t_guard = g;
+      const bool unguarded = c.expected;
+      c.expected = pipeline::segment_hits(c.in.face, c.in.start, c.in.end, bits, g);
+      flipped += c.expected != unguarded;
+      expected_hits += c.expected;
+    }
+    EXPECT_EQ(stream(*rtl, cases, g == 2 ? 5 : 0), expected_hits) << "g " << g;
+  }
+  EXPECT_GT(flipped, 100u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Widths, RtlCosim, ::testing::Values(7, 11, 15, 23, 31),

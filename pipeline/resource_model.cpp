@@ -378,9 +378,9 @@ TGuardCost ResourceModel::t_guard_cost(FracBits bits) const {
   const int abs_det = signed_bits(Quantity::AbsDet, bits), t_signed = signed_bits(Quantity::SignedDot, bits);
   c.comparator_bits = std::max(abs_det, t_signed);
   c.luts = abs_det                                   // |det| - g
-           + abs_det                                 // its delay line, ages 26..35 (SRL16: one LUT per bit)
            + t_signed - ceil_div(t_signed, 3);       // g < t*s instead of 0 < t*s
-  c.flip_flops = abs_det;                            // the age-26 register of |det| - g
+  c.flip_flops = 10 * abs_det;                       // |det| - g at age 26 and its delay line to 35 (flip-flops,
+                                                     // as rtl/mt_pipeline.v's mt_delay chains)
   c.slices = slices_for(c.luts, c.flip_flops);
   c.added_latency = 0;
   return c;

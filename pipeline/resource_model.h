@@ -62,11 +62,13 @@ struct DesignResources {
 
 // What the guard band on t (mt_core.h, core::decide(s, t_guard); rtl/mt_pipeline.v's t_guard input) adds
 // to one fixed-point lane, counted by fixed_arithmetic_luts' rules: the subtractor |det| - g (one LUT per
-// bit of |det|, its register), its delay line to the decision (ages 26..35: shift-register LUTs, one per
-// bit, as SRL16s hold up to 16 stages) and the comparison 0 < t*s widened to g < t*s (a comparator of the
-// t*s width instead of a zero detect of it). The latency is unchanged: the subtraction sits beside the
-// dot products, which take nine more cycles. Not part of PipelineResources (the paper's lanes have no
-// guard): a design with the T_GUARD port adds it.
+// bit of |det|), its register and delay line to the decision (ages 26..35: ten flip-flops per bit, plain
+// chains as in the RTL) and the comparison 0 < t*s widened to g < t*s (a comparator of the t*s width
+// instead of a zero detect of it). The latency is unchanged: the subtraction sits beside the dot
+// products, which take nine more cycles. At 15 bits: 31 LUTs, 190 flip-flops, 95 slices, which is what
+// Yosys finds between rtl/mt_pipeline.v with T_GUARD = 1 and 0 (xc2v, block multipliers: +12 LUTs, +190
+// flip-flops, +39 carry cells, +95 slices by scripts/synthesize's packing rule). Not part of
+// PipelineResources (the paper's lanes have no guard): a design with the T_GUARD port adds it.
 struct TGuardCost {
   int luts = 0;
   int flip_flops = 0;

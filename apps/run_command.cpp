@@ -79,13 +79,14 @@ void measure_fidelity(const RunOptions& o, const Scene& scene, const DecisionSam
                       ProgressLine& progress) {
   if (!in_pipeline_arithmetic(o) || o.fidelity_sample == 0) return;
   progress.update("checking %zu sampled segments against double precision", sampler.sample().size());
-  out.fidelity = estimate_fidelity(scene, sampler.sample(), sampler.population(), o.arith, o.bits);
+  out.fidelity = estimate_fidelity(scene, sampler.sample(), sampler.population(), o.arith, o.bits, 0, o.solver.fixes.t_guard);
   out.fidelity_warning = fidelity_warning(*out.fidelity, o.fidelity_warn, o.bits);
 }
 
 RunOutcome run_software(const RunOptions& o, const Scene& scene, ProgressLine& progress, const RunHooks& hooks) {
   // A float pipeline (--arith float:E,M) answers as the backend of that name (pipeline/float_mt.h).
-  auto visibility = make_software_visibility(float_arith(o) ? o.arith.name() : choice_name(o.visibility), o.bits);
+  auto visibility = make_software_visibility(float_arith(o) ? o.arith.name() : choice_name(o.visibility), o.bits, 0,
+                                             o.solver.fixes.t_guard);
   HostWorkCounter work;
   ProgressiveRadiosity solver(scene, *visibility, o.solver, &work);
   solver.on_progress([&](const StepProgress& p) {
@@ -145,7 +146,7 @@ RunOutcome run_board(const RunOptions& o, const Scene& scene, ProgressLine& prog
   // float lanes copy the `float:E,M` software backend's (tests BoardSystem.FloatLanes*).
   std::unique_ptr<VisibilityBackend> oracle;
   if (!o.lanes_compute && o.lanes_impl == LanesImpl::cpp) {
-    oracle = make_functional_answer(float_arith(o) ? o.arith.name() : "fast", o.bits);
+    oracle = make_functional_answer(float_arith(o) ? o.arith.name() : "fast", o.bits, 0, o.solver.fixes.t_guard);
     board.oracle = oracle.get();
   }
   if (board.trace) parse_trace_steps(o.trace_steps, board);

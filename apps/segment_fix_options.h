@@ -1,5 +1,6 @@
 // --offset-lsb, --neighbour-rings and --coordinate-bits: the host-side fixes for fixed-point self-shadowing
-// (host_sw/radiosity/segment_fixes.h; docs/radiosity.md, "Fixed-point acne and its fixes").
+// (host_sw/radiosity/segment_fixes.h; docs/radiosity.md, "Fixed-point acne and its fixes"); --t-guard: the
+// guard band on the pipeline's t test (in the lanes; SegmentFixOptions::t_guard, 0..pipeline::kMaxTGuard).
 #pragma once
 
 #include <CLI/CLI.hpp>

@@ -224,6 +224,7 @@ Fix parse_fix(const std::string& text) {
     const int value = std::atoi(part.substr(colon + 1).c_str());
     if (key == "offset") f.options.offset_lsb = value;
     else if (key == "guard") f.guard = value;
+    else if (key == "tguard") f.options.t_guard = value;  // the guard band on t, in the lanes (--t-guard)
     else if (key == "rings") f.options.neighbour_rings = value;
     else throw std::invalid_argument("unknown fix '" + part + "'");
   }
@@ -239,7 +240,8 @@ int fixes(const Scene& scene, const std::vector<int>& widths, const std::vector<
   mean /= double(reference.radiosity.size() * kBands);
   std::printf("%zu faces, %zu patches; double solve %d steps (%.0f s)\n", scene.faces.size(), scene.patches.size(), reference.steps,
               std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-  std::printf("%5s %-18s %6s %11s %11s %9s %13s\n", "bits", "fix", "steps", "rel. RMSE", "rel. max", "differ%", "re-tests/seg");
+  std::printf("%5s %-18s %6s %11s %11s %9s %13s %9s %9s\n", "bits", "fix", "steps", "rel. RMSE", "rel. max", "differ%", "re-tests/seg",
+              "false%", "missing%");
   for (int bits : widths) {
     for (const Fix& fix : list) {
       SegmentFixOptions fo = fix.options;
@@ -247,7 +249,7 @@ int fixes(const Scene& scene, const std::vector<int>& widths, const std::vector<
       if (fix.guard != 0) fo.coordinate_bits = bits;
       SolverOptions so;
       so.fixes = fo;
-      auto pipeline = make_software_visibility("fast", fo.bits, 0);
+      auto pipeline = make_software_visibility("fast", fo.bits, 0, fo.t_guard);
       const SolverResult solved = ProgressiveRadiosity(scene, *pipeline, so).run();
       double sq = 0, max_abs = 0;
       for (std::size_t p = 0; p < solved.radiosity.size(); ++p) {
@@ -259,13 +261,17 @@ int fixes(const Scene& scene, const std::vector<int>& widths, const std::vector<
       }
       const double rmse = std::sqrt(sq / double(solved.radiosity.size() * kBands));
       FloatVisibility double_answer;
-      auto shadow_pipeline = make_software_visibility("fast", fo.bits, 0);
+      auto shadow_pipeline = make_software_visibility("fast", fo.bits, 0, fo.t_guard);
       FixedSegmentsVisibility shadow(*shadow_pipeline, fo);
       ComparingVisibility compare(double_answer, shadow);
       ProgressiveRadiosity(scene, compare, SolverOptions{}).run();
       const auto differ = compare.shadow_blocks_answer_clear() + compare.answer_blocks_shadow_clear();
-      std::printf("%5d %-18s %6d %11.3e %11.3e %9.3f %13.2f\n", bits, fix.name.c_str(), solved.steps, rmse / mean, max_abs / mean,
-                  pct(differ, compare.segments_compared()), double(solved.fix_tests) / double(solved.segments ? solved.segments : 1));
+      // false: the pipeline blocks a segment double finds clear (a false shadow); missing: the reverse.
+      std::printf("%5d %-18s %6d %11.3e %11.3e %9.3f %13.2f %9.3f %9.3f\n", bits, fix.name.c_str(), solved.steps, rmse / mean,
+                  max_abs / mean, pct(differ, compare.segments_compared()),
+                  double(solved.fix_tests) / double(solved.segments ? solved.segments : 1),
+                  pct(compare.shadow_blocks_answer_clear(), compare.segments_compared()),
+                  pct(compare.answer_blocks_shadow_clear(), compare.segments_compared()));
       std::fflush(stdout);
     }
   }
@@ -295,6 +301,6 @@ int main(int argc, char** argv) {
     return 1;
   }
   std::fprintf(stderr, "usage: acne_diagnosis mechanism SCENE PATCH_LEVELS BITS[,..] STEPS PER_STEP\n"
-                       "       acne_diagnosis fixes SCENE PATCH_LEVELS BITS[,..] 'none;offset:K;rings:R;offset:K+rings:R'\n");
+                       "       acne_diagnosis fixes SCENE PATCH_LEVELS BITS[,..] 'none;offset:K;rings:R;guard:G;tguard:G;offset:K+rings:R'\n");
   return 2;
 }

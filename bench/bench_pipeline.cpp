@@ -102,6 +102,26 @@ void BM_FixedKernelMasked(benchmark::State& state) {
 }
 BENCHMARK(BM_FixedKernelMasked)->Arg(15)->Arg(31);
 
+// The same stream with a guard band on t (--t-guard G): its own loop (fixed_mt.cpp), so the paper's test
+// (G = 0, BM_FixedKernel) keeps its code; this measures what the guard's extra subtraction costs.
+void BM_FixedKernelTGuard(benchmark::State& state) {
+  const int bits = static_cast<int>(state.range(0));
+  const int guard = static_cast<int>(state.range(1));
+  const Workload& w = workload();
+  const rc::pipeline::FaceRecord face = rc::pipeline::make_face_record(w.face, bits);
+  const rc::pipeline::FixedVec3 start = rc::pipeline::quantize_point(w.start, bits);
+  const QuantisedEnds ends(w, bits);
+  const std::vector<std::int64_t>&x = ends.x, &y = ends.y, &z = ends.z;
+  std::vector<std::uint8_t> blocked(kRays, 0);
+  for (auto _ : state) {
+    rc::pipeline::occlude_face(face, start, x.data(), y.data(), z.data(), kRays, bits, blocked.data(), nullptr, guard);
+    benchmark::DoNotOptimize(blocked.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * kRays));
+}
+BENCHMARK(BM_FixedKernelTGuard)->ArgsProduct({{15, 31}, {0, 2}});
+
 // One segment at a time through the scalar entry point: the cost without the streaming layout.
 void BM_FixedScalar(benchmark::State& state) {
   const int bits = static_cast<int>(state.range(0));

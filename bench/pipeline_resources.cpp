@@ -83,6 +83,15 @@ void print_resources(const rc::pipeline::ResourceModel& model) {
       }
     }
   }
+  std::printf("\nThe guard band on t (--t-guard, the T_GUARD port; pipeline::TGuardCost): added to one lane, counted "
+              "LUTs and flip-flops, slices by the model's packing; latency unchanged.\n\n");
+  std::printf("| bits | comparator bits | LUTs | flip-flops | slices | share of the lane (soft mults) | added latency |\n");
+  std::printf("|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (int bits : {7, 11, 15, 19, 23, 27, 31}) {
+    const rc::pipeline::TGuardCost c = model.t_guard_cost(bits);
+    std::printf("| %d | %d | %d | %d | %d | %.2f%% | %d |\n", bits, c.comparator_bits, c.luts, c.flip_flops, c.slices,
+                100.0 * c.slices / model.pipeline(bits, false).slices, c.added_latency);
+  }
 }
 
 // `paper`: the model the synthesis source was made from (its figures beside); `model`: with the synthesis.

@@ -18,6 +18,9 @@ struct ClockedLaneInput {
   bool valid = false;
   pipeline::FixedVec3 start{0, 0, 0}, end{0, 0, 0};
   pipeline::FaceRecord face{};
+  // The guard band on t (T_GUARD [7:0], the same for every test of a pass): a static input port of
+  // the lane, not a pipelined one (rtl/mt_pipeline.v's t_guard).
+  int t_guard = 0;
 };
 
 class ClockedLanes {

@@ -239,6 +239,7 @@ bool CycleWrapper::try_issue(unsigned g) {
       in.start = m_in.start;
       in.end = end;
       in.face = m_face_record;
+      in.t_guard = m_in.t_guard;
     } else if (m_layout.float_format) {
       const pipeline::FloatFormat format = *m_layout.float_format;
       lane.fdirection = pipeline::segment_direction(m_float_start, float_point_from_codes(end.x, end.y, end.z, format),
@@ -279,7 +280,7 @@ void CycleWrapper::advance_pipeline() {
       }
       if (age == s1) lane.s1 = pipeline::stage1(p.face, m_in.start, lane.direction, bits);
       if (age == s2) lane.s2 = pipeline::stage2(p.face, lane.s1, bits);
-      if (age == s3) lane.s3 = pipeline::stage3(p.face, lane.direction, lane.s1, lane.s2, bits);
+      if (age == s3) lane.s3 = pipeline::stage3(p.face, lane.direction, lane.s1, lane.s2, bits, m_in.t_guard);
     }
   }
 }

@@ -116,9 +116,10 @@ void FastWrapper::compute(const PassInputs& in) {
     if (in.in_source_sheet(f)) continue;
     const std::uint64_t lo = own.lo, hi = own.hi;
     const pipeline::FaceRecord face = face_record(f);
-    pipeline::occlude_face(face, in.start, m_x.data(), m_y.data(), m_z.data(), lo, m_layout.bits, m_blocked.data());
+    pipeline::occlude_face(face, in.start, m_x.data(), m_y.data(), m_z.data(), lo, m_layout.bits, m_blocked.data(),
+                           nullptr, in.t_guard);
     pipeline::occlude_face(face, in.start, m_x.data() + hi, m_y.data() + hi, m_z.data() + hi, R - hi, m_layout.bits,
-                           m_blocked.data() + hi);
+                           m_blocked.data() + hi, nullptr, in.t_guard);
   }
 }
 

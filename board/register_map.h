@@ -34,7 +34,13 @@ constexpr std::uint64_t kSourceFaces = 0x40;  // faces of the shooter's sheet fr
 constexpr std::uint64_t kRayBase = 0x44;      // word offset of the pass's rays in every ray bank
 constexpr std::uint64_t kResultBase = 0x48;   // word offset of the pass's result words in the result bank
 constexpr std::uint64_t kTableBase = 0x4C;    // word offset of the own-surface table from its usual place
-constexpr std::uint64_t kSize = 0x50;         // bytes of register space in use
+// The guard band on the lanes' t test (docs/board.md, "T_GUARD"; pipeline/fixed_format.h): bits [7:0] are g,
+// a segment is blocked by a face only for g < t*s < |det| - g; bits [31:8] are held but unused. 0 at reset:
+// the paper's test, so a driver that never writes it gets the paper's answers. Fixed-point lanes only
+// (the driver refuses a guard with float lanes).
+constexpr std::uint64_t kTGuard = 0x50;
+constexpr std::uint64_t kTGuardMask = 0xFF;
+constexpr std::uint64_t kSize = 0x54;         // bytes of register space in use
 constexpr std::uint64_t kBarSize = 0x1000;    // BAR0 size
 
 constexpr std::uint32_t kIdValue = 0x52433230;

@@ -91,6 +91,7 @@ void WrapperBase::read_inputs(PassInputs& in) {
   in.ray_base = m_regs.pass_value(reg::kRayBase);
   in.result_base = m_regs.pass_value(reg::kResultBase);
   in.table_base = m_regs.pass_value(reg::kTableBase);
+  in.t_guard = static_cast<int>(m_regs.pass_value(reg::kTGuard) & reg::kTGuardMask);
   in.split = m_split(in.rays);
   const std::uint64_t table_home = m_layout.mask_bank ? 0 : in.faces * m_layout.face_words();
   m_table_first = table_home + in.table_base;

@@ -39,6 +39,7 @@ struct PassInputs {
   std::uint64_t rays = 0, faces = 0;
   std::uint32_t face_first = 0, source_face = reg::kNoFace, source_faces = 1, mask_start = 0;
   std::uint32_t ray_base = 0, result_base = 0, table_base = 0;  // the windows (register_map.h), in words
+  int t_guard = 0;  // T_GUARD [7:0]: the lanes' guard band on t (fixed-point lanes)
   pipeline::FixedVec3 start{0, 0, 0};  // codes (float lanes: the values' bit patterns)
   bool clear = false;
   RaySplit split;

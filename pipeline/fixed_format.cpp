@@ -14,4 +14,11 @@ void validate_frac_bits(int bits) {
   }
 }
 
+void validate_t_guard(int t_guard) {
+  if (!is_valid_t_guard(t_guard)) {
+    throw std::invalid_argument("t guard " + std::to_string(t_guard) + " LSB is out of range: the pipeline takes 0 to " +
+                                std::to_string(kMaxTGuard) + " LSBs (8 bits)");
+  }
+}
+
 }  // namespace rc::pipeline

@@ -16,6 +16,14 @@ constexpr bool is_valid_frac_bits(int bits) { return bits >= kMinFracBits && bit
 // Throws std::invalid_argument naming the width and the accepted range.
 void validate_frac_bits(int bits);
 
+// The guard band on the pipeline's t test, in LSBs of t*s (mt_core.h, core::decide(s, t_guard)): a
+// segment is blocked only for g < t*s < |det| - g. 0 is the paper's test. The wrapper's T_GUARD
+// register holds it in 8 bits (board/register_map.h), the RTL's t_guard input too, so 0..255.
+constexpr int kMaxTGuard = 255;
+constexpr bool is_valid_t_guard(int t_guard) { return t_guard >= 0 && t_guard <= kMaxTGuard; }
+// Throws std::invalid_argument naming the guard and the accepted range.
+void validate_t_guard(int t_guard);
+
 // A fractional width the pipeline supports, valid by construction: the width is checked once, when
 // an int becomes a FracBits (std::invalid_argument naming it and the range), and every function that
 // takes a FracBits relies on it instead of checking again. The conversion from int is implicit on

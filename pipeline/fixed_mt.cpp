@@ -25,13 +25,14 @@ bool in_range(const FixedVec3& v, Quantity q, int bits) {
 // below compiles the whole loop, core included, for its own instruction set.
 // Bank: the end points' integer type in memory (64-bit, or 32-bit for widths <= 15, which saves
 // narrowing them in every pass).
-template <class Int, bool kMasked, class Bank>
+template <class Int, bool kMasked, bool kGuarded, class Bank>
 [[gnu::always_inline]] inline void occlude_loop(const FaceRecord& face, const FixedVec3& start,
                                                 const Bank* __restrict end_x,
                                                 const Bank* __restrict end_y,
                                                 const Bank* __restrict end_z, std::size_t n,
                                                 int bits, std::uint8_t* __restrict blocked,
-                                                const std::uint8_t* __restrict skip) {
+                                                const std::uint8_t* __restrict skip, int t_guard) {
+  [[maybe_unused]] const Int guard = Int(t_guard);
   const IntVec3<Int> v0 = vec_cast<Int>(face.v0), e1 = vec_cast<Int>(face.edge1),
                      e2 = vec_cast<Int>(face.edge2), s = vec_cast<Int>(start);
   // The face and start are the same for every end point, so the compiler hoists tvec, qvec and
@@ -39,7 +40,12 @@ template <class Int, bool kMasked, class Bank>
   for (std::size_t i = 0; i < n; ++i) {
     assert(is_position({end_x[i], end_y[i], end_z[i]}, bits));
     const IntVec3<Int> end{Int(end_x[i]), Int(end_y[i]), Int(end_z[i])};
-    bool hit = pipeline_hits(v0, e1, e2, s, end, bits);
+    bool hit;
+    if constexpr (kGuarded) {
+      hit = pipeline_hits(v0, e1, e2, s, end, bits, guard);
+    } else {
+      hit = pipeline_hits(v0, e1, e2, s, end, bits);
+    }
     if constexpr (kMasked) hit &= skip[i] == 0;
     blocked[i] |= std::uint8_t(hit);
   }
@@ -56,30 +62,54 @@ struct OccludeKernels {
 #define RC_OCCLUDE_PARAMS                                                                    \
   const FaceRecord &face, const FixedVec3 &start, const std::int64_t *end_x,                \
       const std::int64_t *end_y, const std::int64_t *end_z, std::size_t n, int bits,        \
-      std::uint8_t *blocked, const std::uint8_t *skip
+      std::uint8_t *blocked, const std::uint8_t *skip, int t_guard
 #define RC_OCCLUDE32_PARAMS                                                                  \
   const FaceRecord &face, const FixedVec3 &start, const std::int32_t *end_x,                \
       const std::int32_t *end_y, const std::int32_t *end_z, std::size_t n, int bits,        \
-      std::uint8_t *blocked, const std::uint8_t *skip
-#define RC_OCCLUDE_ARGS face, start, end_x, end_y, end_z, n, bits, blocked, skip
+      std::uint8_t *blocked, const std::uint8_t *skip, int t_guard
+#define RC_OCCLUDE_ARGS face, start, end_x, end_y, end_z, n, bits, blocked, skip, t_guard
 #define RC_DEFINE_OCCLUDE_KERNELS(isa, target)                                                 \
   target void occlude32_##isa(RC_OCCLUDE_PARAMS) {                                           \
-    occlude_loop<std::int32_t, false>(RC_OCCLUDE_ARGS);                                      \
+    if (t_guard == 0) {                                                                      \
+      occlude_loop<std::int32_t, false, false>(RC_OCCLUDE_ARGS);                             \
+    } else {                                                                                 \
+      occlude_loop<std::int32_t, false, true>(RC_OCCLUDE_ARGS);                              \
+    }                                                                                        \
   }                                                                                          \
   target void occlude32_masked_##isa(RC_OCCLUDE_PARAMS) {                                    \
-    occlude_loop<std::int32_t, true>(RC_OCCLUDE_ARGS);                                       \
+    if (t_guard == 0) {                                                                      \
+      occlude_loop<std::int32_t, true, false>(RC_OCCLUDE_ARGS);                              \
+    } else {                                                                                 \
+      occlude_loop<std::int32_t, true, true>(RC_OCCLUDE_ARGS);                               \
+    }                                                                                        \
   }                                                                                          \
   target void occlude64_##isa(RC_OCCLUDE_PARAMS) {                                           \
-    occlude_loop<std::int64_t, false>(RC_OCCLUDE_ARGS);                                      \
+    if (t_guard == 0) {                                                                      \
+      occlude_loop<std::int64_t, false, false>(RC_OCCLUDE_ARGS);                             \
+    } else {                                                                                 \
+      occlude_loop<std::int64_t, false, true>(RC_OCCLUDE_ARGS);                              \
+    }                                                                                        \
   }                                                                                          \
   target void occlude64_masked_##isa(RC_OCCLUDE_PARAMS) {                                    \
-    occlude_loop<std::int64_t, true>(RC_OCCLUDE_ARGS);                                       \
+    if (t_guard == 0) {                                                                      \
+      occlude_loop<std::int64_t, true, false>(RC_OCCLUDE_ARGS);                              \
+    } else {                                                                                 \
+      occlude_loop<std::int64_t, true, true>(RC_OCCLUDE_ARGS);                               \
+    }                                                                                        \
   }                                                                                          \
   target void occlude32_banks32_##isa(RC_OCCLUDE32_PARAMS) {                                 \
-    occlude_loop<std::int32_t, false>(RC_OCCLUDE_ARGS);                                      \
+    if (t_guard == 0) {                                                                      \
+      occlude_loop<std::int32_t, false, false>(RC_OCCLUDE_ARGS);                             \
+    } else {                                                                                 \
+      occlude_loop<std::int32_t, false, true>(RC_OCCLUDE_ARGS);                              \
+    }                                                                                        \
   }                                                                                          \
   target void occlude32_banks32_masked_##isa(RC_OCCLUDE32_PARAMS) {                          \
-    occlude_loop<std::int32_t, true>(RC_OCCLUDE_ARGS);                                       \
+    if (t_guard == 0) {                                                                      \
+      occlude_loop<std::int32_t, true, false>(RC_OCCLUDE_ARGS);                              \
+    } else {                                                                                 \
+      occlude_loop<std::int32_t, true, true>(RC_OCCLUDE_ARGS);                               \
+    }                                                                                        \
   }                                                                                          \
   constexpr OccludeKernels kOcclude_##isa{occlude32_##isa,         occlude32_masked_##isa,   \
                                          occlude64_##isa,         occlude64_masked_##isa,   \
@@ -168,32 +198,40 @@ Stage2Result stage2(const FaceRecord& face, const Stage1Result& s1, FracBits bit
 }
 
 Stage3Result stage3(const FaceRecord& face, const FixedVec3& direction, const Stage1Result& s1,
-                    const Stage2Result& s2, FracBits bits) {
+                    const Stage2Result& s2, FracBits bits, int t_guard) {
+  assert(is_valid_t_guard(t_guard));
   NoProbe probe;
-  return stage3(face.edge2, direction, s1, s2, bits, probe);
+  Stage3Result r = stage3(face.edge2, direction, s1, s2, bits, probe);
+  if (t_guard != 0) r.hit = core::decide(r, std::int64_t(t_guard));
+  return r;
 }
 
-Trace trace(const FaceRecord& face, const FixedVec3& start, const FixedVec3& end, FracBits bits) {
+Trace trace(const FaceRecord& face, const FixedVec3& start, const FixedVec3& end, FracBits bits, int t_guard) {
   assert(is_face_record(face, bits) && is_position(start, bits) && is_position(end, bits));
+  validate_t_guard(t_guard);
   Trace t;
   t.bits = bits;
   TraceProbe probe{&t};
   t.values = run_pipeline(face.v0, face.edge1, face.edge2, start, end, bits, probe);
+  if (t_guard != 0) t.values.stage3.hit = core::decide(t.values.stage3, std::int64_t(t_guard));
   return t;
 }
 
-bool segment_hits(const FaceRecord& face, const FixedVec3& start, const FixedVec3& end, FracBits bits) {
+bool segment_hits(const FaceRecord& face, const FixedVec3& start, const FixedVec3& end, FracBits bits, int t_guard) {
   assert(is_face_record(face, bits) && is_position(start, bits) && is_position(end, bits));
-  return pipeline_hits(face.v0, face.edge1, face.edge2, start, end, bits);
+  if (t_guard == 0) return pipeline_hits(face.v0, face.edge1, face.edge2, start, end, bits);
+  validate_t_guard(t_guard);
+  return pipeline_hits(face.v0, face.edge1, face.edge2, start, end, bits, std::int64_t(t_guard));
 }
 
 void occlude_face(const FaceRecord& face, const FixedVec3& start, const std::int64_t* end_x,
                   const std::int64_t* end_y, const std::int64_t* end_z, std::size_t n, FracBits bits,
-                  std::uint8_t* blocked, const std::uint8_t* skip) {
+                  std::uint8_t* blocked, const std::uint8_t* skip, int t_guard) {
   // Checked once: the culled backend calls this for every face with a handful of candidates.
   static const OccludeKernels& best = occlude_kernels(best_kernel_isa());
   assert(is_face_record(face, bits) && is_position(start, bits));
-  select_kernel(best, bits, skip != nullptr)(face, start, end_x, end_y, end_z, n, bits, blocked, skip);
+  if (t_guard != 0) validate_t_guard(t_guard);
+  select_kernel(best, bits, skip != nullptr)(face, start, end_x, end_y, end_z, n, bits, blocked, skip, t_guard);
 }
 
 OccludeKernel occlude_kernel(KernelIsa isa, FracBits bits, bool masked) {
@@ -211,9 +249,11 @@ OccludeKernel32 occlude_kernel32(KernelIsa isa, FracBits bits, bool masked) {
 
 void occlude_face(KernelIsa isa, const FaceRecord& face, const FixedVec3& start,
                   const std::int64_t* end_x, const std::int64_t* end_y, const std::int64_t* end_z,
-                  std::size_t n, FracBits bits, std::uint8_t* blocked, const std::uint8_t* skip) {
+                  std::size_t n, FracBits bits, std::uint8_t* blocked, const std::uint8_t* skip, int t_guard) {
   assert(is_face_record(face, bits) && is_position(start, bits));
-  select_kernel(occlude_kernels(isa), bits, skip != nullptr)(face, start, end_x, end_y, end_z, n, bits, blocked, skip);
+  validate_t_guard(t_guard);
+  select_kernel(occlude_kernels(isa), bits, skip != nullptr)(face, start, end_x, end_y, end_z, n, bits, blocked, skip,
+                                                             t_guard);
 }
 
 }  // namespace rc::pipeline

@@ -373,6 +373,19 @@ int ResourceModel::fixed_arithmetic_luts(FracBits bits) {
   return luts;
 }
 
+TGuardCost ResourceModel::t_guard_cost(FracBits bits) const {
+  TGuardCost c;
+  const int abs_det = signed_bits(Quantity::AbsDet, bits), t_signed = signed_bits(Quantity::SignedDot, bits);
+  c.comparator_bits = std::max(abs_det, t_signed);
+  c.luts = abs_det                                   // |det| - g
+           + t_signed - ceil_div(t_signed, 3);       // g < t*s instead of 0 < t*s
+  c.flip_flops = 10 * abs_det;                       // |det| - g at age 26 and its delay line to 35 (flip-flops,
+                                                     // as rtl/mt_pipeline.v's mt_delay chains)
+  c.slices = slices_for(c.luts, c.flip_flops);
+  c.added_latency = 0;
+  return c;
+}
+
 // What the paper's measured block-multiplier lanes (Table 1, 7 and 15 bits) hold beyond that
 // counted arithmetic -- pipeline registers and delay lines over 37 stages, the blocks' interface,
 // System Generator glue -- is linear in the width (two points); the float lane carries values of

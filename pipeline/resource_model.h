@@ -60,6 +60,23 @@ struct DesignResources {
   bool interpolated = false;  // any ingredient was modelled rather than measured
 };
 
+// What the guard band on t (mt_core.h, core::decide(s, t_guard); rtl/mt_pipeline.v's t_guard input) adds
+// to one fixed-point lane, counted by fixed_arithmetic_luts' rules: the subtractor |det| - g (one LUT per
+// bit of |det|), its register and delay line to the decision (ages 26..35: ten flip-flops per bit, plain
+// chains as in the RTL) and the comparison 0 < t*s widened to g < t*s (a comparator of the t*s width
+// instead of a zero detect of it). The latency is unchanged: the subtraction sits beside the dot
+// products, which take nine more cycles. At 15 bits: 31 LUTs, 190 flip-flops, 95 slices, which is what
+// Yosys finds between rtl/mt_pipeline.v with T_GUARD = 1 and 0 (xc2v, block multipliers: +12 LUTs, +190
+// flip-flops, +39 carry cells, +95 slices by scripts/synthesize's packing rule). Not part of
+// PipelineResources (the paper's lanes have no guard): a design with the T_GUARD port adds it.
+struct TGuardCost {
+  int luts = 0;
+  int flip_flops = 0;
+  int slices = 0;
+  int added_latency = 0;  // cycles
+  int comparator_bits = 0;  // the width of the subtractor and of the widened comparator (t*s, |det|)
+};
+
 struct Device {
   std::string name;
   int slices = 0;
@@ -156,6 +173,8 @@ class ResourceModel {
   double soft_multiplier_slices_per_bit_product() const;
   // counted LUTs of the fixed lane's add/subs, direction subtractors, |det| and comparators,
   static int fixed_arithmetic_luts(FracBits bits);
+  // The guard band on t's extra logic in one lane (TGuardCost).
+  TGuardCost t_guard_cost(FracBits bits) const;
   // the rest of the measured fixed lane (registers, glue), linear in the width and evaluated at
   // `word_bits` (the fixed lane's coordinate is `bits` wide).
   double glue_slices(int word_bits) const;

@@ -7,6 +7,18 @@
 //              1: every multiplier is an explicit signed partial-product array of adders (slice logic,
 //              for synthesis without block multipliers). Both compute the same bits.
 //
+//   T_GUARD    0: the paper's pipeline, the t_guard input is ignored (what scripts/synthesize records);
+//              1: the guard band on t is built (the Verilated models of the board's RTL lanes).
+//
+// Static input
+//   t_guard    the guard band on t, 8 bits unsigned (the wrapper's T_GUARD register [7:0]): with T_GUARD = 1
+//              a segment is blocked only for t_guard < t*s < |det| - t_guard; t_guard = 0 is the paper's
+//              test. Not pipelined: it must be held while tests are in flight (the wrapper changes it only
+//              between passes). Its cost: one subtractor |det| - t_guard (age 26, from |det| at 25, held to
+//              35 beside |det|) and the comparison 0 < t*s widened to t_guard < t*s, both of the t width
+//              (S = N+4 bits); the latency is unchanged, the subtraction sits in the slack while u, v, t
+//              are formed.
+//
 // Number formats (every value is an integer count of 2^-N, two's complement where signed; "s" = signed):
 //   position  start, end, v0                      unsigned 0.N     N bits    [0, 2^N - 1]
 //   difference  edge1, edge2, dir, tvec           s 1.N            N+1 bits  |d| <= 2^N - 1
@@ -36,7 +48,7 @@
 //   stage 1      pvec products 7, pvec (subtract) 8;  tvec (subtract) 1;  stage 1 ends at age 12
 //   stage 2      qvec products 19, qvec 20;  det products 19, det x+y 20, det 21;  ends at age 24
 //   stage 3      |det| and s 25;  u, v, t products 31, x+y 32, u/v/t 33;  u*s, v*s, t*s 34;
-//                u*s + v*s 35;  the six comparisons and their AND (out_hit), out_valid 36
+//                |det| - t_guard 26;  u*s + v*s 35;  the six comparisons and their AND (out_hit), out_valid 36
 // Values are held in delay registers (flip-flops, plain shift chains) between where they are formed and
 // where they are used; the stage ends (12, 24, 36) are the ages at which the C++ cycle-level wrapper
 // (board/cycle_wrapper.h) evaluates stages 1, 2 and 3.
@@ -175,7 +187,7 @@ module mt_dot #(parameter WA = 8, parameter WB = 8, parameter WT = 8, parameter 
   assign d = sum;
 endmodule
 
-module mt_pipeline #(parameter N = 15, parameter SOFT_MULTS = 0) (
+module mt_pipeline #(parameter N = 15, parameter SOFT_MULTS = 0, parameter T_GUARD = 0) (
   input              clk,
   input              rst,
   input              in_valid,
@@ -184,6 +196,7 @@ module mt_pipeline #(parameter N = 15, parameter SOFT_MULTS = 0) (
   input  [N-1:0]     v0_x, v0_y, v0_z,           // triangle vertex 0, unsigned 0.N
   input  [N:0]       e1_x, e1_y, e1_z,           // edge1 = v1 - v0, signed 1.N
   input  [N:0]       e2_x, e2_y, e2_z,           // edge2 = v2 - v0, signed 1.N
+  input  [7:0]       t_guard,                    // guard band on t in LSBs (static; see the header)
   output             out_valid,
   output             out_hit
 );
@@ -257,6 +270,20 @@ module mt_pipeline #(parameter N = 15, parameter SOFT_MULTS = 0) (
   wire signed [S-1:0] abs35;
   mt_delay #(.W(2), .D(33 - 25)) d_s33 (.clk(clk), .d(s25), .q(s33));
   mt_delay #(.W(S), .D(35 - 25)) d_abs35 (.clk(clk), .d(abs25), .q(abs35));
+  // The t test's bounds: t_guard and |det| - t_guard (age 26; |det| < 2^(S-1) and t_guard < 2^8 <= 2^(S-1)
+  // as S >= 11, so the difference fits S signed bits), or 0 and |det| without the guard (T_GUARD = 0)
+  wire signed [S-1:0] guard_s, absg35;
+  generate
+    if (T_GUARD != 0) begin : g_guard
+      assign guard_s = $signed({{(S - 8){1'b0}}, t_guard});
+      reg signed [S-1:0] absg26;
+      always @(posedge clk) absg26 <= abs25 - guard_s;
+      mt_delay #(.W(S), .D(35 - 26)) d_absg35 (.clk(clk), .d(absg26), .q(absg35));
+    end else begin : g_no_guard
+      assign guard_s = {S{1'b0}};
+      assign absg35 = abs35;
+    end
+  endgenerate
   // u*s, v*s, t*s (age 34): multipliers by the 2-bit sign, exact (no truncation), one register
   wire signed [S-1:0] us34, vs34, ts34;
   mt_mul #(S, 2, S, 0, 1, SOFT_MULTS) m_su (clk, u33, s33, us34);
@@ -269,11 +296,12 @@ module mt_pipeline #(parameter N = 15, parameter SOFT_MULTS = 0) (
     uv35 <= us34 + vs34;
     us35 <= us34; vs35 <= vs34; ts35 <= ts34;
   end
-  // the decision (age 36): 0 < u*s < |det|, 0 < v*s, u*s + v*s < |det|, 0 < t*s < |det|; all strict
+  // the decision (age 36): 0 < u*s < |det|, 0 < v*s, u*s + v*s < |det|, t_guard < t*s < |det| - t_guard;
+  // all strict (t_guard = 0: the paper's 0 < t*s < |det|)
   wire signed [S:0] abs35_w = abs35;
   reg hit36;
   always @(posedge clk)
-    hit36 <= (us35 > 0) & (us35 < abs35) & (vs35 > 0) & (uv35 < abs35_w) & (ts35 > 0) & (ts35 < abs35);
+    hit36 <= (us35 > 0) & (us35 < abs35) & (vs35 > 0) & (uv35 < abs35_w) & (ts35 > guard_s) & (ts35 < absg35);
   // valid: age 0 -> 36
   reg [35:0] valid_chain;
   always @(posedge clk) valid_chain <= rst ? 36'd0 : {valid_chain[34:0], valid0};

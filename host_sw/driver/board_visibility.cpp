@@ -34,6 +34,11 @@ BoardVisibility::BoardVisibility(BoardPorts ports, HostCpuModel& cpu, BoardVisib
   if (options_.oracle != nullptr && ports_.board.model != board::WrapperModel::fast) {
     throw std::invalid_argument("a visibility oracle needs the fast wrapper model (the cycle-level one always computes)");
   }
+  pipeline::validate_t_guard(options_.t_guard);
+  if (options_.t_guard != 0 && layout_.float_format) {
+    throw std::invalid_argument("a t guard band needs fixed-point lanes; float lanes (" + layout_.float_format->to_string() +
+                                ") have no LSB to count");
+  }
   if (options_.cpu_split.on() && options_.oracle == nullptr && options_.cpu_kernel == nullptr) {
     throw std::invalid_argument("a CPU/FPGA split needs a host kernel bit-identical to the lanes (cpu_kernel or oracle)");
   }
@@ -354,6 +359,10 @@ void BoardVisibility::start_pass(const Pass& pass) {
   if (source_faces_ != source_faces_written_) {  // a parameter register keeps its value: written on change
     write_registers(reg::kSourceFaces, {source_faces_});
     source_faces_written_ = source_faces_;
+  }
+  if (static_cast<std::uint32_t>(options_.t_guard) != t_guard_written_) {  // written once, before the first pass
+    write_registers(reg::kTGuard, {static_cast<std::uint32_t>(options_.t_guard)});
+    t_guard_written_ = static_cast<std::uint32_t>(options_.t_guard);
   }
   write_registers(reg::kRayCount,
                   {static_cast<std::uint32_t>(batch_size(pass.batch)), static_cast<std::uint32_t>(set_size(pass.set)),

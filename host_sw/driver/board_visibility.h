@@ -79,6 +79,10 @@ struct BoardVisibilityOptions {
   // banks and of the own-surface table, so packing and sending chunk k+1 and reading back chunk k-1
   // overlap the wrapper's pass over chunk k. 0: off (the unpipelined protocol).
   std::size_t chunk_rays = 0;
+  // The lanes' guard band on t (pipeline/fixed_format.h; 0..kMaxTGuard LSBs, fixed-point lanes only):
+  // written to T_GUARD before the first pass when it is not the reset value 0, so the paper's test
+  // costs no register access. The oracle and cpu_kernel, when set, must answer with the same guard.
+  int t_guard = 0;
 };
 
 // Passes whose stream was bounded by one term of the pass time (PassRecord::limit: "lanes",
@@ -258,6 +262,7 @@ class BoardVisibility : public VisibilityBackend, public TimingReplayTarget {
   std::uint32_t source_face_ = 0;           // SOURCE_FACE: the first face of the shooter's sheet
   std::uint32_t source_faces_ = 1;          // SOURCE_FACES: the faces of that sheet
   std::uint32_t source_faces_written_ = 1;  // what the register holds (1 at reset)
+  std::uint32_t t_guard_written_ = 0;       // what T_GUARD holds (0 at reset)
   std::vector<std::uint8_t> blocked_;  // end-face order
   std::vector<std::uint8_t> oracle_answer_;  // end-face order, when options_.oracle is set
   bool timing_only_ = false;                 // the current step came from submit_timing_only

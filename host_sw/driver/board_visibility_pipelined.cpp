@@ -118,6 +118,10 @@ void BoardVisibility::send_chunk(std::size_t k) {
     write_registers(reg::kSourceFaces, {source_faces_});
     source_faces_written_ = source_faces_;
   }
+  if (static_cast<std::uint32_t>(options_.t_guard) != t_guard_written_) {
+    write_registers(reg::kTGuard, {static_cast<std::uint32_t>(options_.t_guard)});
+    t_guard_written_ = static_cast<std::uint32_t>(options_.t_guard);
+  }
   // One face set, from face 0: MASK_START is 0 (no ray ends before the set's first sheet).
   write_registers(reg::kRayCount,
                   {static_cast<std::uint32_t>(rays), static_cast<std::uint32_t>(faces), 0u, source_face_,

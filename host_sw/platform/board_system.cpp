@@ -61,11 +61,16 @@ BoardSystem::BoardSystem(const sc_core::sc_module_name& name, const Scene& scene
     };
     return ports;
   };
+  // The lanes' guard band on t is the solver's (SolverOptions::fixes.t_guard): the driver writes it to T_GUARD.
+  BoardVisibilityOptions driver_options = setup.driver;
+  driver_options.t_guard = solver.fixes.t_guard;
   if (cards() == 1) {
-    BoardVisibilityOptions driver = setup.driver;
+    BoardVisibilityOptions driver = driver_options;
     if (driver.cpu_split.on() && driver.oracle == nullptr && driver.cpu_kernel == nullptr) {
       const board::BankLayout& L = board.layout();
-      m_cpu_kernel = make_software_visibility(L.float_format ? L.float_format->to_string() : "fixed", L.bits);
+      if (L.float_format && driver.t_guard != 0) throw std::invalid_argument("a t guard band needs fixed-point lanes");
+      m_cpu_kernel = make_software_visibility(L.float_format ? L.float_format->to_string() : "fixed", L.bits, 0,
+                                              driver.t_guard);
       driver.cpu_kernel = m_cpu_kernel.get();
     }
     m_visibility = std::make_unique<BoardVisibility>(ports_of(board, host_out), m_cpu, driver,
@@ -81,7 +86,7 @@ BoardSystem::BoardSystem(const sc_core::sc_module_name& name, const Scene& scene
       if (setup.card_bus == CardBus::shared) k.pci.share_arbitration_with(board.pci);
       ports.push_back(ports_of(k, *m_card_out.back()));
     }
-    m_multi = std::make_unique<MultiCardVisibility>(std::move(ports), m_cpu, setup.driver, setup.card_split,
+    m_multi = std::make_unique<MultiCardVisibility>(std::move(ports), m_cpu, driver_options, setup.card_split,
                                                     tracing ? &m_trace : nullptr);
     for (unsigned c = 0; c < cards(); ++c) {
       card(c).wrapper().on_pass([this, c](const board::PassRecord& r) { m_multi->pass_finished(c, r); });

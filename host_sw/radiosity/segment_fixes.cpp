@@ -19,6 +19,7 @@ std::string describe(const SegmentFixOptions& f) {
   if (f.neighbour_rings != 0) name += (name.empty() ? "" : " + ") + std::string("neighbours (ring ") + std::to_string(f.neighbour_rings) + ")";
   if (f.coordinate_bits != 0)
     name += (name.empty() ? "" : " + ") + std::to_string(f.coordinate_bits) + "-bit coordinates (" + std::to_string(f.bits - f.coordinate_bits) + " guard bits)";
+  if (f.t_guard != 0) name += (name.empty() ? "" : " + ") + std::string("t guard band ") + std::to_string(f.t_guard) + " LSB";
   return name;
 }
 
@@ -76,6 +77,10 @@ SegmentFixer::SegmentFixer(const std::vector<Triangle>& faces, const FaceSheets&
   if (options_.bits != 0 && (options_.bits < 7 || options_.bits > 31)) {
     throw std::invalid_argument("segment fixes need a width of 7..31 fractional bits, got " + std::to_string(options_.bits));
   }
+  if (options_.t_guard != 0 && options_.bits == 0) {
+    throw std::invalid_argument("a t guard band counts LSBs of the fixed-point pipeline's t; double precision has none");
+  }
+  pipeline::validate_t_guard(options_.t_guard);
   if (options_.offset_lsb != 0 && options_.bits == 0) {
     throw std::invalid_argument("a segment offset counts LSBs of a fixed-point width; double precision has none");
   }
@@ -127,7 +132,8 @@ void SegmentFixer::recheck(const SegmentBatch& batch, std::vector<std::uint8_t>&
   const auto hits = [&](int face, std::size_t s) {
     const Triangle& t = faces_[static_cast<std::size_t>(face)];
     if (!fixed) return pipeline::segment_hits_ref(t, batch.start, batch.ends[s]);
-    return pipeline::segment_hits(pipeline::make_face_record(t, bits), start, pipeline::quantize_point(batch.ends[s], bits), bits);
+    return pipeline::segment_hits(pipeline::make_face_record(t, bits), start, pipeline::quantize_point(batch.ends[s], bits), bits,
+                                  options_.t_guard);
   };
   const auto neighbours_of = [&](int face) -> const std::vector<int>& {
     static const std::vector<int> none;
@@ -167,7 +173,7 @@ void SegmentFixer::recheck(const SegmentBatch& batch, std::vector<std::uint8_t>&
     if (fixed) {
       std::fill(hit.begin(), hit.end(), std::uint8_t(0));
       pipeline::occlude_face(pipeline::make_face_record(faces_[static_cast<std::size_t>(f)], bits), start, x.data(), y.data(),
-                             z.data(), n, bits, hit.data(), rest.data());
+                             z.data(), n, bits, hit.data(), rest.data(), options_.t_guard);
     } else {
       for (std::size_t k = 0; k < n; ++k) hit[k] = !rest[k] && hits(f, again[k]);
     }

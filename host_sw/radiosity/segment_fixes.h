@@ -16,6 +16,11 @@
 //    rounded down to `coordinate_bits` fractional bits (< bits), so the lanes compute at `bits` on
 //    coordinates of the narrower grid: a pipeline whose products keep bits - coordinate_bits guard
 //    bits more than its coordinates have (the acne on meshes is product truncation, docs/radiosity.md).
+//  * t guard: the pipeline counts a segment as blocked only for t_guard < t*s < |det| - t_guard (the guard
+//    band on t, in LSBs; pipeline/fixed_format.h). A change of the pipeline's arithmetic, not of the batch:
+//    the backend must be built with it (make_software_visibility(..., t_guard), BoardRunOptions via
+//    SolverOptions::fixes, the board's T_GUARD register); the solver only uses it for the neighbour
+//    rule's re-tests, which must answer as the pipeline does.
 #pragma once
 
 #include <cstdint>
@@ -33,10 +38,11 @@ struct SegmentFixOptions {
   int offset_lsb = 0;  // 0: off
   int neighbour_rings = 0;  // 0: off; 1: faces sharing a vertex; 2: and their vertex neighbours
   int coordinate_bits = 0;  // 0: off; else 7 <= coordinate_bits < bits (offset_lsb then counts its LSBs)
-  bool any() const { return offset_lsb != 0 || neighbour_rings != 0 || coordinate_bits != 0; }
+  int t_guard = 0;          // 0: off; else 1..pipeline::kMaxTGuard LSBs of t*s (needs bits != 0)
+  bool any() const { return offset_lsb != 0 || neighbour_rings != 0 || coordinate_bits != 0 || t_guard != 0; }
   friend bool operator==(const SegmentFixOptions& a, const SegmentFixOptions& b) {
     return a.bits == b.bits && a.offset_lsb == b.offset_lsb && a.neighbour_rings == b.neighbour_rings &&
-           a.coordinate_bits == b.coordinate_bits;
+           a.coordinate_bits == b.coordinate_bits && a.t_guard == b.t_guard;
   }
 };
 

@@ -81,7 +81,8 @@ bool shares_vertex(const Triangle& a, const Triangle& b) {
 // The pipeline's own per-face test, in the run's arithmetic.
 class PipelineFaces {
  public:
-  PipelineFaces(const Scene& scene, const pipeline::Arithmetic& arith, int bits) : arith_(arith), bits_(bits) {
+  PipelineFaces(const Scene& scene, const pipeline::Arithmetic& arith, int bits, int t_guard)
+      : arith_(arith), bits_(bits), t_guard_(t_guard) {
     if (arith.is_float()) {
       for (const Face& f : scene.faces) float_faces_.push_back(pipeline::make_float_face_record(f.tri, arith.float_format()));
     } else {
@@ -94,7 +95,8 @@ class PipelineFaces {
       return pipeline::segment_hits(float_faces_[face], pipeline::round_point(start, fmt), pipeline::round_point(end, fmt), fmt);
     }
     const pipeline::FracBits b(bits_);
-    return pipeline::segment_hits(fixed_faces_[face], pipeline::quantize_point(start, b), pipeline::quantize_point(end, b), b);
+    return pipeline::segment_hits(fixed_faces_[face], pipeline::quantize_point(start, b), pipeline::quantize_point(end, b), b,
+                                  t_guard_);
   }
   bool fixed() const { return !arith_.is_float(); }
   bool lost(std::size_t face) const { return !arith_.is_float() && pipeline::has_no_area(fixed_faces_[face]); }
@@ -104,6 +106,7 @@ class PipelineFaces {
  private:
   pipeline::Arithmetic arith_;
   int bits_;
+  int t_guard_;
   std::vector<pipeline::FaceRecord> fixed_faces_;
   std::vector<pipeline::FloatFaceRecord> float_faces_;
 };
@@ -202,12 +205,12 @@ std::string percent(double share) {
 }  // namespace
 
 Fidelity estimate_fidelity(const Scene& scene, const std::vector<SampledSegment>& sample, std::uint64_t population,
-                           const pipeline::Arithmetic& arith, int bits, unsigned threads) {
+                           const pipeline::Arithmetic& arith, int bits, unsigned threads, int t_guard) {
   Fidelity f;
   f.arithmetic = arith.is_float() ? arith.name() : "fixed:" + std::to_string(bits);
   f.population = population;
   f.sampled = sample.size();
-  const PipelineFaces pipe(scene, arith, bits);
+  const PipelineFaces pipe(scene, arith, bits, t_guard);
   std::vector<SegmentVerdict> verdicts(sample.size());
   const unsigned n = std::max(1u, std::min<unsigned>(threads ? threads : static_cast<unsigned>(jobs()),
                                                       static_cast<unsigned>(std::max<std::size_t>(1, sample.size() / 64))));

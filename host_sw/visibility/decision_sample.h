@@ -114,9 +114,10 @@ struct Fidelity {
 };
 
 // Checks the sample against double precision (on `threads` threads; 0: jobs()) and classes each
-// difference. `bits`: the fixed width (ignored for a float format).
+// difference. `bits`: the fixed width (ignored for a float format); `t_guard`: the pipeline's guard band
+// on t (fixed point), with which the pipeline's own per-face tests of the classes are made.
 Fidelity estimate_fidelity(const Scene& scene, const std::vector<SampledSegment>& sample, std::uint64_t population,
-                           const pipeline::Arithmetic& arith, int bits, unsigned threads = 0);
+                           const pipeline::Arithmetic& arith, int bits, unsigned threads = 0, int t_guard = 0);
 
 // The 95% Wilson score interval of k successes in n trials: {low, high} (n = 0: {0, 1}).
 struct ShareInterval {

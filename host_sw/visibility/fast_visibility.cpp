@@ -66,11 +66,12 @@ struct FastFixedVisibility::Variants {
 #endif
 };
 
-FastFixedVisibility::FastFixedVisibility(pipeline::FracBits frac_bits, int threads)
-    : FastFixedVisibility(frac_bits, threads, pipeline::best_kernel_isa()) {}
+FastFixedVisibility::FastFixedVisibility(pipeline::FracBits frac_bits, int threads, int t_guard)
+    : FastFixedVisibility(frac_bits, threads, pipeline::best_kernel_isa(), t_guard) {}
 
-FastFixedVisibility::FastFixedVisibility(pipeline::FracBits frac_bits, int threads, pipeline::KernelIsa isa)
+FastFixedVisibility::FastFixedVisibility(pipeline::FracBits frac_bits, int threads, pipeline::KernelIsa isa, int t_guard)
     : bits_(frac_bits),
+      t_guard_((pipeline::validate_t_guard(t_guard), t_guard)),
       isa_(isa),
       test_faces_(pipeline::pick_variant<TestFaces>(isa, Variants::baseline, Variants::v3, Variants::v4)),
       occlude_(narrow_banks(frac_bits) ? nullptr : pipeline::occlude_kernel(isa, frac_bits, false)),
@@ -262,9 +263,18 @@ std::uint64_t FastFixedVisibility::test_candidates(int face, int sheet, const st
   const pipeline::FaceRecord& record = faces_[static_cast<std::size_t>(face)];
   const std::size_t n = candidates.size();
   if (n < kVectorCandidates) {
-    for (const std::uint32_t point : candidates) {
-      if (pipeline::pipeline_hits(record.v0, record.edge1, record.edge2, start_, points_.position(point), bits_)) {
-        block_segments_ending_at(point, sheet, out);
+    if (t_guard_ == 0) {
+      for (const std::uint32_t point : candidates) {
+        if (pipeline::pipeline_hits(record.v0, record.edge1, record.edge2, start_, points_.position(point), bits_)) {
+          block_segments_ending_at(point, sheet, out);
+        }
+      }
+    } else {
+      const auto guard = std::int64_t(t_guard_);
+      for (const std::uint32_t point : candidates) {
+        if (pipeline::pipeline_hits(record.v0, record.edge1, record.edge2, start_, points_.position(point), bits_, guard)) {
+          block_segments_ending_at(point, sheet, out);
+        }
       }
     }
     return n;
@@ -275,11 +285,11 @@ std::uint64_t FastFixedVisibility::test_candidates(int face, int sheet, const st
   if (occlude32_ != nullptr) {
     fill_banks(n, out.candidate32_x, out.candidate32_y, out.candidate32_z, candidate);
     occlude32_(record, start_, out.candidate32_x.data(), out.candidate32_y.data(), out.candidate32_z.data(), n, bits_,
-               out.candidate_hit.data(), nullptr);
+               out.candidate_hit.data(), nullptr, t_guard_);
   } else {
     fill_banks(n, out.candidate_x, out.candidate_y, out.candidate_z, candidate);
     occlude_(record, start_, out.candidate_x.data(), out.candidate_y.data(), out.candidate_z.data(), n, bits_,
-             out.candidate_hit.data(), nullptr);
+             out.candidate_hit.data(), nullptr, t_guard_);
   }
   for (std::size_t i = 0; i < n; ++i) {
     if (out.candidate_hit[i]) block_segments_ending_at(candidates[i], sheet, out);
@@ -308,9 +318,10 @@ std::uint64_t FastFixedVisibility::test_every_segment(int face, WorkerOutput& ou
   const pipeline::FaceRecord& record = faces_[static_cast<std::size_t>(face)];
   if (occlude32_ != nullptr) {
     occlude32_(record, start_, end32_x_.data(), end32_y_.data(), end32_z_.data(), segments_, bits_, out.blocked.data(),
-               nullptr);
+               nullptr, t_guard_);
   } else {
-    occlude_(record, start_, end_x_.data(), end_y_.data(), end_z_.data(), segments_, bits_, out.blocked.data(), nullptr);
+    occlude_(record, start_, end_x_.data(), end_y_.data(), end_z_.data(), segments_, bits_, out.blocked.data(), nullptr,
+             t_guard_);
   }
   for (std::size_t k = 0; k < owned; ++k) out.blocked[own[k]] = out.saved[k];
   out.dense_tests += segments_ - owned;

@@ -49,8 +49,11 @@ class FastFixedVisibility : public VisibilityBackend {
   // variant pipeline::best_kernel_isa() (the CPU's best, capped by RC2000SIM_SIMD: a wrong value
   // throws std::invalid_argument here), or `isa` (benchmarks, tests: std::invalid_argument if the
   // CPU cannot run it). Every variant gives the same answers and counters.
-  explicit FastFixedVisibility(pipeline::FracBits frac_bits, int threads = 0);
-  FastFixedVisibility(pipeline::FracBits frac_bits, int threads, pipeline::KernelIsa isa);
+  // t_guard: the guard band on the pipeline's t test (pipeline/fixed_format.h, 0..kMaxTGuard LSBs,
+  // std::invalid_argument otherwise; 0: the paper's test). A guard only removes hits, so the hit
+  // regions (derived for 0 < t*s < |det|) still enclose every hit.
+  explicit FastFixedVisibility(pipeline::FracBits frac_bits, int threads = 0, int t_guard = 0);
+  FastFixedVisibility(pipeline::FracBits frac_bits, int threads, pipeline::KernelIsa isa, int t_guard = 0);
   ~FastFixedVisibility() override;
 
   std::string name() const override { return "fast"; }
@@ -73,6 +76,7 @@ class FastFixedVisibility : public VisibilityBackend {
   std::uint64_t dense_tests() const { return dense_tests_; }
 
   int frac_bits() const { return bits_; }
+  int t_guard() const { return t_guard_; }
   int threads() const { return pool_.size(); }
   pipeline::KernelIsa isa() const { return isa_; }
 
@@ -111,6 +115,7 @@ class FastFixedVisibility : public VisibilityBackend {
   std::uint64_t count_brute_force_tests(int source_face) const;
 
   int bits_;
+  int t_guard_;
   pipeline::KernelIsa isa_;
   TestFaces test_faces_;           // test_faces compiled for isa_
   // The streaming kernel for isa_ and bits_, unmasked: on 32-bit end-point banks up to 15 bits

@@ -13,7 +13,9 @@ std::vector<std::size_t> faces_without_area(const std::vector<Face>& faces, pipe
   return out;
 }
 
-FixedPointVisibility::FixedPointVisibility(pipeline::FracBits frac_bits) : bits_(frac_bits) {}
+FixedPointVisibility::FixedPointVisibility(pipeline::FracBits frac_bits, int t_guard) : bits_(frac_bits), t_guard_(t_guard) {
+  pipeline::validate_t_guard(t_guard);
+}
 
 void FixedPointVisibility::load_triangles(const std::vector<Triangle>& faces) {
   faces_.clear();
@@ -37,7 +39,7 @@ void FixedPointVisibility::submit(const SegmentBatch& batch) {
   blocked_.assign(n, 0);
   tests_ += end_faces_.occlude_each_face(batch, faces_.size(), sheets(), skip_, [&](std::size_t f, const std::uint8_t* skip) {
     pipeline::occlude_face(faces_[f], start, end_x_.data(), end_y_.data(), end_z_.data(), n, bits_, blocked_.data(),
-                           skip);
+                           skip, t_guard_);
   });
 }
 

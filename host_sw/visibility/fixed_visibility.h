@@ -23,8 +23,9 @@ std::vector<std::size_t> faces_without_area(const std::vector<Face>& faces, pipe
 
 class FixedPointVisibility : public VisibilityBackend {
  public:
-  // Throws std::invalid_argument unless 7 <= frac_bits <= 31.
-  explicit FixedPointVisibility(pipeline::FracBits frac_bits);
+  // Throws std::invalid_argument unless 7 <= frac_bits <= 31 and 0 <= t_guard <= kMaxTGuard (the guard
+  // band on the pipeline's t test, pipeline/fixed_format.h; 0: the paper's test).
+  explicit FixedPointVisibility(pipeline::FracBits frac_bits, int t_guard = 0);
 
   std::string name() const override { return "fixed"; }
   void load_triangles(const std::vector<Triangle>& faces) override;
@@ -36,10 +37,12 @@ class FixedPointVisibility : public VisibilityBackend {
   std::uint64_t tests_performed() const override { return tests_; }
 
   int frac_bits() const { return bits_; }
+  int t_guard() const { return t_guard_; }
 
  private:
 
   int bits_;
+  int t_guard_;
   std::vector<pipeline::FaceRecord> faces_;
   // The current batch, laid out like the board's X, Y and Z memory banks.
   std::vector<std::int64_t> end_x_, end_y_, end_z_;

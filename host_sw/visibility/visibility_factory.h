@@ -37,14 +37,19 @@ namespace rc {
 // floating-point pipeline's bit-exact arithmetic in that format, every segment against every face,
 // on the CPU; `bits` is ignored; pipeline/float_format.h): a SoftwareVisibility's name or a float
 // format's. Throws std::invalid_argument with the accepted names otherwise, or with the format error for a malformed or unsupported "float:E,M".
-// `threads` (fast only): 0 = every core.
-std::unique_ptr<VisibilityBackend> make_software_visibility(const std::string& name, int bits, int threads = 0);
-std::unique_ptr<VisibilityBackend> make_software_visibility(SoftwareVisibility kind, int bits, int threads = 0);
+// `threads` (fast only): 0 = every core. `t_guard` (fixed and fast only): the guard band on the
+// pipeline's t test in LSBs (pipeline/fixed_format.h); a non-zero one with a float backend, or one
+// outside 0..kMaxTGuard, throws std::invalid_argument.
+std::unique_ptr<VisibilityBackend> make_software_visibility(const std::string& name, int bits, int threads = 0,
+                                                            int t_guard = 0);
+std::unique_ptr<VisibilityBackend> make_software_visibility(SoftwareVisibility kind, int bits, int threads = 0,
+                                                            int t_guard = 0);
 
 // The same backend for answers whose tests nobody pays for (a recording for timing replay, the
 // board's oracle): it skips segments the solver does not need and reuses a repeated shooter's
 // answer (NeededOnlyVisibility, ShooterMemoVisibility). The solver's results are bit-identical;
 // tests_performed() counts only the tests really run.
-std::unique_ptr<VisibilityBackend> make_functional_answer(const std::string& name, int bits, int threads = 0);
+std::unique_ptr<VisibilityBackend> make_functional_answer(const std::string& name, int bits, int threads = 0,
+                                                          int t_guard = 0);
 
 }  // namespace rc

@@ -22,6 +22,7 @@ class RtlLanes final : public board::ClockedLanes {
       ports.start = in.start;
       ports.end = in.end;
       ports.face = in.face;
+      ports.t_guard = in.t_guard;
       models_[i]->clock(ports);
     }
   }

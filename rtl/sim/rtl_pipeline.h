@@ -18,6 +18,8 @@ struct RtlInputs {
   bool valid = false;
   pipeline::FixedVec3 start{0, 0, 0}, end{0, 0, 0};
   pipeline::FaceRecord face{};
+  // The t_guard port (8 bits, 0..pipeline::kMaxTGuard): a static input, held while tests are in flight.
+  int t_guard = 0;
 };
 
 class RtlPipeline {

@@ -53,6 +53,7 @@ class VerilatedLane final : public RtlPipeline {
     set(model_->e2_x, in.face.edge2.x, difference);
     set(model_->e2_y, in.face.edge2.y, difference);
     set(model_->e2_z, in.face.edge2.z, difference);
+    set(model_->t_guard, in.t_guard, 0xFF);
     edge();
   }
 

@@ -89,7 +89,7 @@ TEST(PipelineBatch, KernelOn32BitBanksMatchesScalarTest) {
       for (bool masked : {false, true}) {
         std::vector<std::uint8_t> b = before;
         occlude_kernel32(isa, bits, masked)(face, start, x.data(), y.data(), z.data(), x.size(), bits, b.data(),
-                                            masked ? skip.data() : nullptr);
+                                            masked ? skip.data() : nullptr, 0);
         EXPECT_EQ(b, masked ? expected_masked : expected) << bits << " bits, " << name(isa) << (masked ? ", masked" : "");
       }
     }

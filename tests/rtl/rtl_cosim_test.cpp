@@ -1,7 +1,7 @@
 // Co-simulation of the Verilog pipeline (rtl/mt_pipeline.v, Verilated) against the C++ bit-exact
 // model (pipeline/fixed_mt.h): at 7, 11, 15, 23 and 31 fractional bits, random integer inputs over the
 // whole ranges (corners included) and every kind of the stress suite (pipeline/stress_cases.h) give the
-// same hit bit, streamed one test per clock; and a valid bit sampled at rising edge c is in the last
+// same hit bit (with the t_guard input at 0, and at 1, 2, 4 and 255), streamed one test per clock; and a valid bit sampled at rising edge c is in the last
 // register after edge c + 36, for the consumer to sample at edge c + 37: 37 register stages exactly.
 // Without Verilator (or a width not built) each test prints "SKIP: <reason>" and is skipped.
 #include <cstdint>
@@ -90,7 +90,8 @@ std::size_t stream(RtlPipeline& rtl, const std::vector<Case>& cases, unsigned ga
   std::size_t next = 0, hits = 0, mismatches = 0;
   std::uint64_t edge = 0;
   while (next < cases.size() || !in_flight.empty()) {
-    RtlInputs in;  // idle: valid low
+    RtlInputs in;  // idle: valid low; t_guard is a static input, held through idle cycles (all cases share it)
+    if (!cases.empty()) in.t_guard = cases.front().in.t_guard;
     if (next < cases.size() && (gap == 0 || edge % gap != gap - 1)) {
       in = cases[next].in;
       in_flight.emplace_back(edge, next++);
@@ -104,7 +105,7 @@ std::size_t stream(RtlPipeline& rtl, const std::vector<Case>& cases, unsigned ga
       if (rtl.out_hit() != c.expected && ++mismatches <= 5)
         ADD_FAILURE() << "case " << in_flight.front().second << ": RTL " << rtl.out_hit() << ", C++ " << c.expected
                       << " (start " << c.in.start.x << "," << c.in.start.y << "," << c.in.start.z << " end "
-                      << c.in.end.x << "," << c.in.end.y << "," << c.in.end.z << ")";
+                      << c.in.end.x << "," << c.in.end.y << "," << c.in.end.z << ") t_guard " << c.in.t_guard;
       hits += rtl.out_hit();
       in_flight.pop_front();
     }
@@ -167,6 +168,49 @@ TEST_P(RtlCosim, StressCasesEqualTheCppPipelineBitForBit) {
   for (const Case& c : cases) expected_hits += c.expected;
   EXPECT_EQ(stream(*rtl, cases, 0), expected_hits);
   EXPECT_GT(expected_hits, 1000u);
+}
+
+// The t_guard input (the guard band on t): with g in {1, 2, 4, 255} held for a whole stream, the RTL
+// gives the C++ model's guarded test (pipeline::segment_hits(..., g)) bit for bit; the stress cases put
+// crossings near both ends and faces of a few LSBs, so the guard turns hits into misses.
+TEST_P(RtlCosim, GuardBandOnTEqualsTheCppPipelineBitForBit) {
+  const int bits = GetParam();
+  REQUIRE_MODEL(bits, false);
+  auto rtl = make_rtl_pipeline(bits);
+  std::size_t flipped = 0;
+  for (int g : {1, 2, 4, 255}) {
+    std::vector<Case> cases = stress_cases(bits, 1500, 300 + g);
+    const std::vector<Case> random = random_cases(bits, 20000, 4000 + bits + g);
+    cases.insert(cases.end(), random.begin(), random.end());
+    std::size_t expected_hits = 0;
+    for (Case& c : cases) {
+      c.in.t_guard = g;
+      const bool unguarded = c.expected;
+      c.expected = pipeline::segment_hits(c.in.face, c.in.start, c.in.end, bits, g);
+      flipped += c.expected != unguarded;
+      expected_hits += c.expected;
+    }
+    EXPECT_EQ(stream(*rtl, cases, g == 2 ? 5 : 0), expected_hits) << "g " << g;
+  }
+  EXPECT_GT(flipped, 100u);
+}
+
+// The hand-computed case of TGuard.OneLsbOfGuardTurnsAHandComputedHitAtTheStartIntoAMiss (7 bits: t*s = 1,
+// |det| = 61): a hit with t_guard 0, a miss with 1.
+TEST(RtlCosimGuard, OneLsbOfGuardTurnsTheHandComputedHitIntoAMiss) {
+  REQUIRE_MODEL(7, false);
+  auto rtl = make_rtl_pipeline(7);
+  for (int g : {0, 1}) {
+    Case c = make_case({{0, 0, 10}, {100, 0, 0}, {0, 100, 0}}, {20, 20, 9}, {20, 20, 109}, 7);
+    c.in.t_guard = g;
+    std::vector<Case> one{c};
+    rtl->clock(c.in);
+    RtlInputs idle;
+    idle.t_guard = g;
+    for (unsigned e = 1; e < kRtlLatency; ++e) rtl->clock(idle);
+    ASSERT_TRUE(rtl->out_valid());
+    EXPECT_EQ(rtl->out_hit(), g == 0) << "t_guard " << g;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Widths, RtlCosim, ::testing::Values(7, 11, 15, 23, 31),

@@ -44,7 +44,7 @@ inline void expect_cycle_model_matches_fast(const BoardSystem& fast, const Board
 }
 
 inline SolverResult cpu_fixed_point(const Scene& scene, const SolverOptions& options, int bits) {
-  FixedPointVisibility v(bits);
+  FixedPointVisibility v(bits, options.fixes.t_guard);  // the lanes' guard band on t, when the options set one
   return ProgressiveRadiosity(scene, v, options).run();
 }
 

@@ -55,6 +55,28 @@ TEST(RtlLanes, BoardRunEqualsCppLanesAt7BitsThreeLanes) {
   expect_rtl_lanes_match_cpp(7, 3, 2);
 }
 
+// The guard band on t through T_GUARD into the RTL lanes' t_guard port: the same bits as the C++ lanes
+// and the CPU backend with the same guard.
+TEST(RtlLanes, GuardBandOnTEqualsCppLanesAt15Bits) {
+  REQUIRE_RTL(15);
+  const Scene scene = small_cornell_box();
+  SolverOptions so = steps(3);
+  so.fixes.bits = 15;
+  so.fixes.t_guard = 4;
+  BoardRunOptions o;
+  o.lanes = 2;
+  o.bits = 15;
+  o.model = board::WrapperModel::cycle;
+  BoardSystem cycle("cycle", scene, so, setup(o));
+  o.clocked_lanes = rtl::rtl_lanes_factory();
+  BoardSystem rtl("rtl", scene, so, setup(o));
+  run_all({&cycle, &rtl});
+  expect_cycle_model_matches_fast(cycle, rtl);
+  const SolverResult cpu = cpu_fixed_point(scene, so, 15);
+  expect_identical(rtl.result().radiosity, cpu.radiosity);
+  EXPECT_EQ(rtl.result().blocked_segments, cpu.blocked_segments);
+}
+
 // Plugged-in lanes need the cycle-level wrapper and fixed-point lanes; a width without a model is
 // refused by the factory, naming the widths built.
 TEST(RtlLanes, RefusedWhereTheyDoNotApply) {

@@ -156,13 +156,11 @@ TEST(MeshImport, BinaryGltfFramingIsCheckedBeforeAssimp) {
   };
   MeshImportOptions o;
   o.require_emitter = false;
-  for (const std::string& extension : {".glb", ".bin"}) {
+  for (const std::string extension : {".glb", ".bin"}) {
     for (const auto& [bytes, why] : cases) {
       const std::string path = (dir / ("bad" + extension)).string();
       std::ofstream(path, std::ios::binary) << bytes;
-      const auto start = std::chrono::steady_clock::now();
       EXPECT_EQ(error_of(path, o), path + ": a binary glTF (GLB) file with " + why + " (docs/scenes.md, Meshes)");
-      EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(2));
     }
   }
   std::filesystem::remove_all(dir);

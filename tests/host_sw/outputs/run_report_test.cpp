@@ -55,7 +55,7 @@ RunReport every_field_set() {
   b.device.design = {static_cast<int>(f.count()), static_cast<int>(f.count()), static_cast<int>(f.count()),
                      static_cast<int>(f.count()), static_cast<int>(f.count()), static_cast<int>(f.count()), f.real(), true,
                      f.text()};
-  b.layout = {f.count(), f.count(), f.count(), f.count(), f.text(), {}, {f.count(), f.count()}, f.real()};
+  b.layout = {f.count(), f.count(), f.count(), f.count(), f.text(), {}, {f.count(), f.count()}, f.real(), f.text()};
   b.layout.ray_groups = {{{f.count(), f.count()}, f.count(), f.count(), f.real()}, {{f.count()}, f.count(), f.count(), f.real()}};
   b.max_rays_per_batch = f.count();
   b.max_faces_per_set = f.count();

@@ -32,7 +32,9 @@ void expect_board_matches_cpu(int bits, int g) {
   const SolverResult cpu = cpu_fixed_point(scene, so, bits);
   // The guard changed answers up to 15 bits; at 23 and 31 the faces' |det| is thousands of LSBs, and one or
   // two LSBs of guard leave these 12 steps unchanged (the bits are still compared).
-  if (bits <= 15) ASSERT_NE(cpu.blocked_segments, cpu_fixed_point(scene, unguarded, bits).blocked_segments);
+  if (bits <= 15) {
+    ASSERT_NE(cpu.blocked_segments, cpu_fixed_point(scene, unguarded, bits).blocked_segments);
+  }
   expect_identical(fast.result().radiosity, cpu.radiosity);
   expect_identical(cycle.result().radiosity, cpu.radiosity);
   EXPECT_EQ(fast.result().blocked_segments, cpu.blocked_segments);

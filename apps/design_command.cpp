@@ -81,7 +81,7 @@ int run_design(const DesignCli& cli) {
   const DesignSearchResult r = search_designs(o.workload, o.visibility, o.space, o.constraints, o.exhaustive,
                                               [&](const std::string& what) { progress.update("%-60s", what.c_str()); });
   progress.finish();
-  const double paper_rate = measured_peak_software_rate(load_paper_table(default_paper_table_path()));
+  const double paper_rate = measured_peak_software_rate(default_paper_table());
   const Roofline roofline = design_roofline(r, paper_rate);
   const DesignDocument doc{r, o.space, o.constraints, roofline, dir, cli.command};
   PlotProcess plotter("design.py");

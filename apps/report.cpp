@@ -116,7 +116,7 @@ LanesThatFit lanes_that_fit(const board::DeviceProfile& profile, const HostProfi
                             pipeline::ResourceSource resources) {
   return estimated_or_why(profile, [&] {
     return LanesThatFit{
-        board::paper_rule_lanes_that_fit(profile, measured_peak_software_rate(load_paper_table(default_paper_table_path()))),
+        board::paper_rule_lanes_that_fit(profile, measured_peak_software_rate(default_paper_table())),
         board::model_lanes_that_fit(profile, 1.0 / host_profile.work[static_cast<int>(HostWork::IntersectionTest)].to_seconds(),
                                     bits, resources),
         ""};
@@ -127,7 +127,7 @@ LanesThatFit lanes_that_fit(const board::DeviceProfile& profile, const HostProfi
                             pipeline::FloatFormat format) {
   return estimated_or_why(profile, [&] {
     return LanesThatFit{
-        board::paper_rule_lanes_that_fit(profile, measured_peak_software_rate(load_paper_table(default_paper_table_path()))),
+        board::paper_rule_lanes_that_fit(profile, measured_peak_software_rate(default_paper_table())),
         board::float_lanes_that_fit(profile, 1.0 / host_profile.work[static_cast<int>(HostWork::IntersectionTest)].to_seconds(),
                                     format),
         ""};

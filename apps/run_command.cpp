@@ -340,6 +340,7 @@ nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& pre
   settings["offset_lsb"] = o.solver.fixes.offset_lsb;
   settings["neighbour_rings"] = o.solver.fixes.neighbour_rings;
   settings["coordinate_bits"] = o.solver.fixes.coordinate_bits;
+  settings["t_guard"] = o.solver.fixes.t_guard;
   settings["fidelity_sample"] = o.fidelity_sample;
   settings["fidelity_warn"] = o.fidelity_warn;
   settings["device"] = on_board(o.board.device);
@@ -350,6 +351,7 @@ nlohmann::ordered_json make_report(const RunOptions& o, const PreparedScene& pre
   settings["lanes_impl"] = on_board(choice_name(o.lanes_impl));
   settings["lanes_compute"] = on_board(o.lanes_compute);
   settings["resources"] = on_board(choice_name(o.board.resources));
+  settings["ray_split"] = on_board(o.ray_split);
   if (board && o.board.host_profile) {
     const DriverModel& driver = o.board.host_profile->driver_model;
     const CpuSplit split = o.cpu_share.empty() ? driver.cpu_split : parse_cpu_split(o.cpu_share, o.cpu_cores);

@@ -136,7 +136,14 @@ const std::vector<Option>& options() {
       {"resources", [](DesignOptions& o, const ordered_json& v) {
          o.space.resources = parse_choice_option<pipeline::ResourceSource>("--resources", text("resources", v));
        }, [](const DesignOptions& o) { return ordered_json(choice_name(o.space.resources)); }},
-      RC_TEXT_AXIS(cards), RC_TEXT_AXIS(concurrent), RC_TEXT_AXIS(offset_lsb), RC_TEXT_AXIS(neighbour_rings),
+      RC_TEXT_AXIS(cards), RC_TEXT_AXIS(concurrent),
+      {"ray_split", [](DesignOptions& o, const ordered_json& v) {
+         const std::string rule = text("ray_split", v);
+         if (rule != "limit" && rule != "nominal")  // the command line's IsMember check, in its words
+           throw std::invalid_argument("--ray-split: " + rule + " not in {limit,nominal}");
+         o.space.ray_split = board::parse_ray_split(rule);
+       }, [](const DesignOptions& o) { return ordered_json(o.space.ray_split == board::RaySplitRule::limit ? "limit" : "nominal"); }},
+      RC_TEXT_AXIS(offset_lsb), RC_TEXT_AXIS(neighbour_rings),
       RC_TEXT_AXIS(coordinate_bits),
       {"max_banks", [](DesignOptions& o, const ordered_json& v) {
          const long long n = whole("max_banks", v);

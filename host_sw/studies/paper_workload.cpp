@@ -22,6 +22,16 @@ std::string PaperRow::label() const { return std::to_string(faces) + "/" + std::
 
 std::string default_paper_table_path() { return profiles::default_config_dir() + "/paper-table2.json"; }
 
+const std::vector<PaperRow>& default_paper_table() {
+  static std::mutex guard;
+  static std::map<std::string, std::vector<PaperRow>> tables;  // by path: --configs may name another folder
+  const std::string path = default_paper_table_path();
+  const std::lock_guard<std::mutex> lock(guard);
+  auto it = tables.find(path);
+  if (it == tables.end()) it = tables.emplace(path, load_paper_table(path)).first;
+  return it->second;
+}
+
 std::vector<PaperRow> load_paper_table(const std::string& path) {
   const profiles::PaperTableLimits limits{static_cast<std::int64_t>(kMaxFaces), static_cast<std::int64_t>(kMaxPatches),
                                           SolverOptions{}.max_steps};

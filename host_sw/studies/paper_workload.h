@@ -25,6 +25,9 @@ std::vector<PaperRow> load_paper_table(const std::string& path);
 // the largest steps x patches x faces (every segment against every face) over software seconds.
 double measured_peak_software_rate(const std::vector<PaperRow>& rows);
 std::string default_paper_table_path();
+// The table at default_paper_table_path(), read once per process and path (a run's sec 5.6 estimate and
+// its timing interval both need it: each file is read once, Cli.RunReadsEachProfileOnce). Thread-safe.
+const std::vector<PaperRow>& default_paper_table();
 
 // The scene options that give exactly `faces` faces and `patches` patches (70 x 4^k faces,
 // faces x 4^m patches); throws std::invalid_argument for other counts.

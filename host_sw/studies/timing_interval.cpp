@@ -61,7 +61,7 @@ TimingInterval timing_interval(double seconds, std::size_t faces, std::size_t pa
     const std::lock_guard<std::mutex> lock(guard);
     if (variants.empty()) {
       variants = load_calibrated_variants(default_variants_path());
-      rows = load_paper_table(default_paper_table_path());
+      rows = default_paper_table();
     }
   }
   return timing_interval(seconds, faces, patches, variants, rows);

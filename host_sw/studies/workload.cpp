@@ -63,7 +63,7 @@ std::string scene_source(const SceneOptions& scene) { return scene.file.empty() 
 
 int table2_steps(const Workload& w, std::uint64_t faces, std::uint64_t patches) {
   if (check_construction(w, faces, patches).kind != Construction::paper) return 0;
-  for (const PaperRow& row : load_paper_table(default_paper_table_path())) {
+  for (const PaperRow& row : default_paper_table()) {
     if (static_cast<std::uint64_t>(row.faces) == faces && static_cast<std::uint64_t>(row.patches) == patches) return row.steps;
   }
   return 0;

@@ -386,7 +386,7 @@ def design(progress=False, **options):
     The options are the command's, by the same names in snake_case (scene, faces, face_levels,
     patch_levels, patch_size, steps, culled, form_factor, device, host, lanes, banks, bank_clocks,
     results, bits, multipliers, resources, cards, concurrent, offset_lsb, neighbour_rings, coordinate_bits (the
-    segment fixes as axes, 0 for off), max_banks, min_bits, max_energy, max_power,
+    segment fixes as axes, 0 for off), ray_split, max_banks, min_bits, max_energy, max_power,
     max_error, max_error_max, fidelity ('on', 'off' or a bool), exhaustive, jobs, configs), with the command's defaults (design_defaults() lists them); an axis takes the
     command's text ("1-4"), a list ([1, 2, 4]) or one value. An option the command does not have is a
     TypeError; a value it refuses is a ValueError with its message. progress: the search's phases on

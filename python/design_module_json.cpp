@@ -232,7 +232,7 @@ std::string design_search(const std::string& options_json, bool progress) {
     if (progress) std::fprintf(stderr, "\r%-78s", what.c_str());
   });
   if (progress) std::fprintf(stderr, "\r%-78s\r", "");
-  const Roofline roofline = design_roofline(r, measured_peak_software_rate(load_paper_table(default_paper_table_path())));
+  const Roofline roofline = design_roofline(r, measured_peak_software_rate(default_paper_table()));
   const DesignDocument doc{r, o.space, o.constraints, roofline, "", "rc2000tlm.design()"};
   ordered_json out;
   out["design"] = design_json(doc);

@@ -140,7 +140,7 @@ ProfileField resolve_study_field(const std::string& path, const std::vector<std:
 
 std::string default_scene_name(const SceneOptions& o) {
   if (!o.file.empty()) return std::filesystem::path(o.file).stem().string();
-  for (const PaperRow& row : load_paper_table(default_paper_table_path())) {
+  for (const PaperRow& row : default_paper_table()) {
     try {
       const SceneOptions p = paper_scene_options(row.faces, row.patches);
       if (p.face_target == o.face_target && p.face_levels == o.face_levels && p.patch_levels == o.patch_levels &&

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "host_sw/studies/paper_prediction.h"
+#include "host_sw/studies/paper_workload.h"
 
 namespace rc {
 
@@ -56,15 +57,11 @@ TimingInterval timing_interval(double seconds, std::size_t faces, std::size_t pa
 TimingInterval timing_interval(double seconds, std::size_t faces, std::size_t patches) {
   static std::mutex guard;
   static std::vector<CalibratedVariant> variants;
-  static std::vector<PaperRow> rows;
   {
     const std::lock_guard<std::mutex> lock(guard);
-    if (variants.empty()) {
-      variants = load_calibrated_variants(default_variants_path());
-      rows = default_paper_table();
-    }
+    if (variants.empty()) variants = load_calibrated_variants(default_variants_path());
   }
-  return timing_interval(seconds, faces, patches, variants, rows);
+  return timing_interval(seconds, faces, patches, variants, default_paper_table());  // read once, by path
 }
 
 std::string TimingInterval::text() const {
